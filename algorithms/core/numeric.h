@@ -1,0 +1,34 @@
+// Numbers we trust: the one place that says how input is checked and which precision an algorithm uses.
+//
+// - NaN or infinite input is rejected at the door (require_finite) with an error naming where it came from.
+// - Clipping runs in double precision (glm::dvec4) on clip-space coordinates. The clip planes are exact there
+//   (x = ±w, or x = ±1 in the canonical cube), so "inside" is the exact sign of a boundary value and needs no
+//   tolerance; clipped points are snapped onto the plane they were clipped against, which is what keeps the
+//   loops from spinning on rounding.
+// - The plane w = ε that keeps points behind the eye out of the divide uses ε = ClipTolerance::w_epsilon, shown in
+//   the window.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <glm/vec4.hpp>
+
+namespace hsr::algo {
+
+// Thrown when an algorithm or loader is handed input it cannot give a well-defined answer for.
+class InvalidInput : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
+// Throws InvalidInput("<where>.<x|y|z|w> is NaN") or "... is infinite" unless every coordinate is finite.
+void require_finite(const glm::dvec4& p, const std::string& where);
+void require_finite(double value, const std::string& where);
+
+struct ClipTolerance {
+    static constexpr double w_epsilon = 1e-9;  // clip-space w below which a point counts as at or behind the eye
+};
+
+}  // namespace hsr::algo

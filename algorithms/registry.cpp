@@ -1,0 +1,29 @@
+#include "registry.h"
+
+#include <array>
+
+#include "clipping/clip_scene.h"
+
+namespace hsr::algo {
+namespace {
+
+constexpr std::array registry = {
+    AlgorithmInfo{"cohen_sutherland", "3D Cohen–Sutherland line clipping", 1, Family::clipping,
+                  int(ClipAlgorithm::cohen_sutherland)},
+    AlgorithmInfo{"liang_barsky", "3D Liang–Barsky line clipping", 2, Family::clipping,
+                  int(ClipAlgorithm::liang_barsky)},
+    AlgorithmInfo{"sutherland_hodgman", "3D Sutherland–Hodgman polygon clipping", 2, Family::clipping,
+                  int(ClipAlgorithm::sutherland_hodgman)},
+};
+
+}  // namespace
+
+std::span<const AlgorithmInfo> algorithms() { return registry; }
+
+std::optional<AlgorithmInfo> find_algorithm(std::string_view id) {
+    for (const auto& a : registry)
+        if (a.id == id) return a;
+    return std::nullopt;
+}
+
+}  // namespace hsr::algo

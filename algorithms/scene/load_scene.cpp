@@ -1,0 +1,155 @@
+#include "scene/load_scene.h"
+
+#include <glm/geometric.hpp>
+#include <set>
+
+namespace hsr::algo {
+namespace {
+
+Color read_color(const TomlReader& r, const toml::table& t, const std::string& field) {
+    const std::string s = r.text(t, "color", field, "#c8c8c8");
+    auto hex = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
+    bool ok = s.size() == 7 && s[0] == '#';
+    for (std::size_t i = 1; ok && i < 7; ++i) ok = hex(s[i]) >= 0;
+    if (!ok) r.fail(t.get("color"), join(field, "color"), "expected a colour \"#rrggbb\", got \"" + s + "\"");
+    auto byte = [&](int i) { return std::uint8_t(hex(s[std::size_t(i)]) * 16 + hex(s[std::size_t(i + 1)])); };
+    return {byte(1), byte(3), byte(5)};
+}
+
+Camera read_camera(const TomlReader& r, const toml::table* t) {
+    Camera c;
+    if (!t) return c;
+    const std::string f = "camera";
+    r.only_keys(*t, f, {"projection", "eye", "target", "up", "fov", "aspect", "near", "far", "box"});
+    const std::string projection = r.text(*t, "projection", f, "perspective");
+    if (projection == "perspective") c.projection = Projection::perspective;
+    else if (projection == "orthographic") c.projection = Projection::orthographic;
+    else r.fail(t->get("projection"), join(f, "projection"), "expected \"perspective\" or \"orthographic\"");
+    auto vec3 = [&](std::string_view key, glm::dvec3 fallback) {
+        const toml::node* n = t->get(key);
+        return n ? glm::dvec3(r.vector(*n, join(f, key), 3, 3)) : fallback;
+    };
+    c.eye = vec3("eye", c.eye);
+    c.target = vec3("target", c.target);
+    c.up = vec3("up", c.up);
+    c.fov_y = r.number(*t, "fov", f, c.fov_y);
+    c.aspect = r.number(*t, "aspect", f, c.aspect);
+    c.near = r.number(*t, "near", f, c.near);
+    c.far = r.number(*t, "far", f, c.far);
+    if (const toml::node* box = t->get("box")) {
+        const glm::dvec4 b = r.vector(*box, join(f, "box"), 4, 4);
+        for (int i = 0; i < 4; ++i) c.box[i] = b[i];
+        if (!(c.box[0] < c.box[1] && c.box[2] < c.box[3]))
+            r.fail(box, join(f, "box"), "expected left < right and bottom < top");
+    }
+    if (glm::length(c.target - c.eye) == 0) r.fail(t->get("target"), join(f, "target"), "target equals eye");
+    if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0)
+        r.fail(t->get("up"), join(f, "up"), "up is parallel to the view direction (or zero)");
+    if (c.projection == Projection::perspective && !(c.fov_y > 0 && c.fov_y < 180))
+        r.fail(t->get("fov"), join(f, "fov"), "expected 0 < fov < 180 degrees");
+    if (!(c.aspect > 0)) r.fail(t->get("aspect"), join(f, "aspect"), "expected aspect > 0");
+    if (c.projection == Projection::perspective && !(c.near > 0))
+        r.fail(t->get("near"), join(f, "near"), "expected near > 0 for a perspective camera");
+    if (!(c.far > c.near)) r.fail(t->get("far"), join(f, "far"), "expected far > near");
+    return c;
+}
+
+template <class Each>
+void for_each_table(const TomlReader& r, const toml::table& root, std::string_view key, Each each) {
+    const toml::array* a = r.array(root, key, "", false);
+    if (!a) return;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+        const std::string f = index(std::string(key), i);
+        const toml::table* t = a->get(i)->as_table();
+        if (!t) r.fail(a->get(i), f, "expected a table");
+        each(*t, f);
+    }
+}
+
+Expect read_expect(const TomlReader& r, const toml::table* t) {
+    Expect e;
+    if (!t) return e;
+    r.only_keys(*t, "expect", {"clip"});
+    for_each_table(r, *t, "clip", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"id", "outcome", "vertices"});
+        ExpectClip x{SceneId(r.integer(c, "id", f)), r.text(c, "outcome", f), std::nullopt,
+                     int(c.source().begin.line)};
+        if (x.outcome != "inside" && x.outcome != "clipped" && x.outcome != "rejected")
+            r.fail(c.get("outcome"), join(f, "outcome"), "expected \"inside\", \"clipped\" or \"rejected\"");
+        if (const toml::array* v = r.array(c, "vertices", f, false)) {
+            x.vertices.emplace();
+            for (std::size_t i = 0; i < v->size(); ++i)
+                x.vertices->push_back(r.vector(*v->get(i), index(join(f, "vertices"), i), 4, 4));
+        }
+        e.clip.push_back(std::move(x));
+    });
+    return e;
+}
+
+}  // namespace
+
+Scene read_scene(const TomlReader& r) {
+    const toml::table& root = r.root();
+    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "expect"});
+    Scene s;
+    s.source = r.path();
+    s.name = r.text(root, "name", "", "untitled scene");
+    s.description = r.text(root, "description", "", "");
+    const std::string coords = r.text(root, "coordinates", "", "world");
+    if (coords == "world") s.coordinates = Coordinates::world;
+    else if (coords == "clip") s.coordinates = Coordinates::clip;
+    else r.fail(root.get("coordinates"), "coordinates", "expected \"world\" or \"clip\"");
+    s.camera = read_camera(r, r.table(root, "camera", "", false));
+
+    const std::size_t dims = s.coordinates == Coordinates::clip ? 4 : 3;
+    std::set<SceneId> ids;
+    auto read_id = [&](const toml::table& t, const std::string& f) {
+        const auto id = r.integer(t, "id", f);
+        if (id < 1 || id > 65535) r.fail(t.get("id"), join(f, "id"), "expected an id from 1 to 65535");
+        if (!ids.insert(SceneId(id)).second)
+            r.fail(t.get("id"), join(f, "id"), "id " + std::to_string(id) + " is used twice");
+        return SceneId(id);
+    };
+    auto vertex = [&](const toml::table& t, std::string_view key, const std::string& f) {
+        const toml::node* n = t.get(key);
+        if (!n) r.fail(&t, join(f, key), "missing; expected an array of " + std::to_string(dims) + " numbers");
+        return r.vector(*n, join(f, key), dims, dims);
+    };
+    for_each_table(r, root, "points", [&](const toml::table& t, const std::string& f) {
+        r.only_keys(t, f, {"id", "color", "p"});
+        s.points.push_back({read_id(t, f), read_color(r, t, f), vertex(t, "p", f)});
+    });
+    for_each_table(r, root, "segments", [&](const toml::table& t, const std::string& f) {
+        r.only_keys(t, f, {"id", "color", "a", "b"});
+        s.segments.push_back({read_id(t, f), read_color(r, t, f), vertex(t, "a", f), vertex(t, "b", f)});
+    });
+    for_each_table(r, root, "polygons", [&](const toml::table& t, const std::string& f) {
+        r.only_keys(t, f, {"id", "color", "vertices"});
+        ScenePolygon p{read_id(t, f), read_color(r, t, f), {}};
+        const toml::array* v = r.array(t, "vertices", f, true);
+        for (std::size_t i = 0; i < v->size(); ++i)
+            p.vertices.push_back(r.vector(*v->get(i), index(join(f, "vertices"), i), dims, dims));
+        if (p.vertices.size() < 3)
+            r.fail(t.get("vertices"), join(f, "vertices"), "a polygon needs at least 3 vertices");
+        s.polygons.push_back(std::move(p));
+    });
+    s.expect = read_expect(r, r.table(root, "expect", "", false));
+    for (const ExpectClip& x : s.expect.clip)
+        if (!ids.contains(x.id))
+            throw LoadError(r.path(), x.line, 1, "expect.clip.id",
+                            "no primitive has id " + std::to_string(x.id));
+    return s;
+}
+
+Scene load_scene(const std::string& path) { return read_scene(TomlReader(path)); }
+Scene load_scene_text(const std::string& path, std::string_view text) {
+    return read_scene(TomlReader(path, text));
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,27 @@
+// Loading a scene from TOML. The format, by example (every field but the geometry is optional):
+//
+//   name = "Three segments"
+//   description = "…"
+//   coordinates = "world"            # or "clip": vertices are [x, y, z, w] in clip space, used as they are
+//   [camera]
+//   projection = "perspective"       # or "orthographic" with box = [left, right, bottom, top]
+//   eye = [0, 0, 5]  target = [0, 0, 0]  up = [0, 1, 0]  fov = 60  aspect = 1  near = 1  far = 10
+//   [[points]]    id = 1  color = "#e69f00"  p = [0, 0, 0]
+//   [[segments]]  id = 2  color = "#56b4e9"  a = [-3, 0, 0]  b = [0.5, 0.2, -2]
+//   [[polygons]]  id = 3  color = "#009e73"  vertices = [[…], […], […]]
+//   [[expect.clip]] id = 2  outcome = "clipped"  vertices = [[…, w], [… , w]]   # clip space
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "scene/scene.h"
+#include "scene/toml_reader.h"
+
+namespace hsr::algo {
+
+Scene load_scene(const std::string& path);                          // throws LoadError
+Scene load_scene_text(const std::string& path, std::string_view text);  // throws LoadError
+Scene read_scene(const TomlReader& toml);
+
+}  // namespace hsr::algo

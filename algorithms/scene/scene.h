@@ -1,0 +1,85 @@
+// A scene: geometry with ids and colours, a camera, and the answers expected of it ([expect]).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace hsr::algo {
+
+using SceneId = std::int32_t;
+
+struct Color {
+    std::uint8_t r = 200, g = 200, b = 200;
+    bool operator==(const Color&) const = default;
+};
+
+enum class Projection : std::uint8_t { perspective, orthographic };
+
+struct Camera {
+    Projection projection = Projection::perspective;
+    glm::dvec3 eye{0, 0, 5};     // world space
+    glm::dvec3 target{0, 0, 0};  // world space
+    glm::dvec3 up{0, 1, 0};      // world space, need not be unit
+    double fov_y = 60;           // degrees, perspective only
+    double aspect = 1;           // width / height of the image plane
+    double near = 1, far = 10;   // distances from the eye along the view direction, world units
+    double box[4] = {-1, 1, -1, 1};  // left, right, bottom, top: orthographic only, eye-space units
+};
+
+// Where a scene's vertices live: world space (3 numbers each) or clip space before the divide (4 numbers each).
+enum class Coordinates : std::uint8_t { world, clip };
+
+struct ScenePoint {
+    SceneId id;
+    Color color;
+    glm::dvec4 p;  // in the scene's Coordinates (w = 1 for world)
+};
+struct SceneSegment {
+    SceneId id;
+    Color color;
+    glm::dvec4 a, b;
+};
+struct ScenePolygon {
+    SceneId id;
+    Color color;
+    std::vector<glm::dvec4> vertices;
+};
+
+// [[expect.clip]]: what clipping must make of one primitive.
+struct ExpectClip {
+    SceneId id;
+    std::string outcome;                              // "inside", "clipped" or "rejected"
+    std::optional<std::vector<glm::dvec4>> vertices;  // the visible part in clip space, in order
+    int line;                                         // where it is written, for test messages
+};
+struct Expect {
+    std::vector<ExpectClip> clip;
+};
+
+struct Scene {
+    std::string name;
+    std::string description;
+    std::string source;  // the file it came from
+    Coordinates coordinates = Coordinates::world;
+    Camera camera;
+    std::vector<ScenePoint> points;
+    std::vector<SceneSegment> segments;
+    std::vector<ScenePolygon> polygons;
+    Expect expect;
+};
+
+// World → clip space: projection × view of the camera (OpenGL conventions, right-handed, looking down −z).
+glm::dmat4 view_projection(const Camera& c);
+// A scene vertex in clip space.
+glm::dvec4 to_clip(const Scene& s, const glm::dvec4& v);
+// A clip-space point back in world space (defined for w ≠ 0 in world terms: every point of a segment between two
+// world points is, whatever its clip-space w).
+glm::dvec3 clip_to_world(const Camera& c, const glm::dvec4& clip);
+
+}  // namespace hsr::algo

@@ -1,0 +1,151 @@
+#include "scene/toml_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace hsr::algo {
+namespace {
+
+std::string where(const std::string& file, int line, int column, const std::string& field, const std::string& msg) {
+    std::string out = file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+    if (!field.empty()) out += "field '" + field + "': ";
+    return out + msg;
+}
+
+toml::table parse(const std::string& path, std::string_view text) {
+    try {
+        return toml::parse(text, path);
+    } catch (const toml::parse_error& e) {
+        throw LoadError(path, int(e.source().begin.line), int(e.source().begin.column), "",
+                        std::string(e.description()));
+    }
+}
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw LoadError(path, 0, 0, "", "cannot open the file");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+}  // namespace
+
+LoadError::LoadError(std::string file_, int line_, int column_, std::string field_, std::string message_)
+    : std::runtime_error(where(file_, line_, column_, field_, message_)),
+      file(std::move(file_)), field(std::move(field_)), message(std::move(message_)), line(line_), column(column_) {}
+
+std::string join(const std::string& field, std::string_view key) {
+    return field.empty() ? std::string(key) : field + "." + std::string(key);
+}
+std::string index(const std::string& field, std::size_t i) { return field + "[" + std::to_string(i) + "]"; }
+
+TomlReader::TomlReader(std::string path) : path_(std::move(path)), root_(parse(path_, read_file(path_))) {}
+TomlReader::TomlReader(std::string path, std::string_view text) : path_(std::move(path)), root_(parse(path_, text)) {}
+
+void TomlReader::fail(const toml::node* at, const std::string& field, const std::string& message) const {
+    const auto& src = at ? at->source() : root_.source();
+    throw LoadError(path_, int(src.begin.line), int(src.begin.column), field, message);
+}
+
+void TomlReader::only_keys(const toml::table& t, const std::string& field,
+                           std::initializer_list<std::string_view> keys) const {
+    for (const auto& [key, node] : t) {
+        if (std::find(keys.begin(), keys.end(), key.str()) != keys.end()) continue;
+        std::string known;
+        for (auto k : keys) known += (known.empty() ? "" : ", ") + std::string(k);
+        fail(&node, join(field, key.str()), "unknown field; expected one of: " + known);
+    }
+}
+
+std::string TomlReader::text(const toml::table& t, std::string_view key, const std::string& field,
+                             std::optional<std::string> fallback) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (fallback) return *fallback;
+        fail(&t, join(field, key), "missing; expected a string");
+    }
+    if (auto s = n->value<std::string>()) return *s;
+    fail(n, join(field, key), "expected a string");
+}
+
+double TomlReader::number(const toml::table& t, std::string_view key, const std::string& field,
+                          std::optional<double> fallback) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (fallback) return *fallback;
+        fail(&t, join(field, key), "missing; expected a number");
+    }
+    if (!n->is_number()) fail(n, join(field, key), "expected a number");
+    const double v = n->value<double>().value_or(0.0);
+    if (!std::isfinite(v)) fail(n, join(field, key), "expected a finite number, got " + std::to_string(v));
+    return v;
+}
+
+std::int64_t TomlReader::integer(const toml::table& t, std::string_view key, const std::string& field,
+                                 std::optional<std::int64_t> fallback) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (fallback) return *fallback;
+        fail(&t, join(field, key), "missing; expected an integer");
+    }
+    if (auto v = n->value_exact<std::int64_t>()) return *v;
+    fail(n, join(field, key), "expected an integer");
+}
+
+glm::dvec4 TomlReader::vector(const toml::node& n, const std::string& field, std::size_t min_size,
+                              std::size_t max_size) const {
+    const auto expected = "expected an array of " +
+                          (min_size == max_size ? std::to_string(min_size)
+                                                : std::to_string(min_size) + " or " + std::to_string(max_size)) +
+                          " numbers";
+    const toml::array* a = n.as_array();
+    if (!a || a->size() < min_size || a->size() > max_size) fail(&n, field, expected);
+    glm::dvec4 v{0, 0, 0, 1};
+    for (std::size_t i = 0; i < a->size(); ++i) {
+        const toml::node& c = *a->get(i);
+        if (!c.is_number()) fail(&c, index(field, i), "expected a number");
+        v[int(i)] = c.value<double>().value_or(0.0);
+        if (!std::isfinite(v[int(i)])) fail(&c, index(field, i), "expected a finite number (NaN and inf are refused)");
+    }
+    return v;
+}
+
+const toml::array* TomlReader::array(const toml::table& t, std::string_view key, const std::string& field,
+                                     bool required) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (required) fail(&t, join(field, key), "missing; expected an array");
+        return nullptr;
+    }
+    if (!n->is_array()) fail(n, join(field, key), "expected an array");
+    return n->as_array();
+}
+
+const toml::table* TomlReader::table(const toml::table& t, std::string_view key, const std::string& field,
+                                     bool required) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (required) fail(&t, join(field, key), "missing; expected a table");
+        return nullptr;
+    }
+    if (!n->is_table()) fail(n, join(field, key), "expected a table");
+    return n->as_table();
+}
+
+std::vector<std::string> TomlReader::strings(const toml::table& t, std::string_view key,
+                                             const std::string& field) const {
+    std::vector<std::string> out;
+    const toml::array* a = array(t, key, field, false);
+    if (!a) return out;
+    for (std::size_t i = 0; i < a->size(); ++i) {
+        auto s = a->get(i)->value<std::string>();
+        if (!s) fail(a->get(i), index(join(field, key), i), "expected a string");
+        out.push_back(*s);
+    }
+    return out;
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,89 @@
+// Scene files: a good one loads; a bad one gives one clear error with file, line, column and field.
+#include "catch.h"
+#include "scene/load_scene.h"
+
+using namespace hsr::algo;
+
+namespace {
+
+LoadError error_of(const std::string& text) {
+    try {
+        load_scene_text("bad.toml", text);
+    } catch (const LoadError& e) {
+        return e;
+    }
+    FAIL("the scene loaded, but it should not have:\n" << text);
+    throw;  // unreachable
+}
+
+}  // namespace
+
+TEST_CASE("a scene loads with its camera, geometry, colours and expectations", "[scene]") {
+    const Scene s = load_scene_text("good.toml", R"(
+name = "good"
+[camera]
+eye = [1, 2, 3]
+fov = 45
+[[segments]]
+id = 7
+color = "#ff8000"
+a = [0, 0, 0]
+b = [1, 1, 1]
+[[polygons]]
+id = 8
+vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+[[expect.clip]]
+id = 7
+outcome = "inside"
+)");
+    CHECK(s.name == "good");
+    CHECK(s.camera.eye == glm::dvec3(1, 2, 3));
+    CHECK(s.camera.fov_y == 45);
+    REQUIRE(s.segments.size() == 1);
+    CHECK(s.segments[0].id == 7);
+    CHECK(s.segments[0].color == Color{255, 128, 0});
+    CHECK(s.segments[0].b == glm::dvec4(1, 1, 1, 1));
+    REQUIRE(s.polygons.size() == 1);
+    CHECK(s.polygons[0].vertices.size() == 3);
+    REQUIRE(s.expect.clip.size() == 1);
+    CHECK(s.expect.clip[0].outcome == "inside");
+}
+
+TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
+    struct Case {
+        const char* text;
+        int line;
+        const char* field;
+        const char* says;
+    };
+    const Case cases[] = {
+        {"[[segments]]\nid = 1\na = [0, 0]\nb = [1, 1, 1]\n", 3, "segments[0].a", "array of 3 numbers"},
+        {"[[segments]]\nid = 1\na = [0, 0, nan]\nb = [1, 1, 1]\n", 3, "segments[0].a[2]", "finite"},
+        {"[[segments]]\nid = 1\na = [0, \"x\", 0]\nb = [1, 1, 1]\n", 3, "segments[0].a[1]", "a number"},
+        {"[[segments]]\nid = 1\nb = [1, 1, 1]\n", 1, "segments[0].a", "missing"},
+        {"[camera]\nfov = 200\n", 2, "camera.fov", "0 < fov < 180"},
+        {"[camera]\nnear = 5\nfar = 1\n", 3, "camera.far", "far > near"},
+        {"[camera]\neye = [0, 0, 0]\n", 1, "camera.target", "target equals eye"},
+        {"[camera]\nfovy = 60\n", 2, "camera.fovy", "unknown field"},
+        {"[[points]]\nid = 1\np = [0, 0, 0]\n[[points]]\nid = 1\np = [1, 0, 0]\n", 5, "points[1].id", "used twice"},
+        {"[[points]]\nid = 1\ncolor = \"red\"\np = [0, 0, 0]\n", 3, "points[0].color", "#rrggbb"},
+        {"[[polygons]]\nid = 1\nvertices = [[0, 0, 0], [1, 0, 0]]\n", 3, "polygons[0].vertices", "at least 3"},
+        {"[[expect.clip]]\nid = 1\noutcome = \"maybe\"\n", 3, "expect.clip[0].outcome", "\"inside\""},
+        {"coordinates = \"screen\"\n", 1, "coordinates", "\"world\" or \"clip\""},
+        {"name = \"x\"\n[camera\n", 2, "", ""},  // a TOML syntax error
+    };
+    for (const Case& c : cases) {
+        const LoadError e = error_of(c.text);
+        INFO(c.text << "\n→ " << e.what());
+        CHECK(e.file == "bad.toml");
+        CHECK(e.line == c.line);
+        CHECK(e.column >= 1);
+        CHECK(e.field == c.field);
+        CHECK_THAT(e.what(), Catch::Contains(c.says));
+        CHECK_THAT(e.what(), Catch::StartsWith("bad.toml:" + std::to_string(c.line) + ":"));
+    }
+}
+
+TEST_CASE("a missing scene file is a LoadError, not a crash", "[scene][errors]") {
+    CHECK_THROWS_AS(load_scene("/nonexistent/scene.toml"), LoadError);
+}

@@ -1,0 +1,122 @@
+// The player: seek(k) equals folding events [0, k) from the start, for every k, on real traces.
+#include <random>
+
+#include "catch.h"
+#include "clipping/clip_test_helpers.h"
+#include "state/clip_view.h"
+#include "state/event_log.h"
+#include "state/player.h"
+
+using namespace hsr::algo;
+using namespace hsr::viz;
+
+namespace {
+
+using TestPlayer = Player<ClipEvent, std::vector<PrimitiveClip>, ClipView>;
+
+bool same_view(const ClipView& a, const ClipView& b) {
+    if (a.primitives.size() != b.primitives.size()) return false;
+    for (std::size_t i = 0; i < a.primitives.size(); ++i) {
+        const auto &x = a.primitives[i], &y = b.primitives[i];
+        if (x.id != y.id || x.status != y.status || x.outcome != y.outcome || x.visible != y.visible) return false;
+    }
+    return a.active == b.active && a.p1 == b.p1 && a.p2 == b.p2 && a.c1 == b.c1 && a.c2 == b.c2 &&
+           a.round == b.round && a.plane == b.plane && a.intersections == b.intersections &&
+           a.t_enter == b.t_enter && a.t_leave == b.t_leave && a.stage_input == b.stage_input &&
+           a.stage_output == b.stage_output && a.edge == b.edge && a.bound_reached == b.bound_reached;
+}
+
+ClipJob job_for(ClipSpace s, int n) {
+    std::mt19937_64 rng(21);
+    ClipJob job{.space = s};
+    for (int i = 0; i < n; ++i)
+        job.segments.push_back({i + 1, hsr::test::random_point(rng, s), hsr::test::random_point(rng, s)});
+    for (int i = 0; i < n; ++i) {
+        ClipPolygon p{n + i + 1, {}};
+        for (int k = 0; k < 5; ++k) p.vertices.push_back(hsr::test::random_point(rng, s));
+        job.polygons.push_back(p);
+    }
+    return job;
+}
+
+}  // namespace
+
+TEST_CASE("the event log returns each event as it was pushed", "[state][log]") {
+    EventLog<ClipEvent> log;
+    const std::vector<ClipEvent> events = {SegmentStarted{1, {1, 2, 3, 4}, {5, 6, 7, 8}}, CodesCompared{{3}, {4}},
+                                           StageStarted{ClipPlane::x_min, 9}, CodesCompared{{5}, {6}}};
+    for (const auto& e : events) log.push(e);
+    REQUIRE(log.size() == events.size());
+    for (std::size_t k = 0; k < events.size(); ++k) CHECK(log.at(k) == events[k]);
+}
+
+TEST_CASE("seek(k) equals a fold of events [0, k) for every k", "[state][player]") {
+    const ClipSpace space = GENERATE(ClipSpace::cube, ClipSpace::homogeneous);
+    const ClipAlgorithm algorithm = GENERATE(ClipAlgorithm::cohen_sutherland, ClipAlgorithm::sutherland_hodgman);
+    const ClipJob job = job_for(space, 40);
+    // Reference: every prefix fold, from a second run of the same machine.
+    std::vector<ClipView> folds{initial_view(job, algorithm)};
+    for (const auto& e : clip_scene(job, algorithm)) {
+        folds.push_back(folds.back());
+        reduce(folds.back(), e);
+    }
+    const std::size_t n = folds.size() - 1;
+    REQUIRE(n > 300);
+
+    TestPlayer player(clip_scene(job, algorithm), initial_view(job, algorithm), {.min_keyframe_interval = 16, .keyframe_bytes_per_event = 1u << 20});  // many keyframes
+    SECTION("seeking forward to every k in order") {
+        for (std::size_t k = 0; k <= n; ++k) {
+            player.seek(k);
+            REQUIRE(player.cursor() == k);
+            REQUIRE(same_view(player.view(), folds[k]));
+        }
+        CHECK(player.keyframe_count() > 1);
+    }
+    SECTION("seeking to every k in a shuffled order") {
+        player.seek_end();
+        REQUIRE(player.cursor() == n);
+        std::vector<std::size_t> ks(n + 1);
+        for (std::size_t k = 0; k <= n; ++k) ks[k] = k;
+        std::shuffle(ks.begin(), ks.end(), std::mt19937_64(3));
+        for (std::size_t k : ks) {
+            player.seek(k);
+            REQUIRE(same_view(player.view(), folds[k]));
+        }
+    }
+    SECTION("stepping back then forward returns to the same view") {
+        player.seek(n / 2);
+        for (int i = 0; i < 50; ++i) player.step_back();
+        CHECK(same_view(player.view(), folds[n / 2 - 50]));
+        for (int i = 0; i < 50; ++i) player.step_forward();
+        CHECK(same_view(player.view(), folds[n / 2]));
+    }
+    SECTION("seeking past the end stops at the end, and the result is there") {
+        player.seek(n + 100);
+        CHECK(player.cursor() == n);
+        CHECK(player.at_end());
+        REQUIRE(player.result() != nullptr);
+        CHECK(answers(player.view()) == *player.result());
+    }
+}
+
+TEST_CASE("the player pulls events lazily", "[state][player]") {
+    const ClipJob job = job_for(ClipSpace::cube, 10);
+    TestPlayer player(clip_scene(job, ClipAlgorithm::cohen_sutherland),
+                      initial_view(job, ClipAlgorithm::cohen_sutherland));
+    CHECK(player.known() == 0);
+    player.step_forward();
+    CHECK(player.known() == 1);
+    player.seek(5);
+    CHECK(player.known() == 5);
+    CHECK_FALSE(player.complete());
+}
+
+TEST_CASE("a player with an event cap ends there instead of pulling forever", "[state][player]") {
+    const ClipJob job = job_for(ClipSpace::cube, 10);
+    TestPlayer player(clip_scene(job, ClipAlgorithm::cohen_sutherland),
+                      initial_view(job, ClipAlgorithm::cohen_sutherland), {.max_events = 7});
+    player.seek_end();
+    CHECK(player.cursor() == 7);
+    CHECK(player.capped());
+    CHECK(player.at_end());
+}

@@ -1,0 +1,63 @@
+#include "state/lesson.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "scene/load_scene.h"
+#include "scene/toml_reader.h"
+
+namespace hsr::viz {
+namespace {
+
+algo::AlgorithmInfo algorithm_named(const algo::TomlReader* r, const toml::node* at, const std::string& id,
+                                    const std::string& file) {
+    if (auto a = algo::find_algorithm(id)) return *a;
+    std::string known;
+    for (const auto& a : algo::algorithms()) known += (known.empty() ? "" : ", ") + std::string(a.id);
+    const std::string message = "unknown algorithm \"" + id + "\"; expected one of: " + known;
+    if (r) r->fail(at, "algorithm", message);
+    throw algo::LoadError(file, 0, 0, "algorithm", message);
+}
+
+}  // namespace
+
+Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm) {
+    const algo::TomlReader r(path);
+    const toml::table& root = r.root();
+    Lesson lesson;
+    lesson.source = path;
+
+    if (!root.contains("algorithm")) {  // a scene file, played as a lesson of its own
+        lesson.scene = algo::read_scene(r);
+        lesson.title = lesson.scene.name;
+        lesson.summary = lesson.scene.description;
+        const std::string fallback = lesson.scene.polygons.empty() ? "cohen_sutherland" : "sutherland_hodgman";
+        lesson.algorithm = algorithm_named(nullptr, nullptr, algorithm.value_or(fallback), path);
+        lesson.difficulty = lesson.algorithm.difficulty;
+        return lesson;
+    }
+
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary"});
+    lesson.title = r.text(root, "title", "");
+    lesson.summary = r.text(root, "summary", "", "");
+    lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);
+    lesson.difficulty = int(r.integer(root, "difficulty", "", 1));
+    if (lesson.difficulty < 1 || lesson.difficulty > 5)
+        r.fail(root.get("difficulty"), "difficulty", "expected a difficulty from 1 to 5");
+    lesson.prerequisites = r.strings(root, "prerequisites", "");
+    const std::string scene = r.text(root, "scene", "");
+    const auto scene_path = std::filesystem::path(path).parent_path() / scene;
+    if (!std::filesystem::exists(scene_path))
+        r.fail(root.get("scene"), "scene", "no such file: " + scene_path.string());
+    lesson.scene = algo::load_scene(scene_path.lexically_normal().string());
+    return lesson;
+}
+
+std::string data_dir() {
+    if (const char* d = std::getenv("HSRVIZ_DATA"); d && *d) return d;
+    return HSR_SOURCE_DIR;
+}
+
+std::string default_lesson_path() { return data_dir() + "/lessons/01_cohen_sutherland.toml"; }
+
+}  // namespace hsr::viz

@@ -1,0 +1,40 @@
+// A lesson file (lessons/NN_topic.toml) names an algorithm and a scene:
+//
+//   title = "3D Cohen–Sutherland line clipping"
+//   algorithm = "cohen_sutherland"          # an id of algorithms/registry.cpp
+//   scene = "../assets/scenes/cs_segments.toml"   # relative to the lesson file
+//   difficulty = 1                           # 1 … 5
+//   prerequisites = []                       # lesson file names
+//   summary = "…"
+//
+// A scene file given where a lesson is expected plays as a lesson of its own, with the algorithm the caller names
+// (or the one that fits its geometry: Sutherland–Hodgman for polygons, Cohen–Sutherland otherwise).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "registry.h"
+#include "scene/scene.h"
+
+namespace hsr::viz {
+
+struct Lesson {
+    std::string source;  // the lesson (or scene) file
+    std::string title;
+    std::string summary;
+    algo::AlgorithmInfo algorithm;
+    int difficulty = 1;
+    std::vector<std::string> prerequisites;
+    algo::Scene scene;
+};
+
+// Loads a lesson or a scene file; throws algo::LoadError naming file, line, column and field.
+Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm = std::nullopt);
+
+// Where lessons/ and assets/ are: $HSRVIZ_DATA, else the source tree the program was built from.
+std::string data_dir();
+std::string default_lesson_path();
+
+}  // namespace hsr::viz
