@@ -20,7 +20,7 @@ bool same_view(const ClipView& a, const ClipView& b) {
         const auto &x = a.primitives[i], &y = b.primitives[i];
         if (x.id != y.id || x.status != y.status || x.outcome != y.outcome || x.visible != y.visible) return false;
     }
-    return a.active == b.active && a.p1 == b.p1 && a.p2 == b.p2 && a.c1 == b.c1 && a.c2 == b.c2 &&
+    return a.active == b.active && a.p1 == b.p1 && a.p2 == b.p2 && a.c1 == b.c1 && a.c2 == b.c2 && a.c1_known == b.c1_known && a.c2_known == b.c2_known &&
            a.round == b.round && a.plane == b.plane && a.intersections == b.intersections &&
            a.t_enter == b.t_enter && a.t_leave == b.t_leave && a.stage_input == b.stage_input &&
            a.stage_output == b.stage_output && a.edge == b.edge && a.bound_reached == b.bound_reached;

@@ -41,6 +41,7 @@ void finish(ClipView& v, ClipOutcome outcome, std::vector<Vec4> visible) {
 ClipView initial_view(const ClipJob& job, ClipAlgorithm algorithm) {
     ClipView v;
     v.space = job.space;
+    v.algorithm = algorithm;
     for (const auto& p : job.points) v.primitives.push_back({.id = p.id, .kind = PrimitiveKind::point, .input = {p.p}});
     if (algorithm != ClipAlgorithm::sutherland_hodgman)
         for (const auto& s : job.segments) v.primitives.push_back({.id = s.id, .kind = PrimitiveKind::segment, .input = {s.p1, s.p2}});
@@ -62,10 +63,13 @@ void reduce(ClipView& v, const ClipEvent& event) {
                 v.p1 = e.p1;
                 v.p2 = e.p2;
                 v.c1 = v.c2 = Outcode{};
+                v.c1_known = v.c2_known = false;
             },
             [&](const OutcodeComputed& e) {
                 (e.endpoint == Endpoint::p1 ? v.p1 : v.p2) = e.p;
                 (e.endpoint == Endpoint::p1 ? v.c1 : v.c2) = e.code;
+                (e.endpoint == Endpoint::p1 ? v.c1_known : v.c2_known) = true;
+                if (e.endpoint == Endpoint::p1) v.c2_known = false;  // a new round: p2's code is computed next
                 v.round = e.round;
                 v.plane.reset();
             },
@@ -80,6 +84,7 @@ void reduce(ClipView& v, const ClipEvent& event) {
                 v.plane = e.plane;
                 v.intersections.push_back(e.point);
                 (e.replaces == Endpoint::p1 ? v.p1 : v.p2) = e.point;
+                (e.replaces == Endpoint::p1 ? v.c1_known : v.c2_known) = false;  // mkcode(i) comes next round
             },
             [&](const BoundaryTested& e) { v.plane = e.plane; },
             [&](const ParameterUpdated& e) { (e.which == Parameter::t_enter ? v.t_enter : v.t_leave) = e.after; },

@@ -29,12 +29,14 @@ struct PrimitiveState {
 
 struct ClipView {
     algo::ClipSpace space = algo::ClipSpace::homogeneous;
+    algo::ClipAlgorithm algorithm = algo::ClipAlgorithm::cohen_sutherland;
     std::vector<PrimitiveState> primitives;  // in the order the machine clips them
     int active = -1;                         // index of the primitive being clipped
 
     // The segment being clipped (Cohen–Sutherland, Liang–Barsky): its current ends and their outcodes.
     Vec4 p1{}, p2{};
     algo::Outcode c1{}, c2{};
+    bool c1_known = false, c2_known = false;  // computed for the current round
     int round = 0;
     std::optional<algo::ClipPlane> plane;    // the plane in focus
     std::vector<Vec4> intersections;         // found so far on the active primitive

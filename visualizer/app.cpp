@@ -1,0 +1,281 @@
+// [SECTION] the lesson and its playback (update)
+// [SECTION] drawing a frame (draw)
+// [SECTION] window, GL context and ImGui setup
+// [SECTION] the loop
+#include "app.h"
+
+#include <SDL.h>
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_impl_sdl.h>
+#include <stb/stb_image_write.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "panels/clip_panels.h"
+#include "render/clip_renderer.h"
+#include "render/gl.h"
+#include "render/orbit_camera.h"
+#include "render/palette.h"
+#include "scene/toml_reader.h"
+#include "state/clip_session.h"
+#include "state/trace.h"
+
+namespace hsr::viz {
+namespace {
+
+// ── [SECTION] the lesson and its playback (update) ──────────────────────────────────────────────────────────
+struct Lessonplay {
+    std::unique_ptr<ClipSession> session;
+    std::string error;  // why the lesson could not be loaded ("" when it could)
+    PlaybackState playback;
+    OrbitCamera camera;
+
+    void load(const AppOptions& o) {
+        try {
+            session = std::make_unique<ClipSession>(load_lesson(o.lesson_path, o.algorithm));
+            error.clear();
+            glm::vec3 centre;
+            float radius;
+            clip_view_bounds(session->player().view(), session->lesson().scene, centre, radius);
+            camera.target = centre;
+            camera.distance = radius * 2.4f;
+        } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
+            session.reset();
+            error = e.what();
+            std::fprintf(stderr, "hsrviz: %s\n", e.what());
+        }
+    }
+
+    void update(const UiActions& a, double dt, const AppOptions& o) {
+        if (a.reload) load(o);
+        if (!session) return;
+        ClipPlayer& p = session->player();
+        if (a.speed) playback.speed = *a.speed;
+        if (a.toggle_play) playback.playing = !playback.playing && !p.at_end();
+        if (a.step) session->step();
+        if (a.step_back) session->step_back();
+        if (a.micro_step) p.step_forward();
+        if (a.micro_step_back) p.step_back();
+        if (a.to_start) p.seek(0);
+        if (a.to_end) p.seek_end();
+        if (a.seek) p.seek(*a.seek);
+        if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek)
+            playback.playing = false;
+        if (playback.playing) {
+            playback.since_step += dt;
+            if (playback.since_step >= 1.0 / playback.speed) {
+                playback.since_step = 0;
+                session->step();
+                if (p.at_end()) playback.playing = false;
+            }
+        }
+    }
+};
+
+void keys(const SDL_Event& e, UiActions& a) {
+    if (e.type != SDL_KEYDOWN) return;
+    const bool shift = (e.key.keysym.mod & KMOD_SHIFT) != 0;
+    switch (e.key.keysym.sym) {
+        case SDLK_SPACE: a.toggle_play = true; break;
+        case SDLK_RIGHT: (shift ? a.micro_step : a.step) = true; break;
+        case SDLK_LEFT: (shift ? a.micro_step_back : a.step_back) = true; break;
+        case SDLK_HOME: a.to_start = true; break;
+        case SDLK_END: a.to_end = true; break;
+        case SDLK_F5: a.reload = true; break;
+        default: break;
+    }
+}
+
+// ── [SECTION] drawing a frame (draw) ────────────────────────────────────────────────────────────────────────
+struct Renderer {
+    ClipBatches batches;
+    std::vector<Label> labels;
+};
+
+void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, UiActions& actions) {
+    const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
+    glViewport(0, 0, GLsizei(layout.width), GLsizei(layout.height));
+    glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!lp.session) {
+        error_panel(lp.error, layout, actions);
+        return;
+    }
+    const ClipSession& s = *lp.session;
+    r.batches.faint.clear();
+    r.batches.bold.clear();
+    r.labels.clear();
+    draw_clip_view(s.player().view(), s.lesson().scene, r.batches, r.labels);
+    // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
+    glViewport(0, GLsizei(layout.bottom), GLsizei(view_w), GLsizei(view_h));
+    const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
+    r.batches.faint.draw(vp, 1.5f, 7.0f);
+    r.batches.bold.draw(vp, 3.5f, 11.0f);
+    glViewport(0, 0, GLsizei(layout.width), GLsizei(layout.height));
+
+    draw_labels(r.labels, vp, 0, 0, view_w, view_h);
+    lesson_panel(s, layout);
+    pseudocode_panel(s, layout);
+    state_panel(s, layout);
+    narration_panel(s, layout);
+    timeline_panel(s, lp.playback, layout, actions);
+}
+
+bool write_png(const std::string& path, int w, int h) {
+    std::vector<unsigned char> pixels(std::size_t(w) * std::size_t(h) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    stbi_flip_vertically_on_write(1);
+    return stbi_write_png(path.c_str(), w, h, 4, pixels.data(), w * 4) != 0;
+}
+
+// ── [SECTION] window, GL context and ImGui setup ────────────────────────────────────────────────────────────
+void load_fonts(ImGuiIO& io) {
+    // Latin, Greek (ε), punctuation, arrows and maths (≤ ≥ → −): the characters our sentences use.
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2190, 0x21FF,
+                                     0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+    const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+    if (!std::filesystem::exists(sans) || !std::filesystem::exists(mono)) {
+        io.Fonts->AddFontDefault();  // ASCII only: ≤, → and ε will show as '?'
+        return;
+    }
+    io.Fonts->AddFontFromFileTTF(sans, 17.0f, nullptr, ranges);
+    io.Fonts->AddFontFromFileTTF(mono, 15.0f, nullptr, ranges);  // pseudocode
+}
+
+struct Window {
+    SDL_Window* window = nullptr;
+    SDL_GLContext gl = nullptr;
+
+    bool open(const AppOptions& o) {
+        if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
+            std::fprintf(stderr, "hsrviz: SDL_Init failed: %s\n", SDL_GetError());
+            return false;
+        }
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+        SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+        SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+        SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
+        window = SDL_CreateWindow("hsrviz", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, o.width, o.height,
+                                  SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+        if (!window) {
+            std::fprintf(stderr, "hsrviz: cannot open a window: %s\n", SDL_GetError());
+            return false;
+        }
+        gl = SDL_GL_CreateContext(window);
+        if (!gl) {
+            std::fprintf(stderr, "hsrviz: cannot create an OpenGL 3.3 context: %s\n", SDL_GetError());
+            return false;
+        }
+        SDL_GL_MakeCurrent(window, gl);
+        SDL_GL_SetSwapInterval(1);
+        return true;
+    }
+    void close() {
+        if (gl) SDL_GL_DeleteContext(gl);
+        if (window) SDL_DestroyWindow(window);
+        SDL_Quit();
+    }
+};
+
+}  // namespace
+
+// ── [SECTION] the loop ──────────────────────────────────────────────────────────────────────────────────────
+int run_app(const AppOptions& o) {
+    Window w;
+    if (!w.open(o)) {
+        w.close();
+        return 1;
+    }
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0;
+    load_fonts(io);
+    ImGui_ImplSDL2_InitForOpenGL(w.window, w.gl);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    int exit_code = 0;
+    {
+        Lessonplay lp;
+        lp.load(o);
+        lp.playback.playing = o.autoplay;
+        Renderer renderer;
+        std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
+        bool dragging = false, running = true;
+        if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
+
+        while (running) {
+            UiActions actions;
+            SDL_Event e;
+            while (SDL_PollEvent(&e)) {
+                ImGui_ImplSDL2_ProcessEvent(&e);
+                if (e.type == SDL_QUIT) running = false;
+                if (!io.WantCaptureKeyboard) keys(e, actions);
+                if (!io.WantCaptureMouse) {  // orbit and zoom the 3D view
+                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) dragging = true;
+                    if (e.type == SDL_MOUSEWHEEL) lp.camera.zoom(float(e.wheel.y));
+                }
+                if (e.type == SDL_MOUSEBUTTONUP) dragging = false;
+                if (e.type == SDL_MOUSEMOTION && dragging) lp.camera.orbit(float(e.motion.xrel), float(e.motion.yrel));
+            }
+            const std::uint64_t ticks = SDL_GetTicks64();
+            // recording and screenshots take one Step per frame, so the same command gives the same picture
+            if ((o.record_dir || o.screenshot) && frame > 0) actions.step = true;
+            lp.update(actions, double(ticks - last_ticks) / 1000.0, o);
+            last_ticks = ticks;
+
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplSDL2_NewFrame();
+            ImGui::NewFrame();
+            int width = 0, height = 0;
+            SDL_GL_GetDrawableSize(w.window, &width, &height);
+            UiActions from_panels;
+            draw_frame(lp, renderer, PanelLayout{float(width), float(height)}, from_panels);
+            ImGui::Render();
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            ++frame;
+
+            if (o.record_dir) {
+                char name[64];
+                std::snprintf(name, sizeof name, "/frame_%04llu.png", static_cast<unsigned long long>(frame - 1));
+                write_png(*o.record_dir + name, width, height);
+                const bool done = !lp.session || lp.session->player().at_end() || frame >= 2000;
+                if (done) running = false;
+            }
+            if (o.screenshot && frame >= std::uint64_t(o.frames)) {
+                if (!write_png(*o.screenshot, width, height)) {
+                    std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
+                    exit_code = 1;
+                }
+                running = false;
+            }
+            SDL_GL_SwapWindow(w.window);
+            // carry the panels' requests into the next update
+            if (from_panels.toggle_play || from_panels.step || from_panels.step_back || from_panels.micro_step ||
+                from_panels.micro_step_back || from_panels.to_start || from_panels.to_end || from_panels.seek ||
+                from_panels.speed || from_panels.reload)
+                lp.update(from_panels, 0, o);
+        }
+        if (o.record_dir) {
+            std::printf("hsrviz: wrote %llu frames to %s/frame_*.png\n", static_cast<unsigned long long>(frame),
+                        o.record_dir->c_str());
+            if (!lp.session) exit_code = 1;
+        }
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+    w.close();
+    return exit_code;
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,23 @@
+// The window: SDL2 + OpenGL 3.3 core + Dear ImGui around one lesson being played.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace hsr::viz {
+
+struct AppOptions {
+    std::string lesson_path;
+    std::optional<std::string> algorithm;      // overrides the lesson's
+    std::optional<std::string> screenshot;     // write a PNG of the window after `frames` frames, then exit
+    int frames = 60;
+    std::optional<std::string> record_dir;     // headless: a PNG per step and the trace, then exit
+    int width = 1280, height = 800;
+    bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
+};
+
+// Runs until the window closes (or the screenshot / recording is done). Returns the process exit code.
+int run_app(const AppOptions& options);
+
+}  // namespace hsr::viz

@@ -1,0 +1,52 @@
+// hsrviz: step through culling and hidden-surface algorithms.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <cstdlib>
+
+#include "app.h"
+#include "cli/commands.h"
+#include "state/lesson.h"
+#include "state/trace.h"
+
+int main(int argc, char** argv) {
+    // Command line: the window by default, `trace` for a headless run.
+    CLI::App cli{"hsrviz: a step-through visualizer of culling and hidden-surface algorithms"};
+    hsr::viz::AppOptions app;
+    std::string size = "1280x800";
+    cli.add_option("lesson", app.lesson_path, "Lesson or scene file to play (default: the Cohen–Sutherland lesson)");
+    cli.add_option("--screenshot", app.screenshot, "Take one Step per frame, write a PNG of the window after --frames, exit");
+    cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(CLI::PositiveNumber);
+    cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
+    cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
+    cli.add_option("--size", size, "Window size WxH")->check(CLI::Validator(
+        [](std::string& s) { return std::sscanf(s.c_str(), "%*dx%*d") == 0 && s.find('x') != std::string::npos ? "" : "expected WxH"; }, "WxH"));
+    cli.add_flag("--play", app.autoplay, "Start playing at once");
+
+    hsr::viz::TraceOptions trace;
+    CLI::App* trace_cmd = cli.add_subcommand("trace", "Run a lesson's machine headless to completion and write its trace");
+    trace_cmd->add_option("input", trace.input, "Lesson or scene file")->required()->check(CLI::ExistingFile);
+    trace_cmd->add_option("--out", trace.out, "JSON Lines file to write (one event per line)")->required();
+    trace_cmd->add_option("--algorithm", trace.algorithm, "Override the lesson's algorithm");
+    CLI11_PARSE(cli, argc, argv);
+
+    if (*trace_cmd) return hsr::viz::run_trace(trace);
+
+    // The window: the default lesson unless one is named.
+    if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
+    std::sscanf(size.c_str(), "%dx%d", &app.width, &app.height);
+
+    // No display: say so, and play the same lesson headless through SDL's offscreen driver (EGL on Mesa).
+    const bool no_display = !std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER");
+    if (no_display) {
+        setenv("SDL_VIDEODRIVER", "offscreen", 1);
+        if (!app.screenshot && !app.record_dir) {
+            app.record_dir = "hsrviz-out";
+            const std::string trace_file = *app.record_dir + "/trace.jsonl";
+            std::printf("hsrviz: no display found; playing %s headless, writing frames to %s/frame_*.png and the trace to %s\n",
+                        app.lesson_path.c_str(), app.record_dir->c_str(), trace_file.c_str());
+            std::filesystem::create_directories(*app.record_dir);
+            if (hsr::viz::run_trace({app.lesson_path, trace_file, app.algorithm}) != 0) return 1;
+        }
+    }
+    return hsr::viz::run_app(app);
+}

@@ -1,0 +1,26 @@
+// What the user asked for this frame. Panels and keys fill it in; the app carries it out in its update step,
+// so panels never change state themselves.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+
+namespace hsr::viz {
+
+struct UiActions {
+    bool toggle_play = false;
+    bool step = false, step_back = false;              // to the next / previous major event
+    bool micro_step = false, micro_step_back = false;  // one event
+    bool to_start = false, to_end = false;
+    std::optional<std::size_t> seek;
+    std::optional<float> speed;  // steps per second while playing
+    bool reload = false;
+};
+
+struct PlaybackState {
+    bool playing = false;
+    float speed = 2.0f;        // steps per second
+    double since_step = 0.0;   // seconds since the last automatic step
+};
+
+}  // namespace hsr::viz

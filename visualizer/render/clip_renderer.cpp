@@ -1,0 +1,186 @@
+#include "render/clip_renderer.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include <glm/matrix.hpp>
+
+#include "render/palette.h"
+
+namespace hsr::viz {
+namespace {
+
+using algo::ClipPlane;
+using algo::Vec4;
+
+// Clip space → world space for this scene's camera; none for points the camera maps to infinity.
+class ToWorld {
+public:
+    explicit ToWorld(const algo::Camera& c) : inverse_(glm::inverse(algo::view_projection(c))) {}
+    std::optional<glm::vec3> operator()(const Vec4& clip) const {
+        const glm::dvec4 w = inverse_ * clip;
+        if (!(std::fabs(w.w) > 1e-12)) return std::nullopt;
+        const glm::dvec3 p = glm::dvec3(w) / w.w;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return std::nullopt;
+        return glm::vec3(p);
+    }
+
+private:
+    glm::dmat4 inverse_;
+};
+
+glm::vec4 color_of(const algo::Scene& scene, algo::PrimitiveId id, float alpha) {
+    auto rgb = [&](const algo::Color& c) { return glm::vec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha); };
+    for (const auto& p : scene.points)
+        if (p.id == id) return rgb(p.color);
+    for (const auto& s : scene.segments)
+        if (s.id == id) return rgb(s.color);
+    for (const auto& p : scene.polygons)
+        if (p.id == id) return rgb(p.color);
+    return {0.8f, 0.8f, 0.8f, alpha};
+}
+
+// The clip volume's corner for NDC signs (±1, ±1, ±1).
+Vec4 corner(int x, int y, int z) { return {double(x), double(y), double(z), 1.0}; }
+
+// The four NDC corners of the face of the volume that plane r bounds (none for w ≥ ε: it is at the eye).
+std::optional<std::array<Vec4, 4>> face(ClipPlane r) {
+    switch (r) {
+        case ClipPlane::x_min: return std::array{corner(-1, -1, -1), corner(-1, 1, -1), corner(-1, 1, 1), corner(-1, -1, 1)};
+        case ClipPlane::x_max: return std::array{corner(1, -1, -1), corner(1, 1, -1), corner(1, 1, 1), corner(1, -1, 1)};
+        case ClipPlane::y_min: return std::array{corner(-1, -1, -1), corner(1, -1, -1), corner(1, -1, 1), corner(-1, -1, 1)};
+        case ClipPlane::y_max: return std::array{corner(-1, 1, -1), corner(1, 1, -1), corner(1, 1, 1), corner(-1, 1, 1)};
+        case ClipPlane::z_min: return std::array{corner(-1, -1, -1), corner(1, -1, -1), corner(1, 1, -1), corner(-1, 1, -1)};
+        case ClipPlane::z_max: return std::array{corner(-1, -1, 1), corner(1, -1, 1), corner(1, 1, 1), corner(-1, 1, 1)};
+        case ClipPlane::w_min: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+void polyline(LineBatch& b, const ToWorld& world, const std::vector<Vec4>& v, bool closed, glm::vec4 color) {
+    const std::size_t n = v.size();
+    if (n == 1)
+        if (auto p = world(v[0])) b.point(*p, color);
+    for (std::size_t i = 0; i + 1 < n + (closed && n > 2 ? 1 : 0); ++i) {
+        const auto a = world(v[i]), c = world(v[(i + 1) % n]);
+        if (a && c) b.line(*a, *c, color);
+    }
+}
+
+void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera& camera, ClipBatches& out,
+                 std::vector<Label>& labels) {
+    // the 12 edges of the frustum (or box)
+    for (int a = -1; a <= 1; a += 2)
+        for (int b = -1; b <= 1; b += 2) {
+            const std::array<std::pair<Vec4, Vec4>, 3> edges = {std::pair{corner(-1, a, b), corner(1, a, b)},
+                                                                std::pair{corner(a, -1, b), corner(a, 1, b)},
+                                                                std::pair{corner(a, b, -1), corner(a, b, 1)}};
+            for (const auto& [p, q] : edges)
+                if (auto wp = world(p), wq = world(q); wp && wq) out.faint.line(*wp, *wq, palette::volume);
+        }
+    const glm::vec3 eye(camera.eye);
+    out.faint.point(eye, palette::eye);
+    labels.push_back({eye, "eye", palette::eye});
+    if (!view.plane) return;
+    if (const auto f = face(*view.plane)) {
+        std::array<glm::vec3, 4> c{};
+        for (int i = 0; i < 4; ++i)
+            if (auto p = world((*f)[std::size_t(i)])) c[std::size_t(i)] = *p;
+        out.faint.triangle(c[0], c[1], c[2], palette::plane_fill);
+        out.faint.triangle(c[0], c[2], c[3], palette::plane_fill);
+        for (int i = 0; i < 4; ++i) out.bold.line(c[std::size_t(i)], c[std::size_t((i + 1) % 4)], palette::plane_edge);
+        labels.push_back({(c[0] + c[2]) * 0.5f, std::string(algo::plane_inequality(*view.plane, view.space)),
+                          palette::plane_edge});
+    } else {
+        labels.push_back({eye, "w ≥ ε", palette::plane_edge});
+    }
+}
+
+void draw_active_segment(const ClipView& view, const PrimitiveState& p, const ToWorld& world, ClipBatches& out,
+                         std::vector<Label>& labels) {
+    const Vec4 a = p.input[0], b = p.input[1];
+    if (view.algorithm == algo::ClipAlgorithm::liang_barsky) {  // the part [t_enter, t_leave] of the input
+        const Vec4 e = a + view.t_enter * (b - a), l = a + view.t_leave * (b - a);
+        if (auto we = world(e), wl = world(l); we && wl) {
+            out.bold.line(*we, *wl, palette::working);
+            out.bold.point(*we, palette::parameter);
+            out.bold.point(*wl, palette::parameter);
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "t_enter %.3g", view.t_enter);
+            labels.push_back({*we, buf, palette::parameter});
+            std::snprintf(buf, sizeof buf, "t_leave %.3g", view.t_leave);
+            labels.push_back({*wl, buf, palette::parameter});
+        }
+        return;
+    }
+    const auto w1 = world(view.p1), w2 = world(view.p2);
+    if (w1 && w2) out.bold.line(*w1, *w2, palette::working);
+    const auto end = [&](const std::optional<glm::vec3>& at, const char* name, algo::Outcode c, bool known) {
+        if (!at) return;
+        const glm::vec4 color = !known ? palette::working : c.inside() ? palette::inside : palette::outside;
+        out.bold.point(*at, color);
+        labels.push_back({*at, known ? std::string(name) + " " + algo::to_string(c) : std::string(name), color});
+    };
+    end(w1, "p1", view.c1, view.c1_known);
+    end(w2, "p2", view.c2, view.c2_known);
+}
+
+void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const PrimitiveState& p, const ToWorld& world,
+                         ClipBatches& out) {
+    polyline(out.faint, world, view.stage_input, true, palette::working);
+    polyline(out.bold, world, view.stage_output, false, color_of(scene, p.id, 1));
+    if (view.edge >= 0 && !view.stage_input.empty()) {
+        const std::size_t i = std::size_t(view.edge), n = view.stage_input.size();
+        if (auto s = world(view.stage_input[i]), e = world(view.stage_input[(i + 1) % n]); s && e) {
+            out.bold.line(*s, *e, palette::current_edge);
+            out.bold.point(*e, palette::current_edge);
+        }
+    }
+}
+
+}  // namespace
+
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& out, std::vector<Label>& labels) {
+    const ToWorld world(scene.camera);
+    draw_volume(view, world, scene.camera, out, labels);
+
+    for (std::size_t i = 0; i < view.primitives.size(); ++i) {
+        const PrimitiveState& p = view.primitives[i];
+        const bool active = int(i) == view.active && p.status == PrimitiveStatus::clipping;
+        const float input_alpha = p.status == PrimitiveStatus::waiting ? 0.7f : 0.3f;
+        polyline(p.kind == PrimitiveKind::point ? out.bold : out.faint, world, p.input,
+                 p.kind == PrimitiveKind::polygon, color_of(scene, p.id, input_alpha));
+        if (p.status == PrimitiveStatus::done)
+            polyline(out.bold, world, p.visible, p.kind == PrimitiveKind::polygon, color_of(scene, p.id, 1));
+        if (!p.input.empty())
+            if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), color_of(scene, p.id, 0.9f)});
+        if (!active) continue;
+        if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels);
+        if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, scene, p, world, out);
+    }
+    for (std::size_t k = 0; k < view.intersections.size(); ++k)
+        if (auto at = world(view.intersections[k])) {
+            out.bold.point(*at, palette::intersection);
+            labels.push_back({*at, "i" + std::to_string(k + 1), palette::intersection});
+        }
+}
+
+void clip_view_bounds(const ClipView&, const algo::Scene& scene, glm::vec3& centre, float& radius) {
+    const ToWorld world(scene.camera);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    auto grow = [&](glm::vec3 p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    };
+    for (int x = -1; x <= 1; x += 2)
+        for (int y = -1; y <= 1; y += 2)
+            for (int z = -1; z <= 1; z += 2)
+                if (auto p = world(corner(x, y, z))) grow(*p);
+    grow(glm::vec3(scene.camera.eye));
+    centre = (lo + hi) * 0.5f;
+    radius = std::max(0.5f, glm::length(hi - lo) * 0.5f);
+}
+
+}  // namespace hsr::viz

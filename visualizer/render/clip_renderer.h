@@ -1,0 +1,32 @@
+// Draws a clipping view in world space: the clip volume as the camera's frustum (or box), the plane in focus as a
+// translucent face, every primitive faint as given and bold where it is visible, and the working state of the
+// primitive being clipped. Reads the view and the scene; changes neither.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/line_batch.h"
+#include "scene/scene.h"
+#include "state/clip_view.h"
+
+namespace hsr::viz {
+
+// Text to show beside a point of the 3D view (drawn by the panels, which own the fonts).
+struct Label {
+    glm::vec3 world;
+    std::string text;
+    glm::vec4 color;
+};
+
+struct ClipBatches {
+    LineBatch faint;  // thin lines: the volume, inputs, context
+    LineBatch bold;   // thick lines: visible parts, the segment being clipped
+};
+
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& batches, std::vector<Label>& labels);
+
+// A sphere holding the clip volume and the scene, for framing the viewer's camera.
+void clip_view_bounds(const ClipView& view, const algo::Scene& scene, glm::vec3& centre, float& radius);
+
+}  // namespace hsr::viz

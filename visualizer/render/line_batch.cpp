@@ -1,0 +1,125 @@
+#include "render/line_batch.h"
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace hsr::viz {
+namespace {
+
+constexpr const char* vertex_shader = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec4 color;
+uniform mat4 mvp;
+uniform float point_size;
+out vec4 v_color;
+void main() {
+    gl_Position = mvp * vec4(position, 1.0);
+    gl_PointSize = point_size;
+    v_color = color;
+})";
+
+constexpr const char* fragment_shader = R"(#version 330 core
+in vec4 v_color;
+out vec4 frag;
+void main() { frag = v_color; })";
+
+GLuint compile(GLenum type, const char* source) {
+    const GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &source, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[1024];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        throw std::runtime_error(std::string("shader compile failed: ") + log);
+    }
+    return s;
+}
+
+}  // namespace
+
+LineBatch::LineBatch() {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex_shader), fs = compile(GL_FRAGMENT_SHADER, fragment_shader);
+    program_ = glCreateProgram();
+    glAttachShader(program_, vs);
+    glAttachShader(program_, fs);
+    glLinkProgram(program_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    mvp_location_ = glGetUniformLocation(program_, "mvp");
+    point_size_location_ = glGetUniformLocation(program_, "point_size");
+
+    glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vbo_);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ColoredVertex),
+                          reinterpret_cast<void*>(offsetof(ColoredVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ColoredVertex),
+                          reinterpret_cast<void*>(offsetof(ColoredVertex, color)));
+    glBindVertexArray(0);
+}
+
+LineBatch::~LineBatch() {
+    glDeleteBuffers(1, &vbo_);
+    glDeleteVertexArrays(1, &vao_);
+    glDeleteProgram(program_);
+}
+
+void LineBatch::clear() {
+    lines_.clear();
+    triangles_.clear();
+    points_.clear();
+}
+
+void LineBatch::line(glm::vec3 a, glm::vec3 b, glm::vec4 color) {
+    lines_.push_back({a, color});
+    lines_.push_back({b, color});
+}
+
+void LineBatch::triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec4 color) {
+    triangles_.push_back({a, color});
+    triangles_.push_back({b, color});
+    triangles_.push_back({c, color});
+}
+
+void LineBatch::point(glm::vec3 p, glm::vec4 color) { points_.push_back({p, color}); }
+
+void LineBatch::upload_and_draw(const std::vector<ColoredVertex>& v, GLenum mode) {
+    if (v.empty()) return;
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(ColoredVertex)), v.data(), GL_STREAM_DRAW);
+    glDrawArrays(mode, 0, GLsizei(v.size()));
+}
+
+void LineBatch::draw(const glm::mat4& view_projection, float line_width, float point_size) {
+    glUseProgram(program_);
+    glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(view_projection));
+    glUniform1f(point_size_location_, point_size);
+    glBindVertexArray(vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+
+    glDepthMask(GL_FALSE);  // translucent faces never hide what is behind them
+    upload_and_draw(triangles_, GL_TRIANGLES);
+    glDepthMask(GL_TRUE);
+    glLineWidth(line_width);
+    upload_and_draw(lines_, GL_LINES);
+    glDisable(GL_DEPTH_TEST);  // points (intersections, endpoints) always show
+    upload_and_draw(points_, GL_POINTS);
+
+    glLineWidth(1);
+    glBindVertexArray(0);
+    glUseProgram(0);
+}
+
+}  // namespace hsr::viz
