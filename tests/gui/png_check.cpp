@@ -1,0 +1,47 @@
+// Checks that a screenshot of the window is a real picture: the expected size, a 3D view that is not just
+// background, and panels with text. Usage: png_check FILE WIDTH HEIGHT
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+
+#include <stb/stb_image.h>
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: png_check FILE WIDTH HEIGHT\n");
+        return 2;
+    }
+    int w = 0, h = 0, n = 0;
+    unsigned char* pixels = stbi_load(argv[1], &w, &h, &n, 3);
+    if (!pixels) {
+        std::fprintf(stderr, "png_check: cannot read %s: %s\n", argv[1], stbi_failure_reason());
+        return 1;
+    }
+    int failures = 0;
+    if (w != std::atoi(argv[2]) || h != std::atoi(argv[3])) {
+        std::fprintf(stderr, "png_check: %s is %dx%d, expected %sx%s\n", argv[1], w, h, argv[2], argv[3]);
+        ++failures;
+    }
+    // Count pixels unlike the background colour (top-left corner) and distinct colours, in the 3D view (left
+    // half) and in the panels (right third).
+    const unsigned char* bg = pixels;
+    long view_drawn = 0, panel_drawn = 0;
+    std::set<int> colours;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned char* p = pixels + 3 * (std::size_t(y) * w + x);
+            const bool drawn = std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 30;
+            if (x < w / 2) view_drawn += drawn;
+            if (x > 2 * w / 3) panel_drawn += drawn;
+            colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+        }
+    stbi_image_free(pixels);
+    const long area = long(w) * h;
+    std::printf("png_check: %s: %dx%d, %zu colours, %.2f%% of the view and %.2f%% of the panels drawn\n", argv[1], w, h,
+                colours.size(), 200.0 * double(view_drawn) / double(area), 300.0 * double(panel_drawn) / double(area));
+    if (colours.size() < 16) ++failures;
+    if (view_drawn < area / 400) ++failures;   // at least 0.5% of the left half is scene
+    if (panel_drawn < area / 100) ++failures;  // at least 3% of the right third is panel and text
+    if (failures) std::fprintf(stderr, "png_check: %s looks blank or wrong\n", argv[1]);
+    return failures ? 1 : 0;
+}
