@@ -59,7 +59,8 @@ std::optional<std::array<Vec4, 4>> face(ClipPlane r) {
     return std::nullopt;
 }
 
-void polyline(LineBatch& b, const ToWorld& world, const std::vector<Vec4>& v, bool closed, glm::vec4 color) {
+template <class Points>  // std::vector<Vec4> or CowVector<Vec4, N>
+void polyline(LineBatch& b, const ToWorld& world, const Points& v, bool closed, glm::vec4 color) {
     const std::size_t n = v.size();
     if (n == 1)
         if (auto p = world(v[0])) b.point(*p, color);

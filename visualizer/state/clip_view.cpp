@@ -12,7 +12,7 @@ void activate(ClipView& v, PrimitiveId id) {
     for (std::size_t i = std::size_t(v.active + 1); i < v.primitives.size(); ++i)
         if (v.primitives[i].id == id) {
             v.active = int(i);
-            v.primitives[i].status = PrimitiveStatus::clipping;
+            v.primitives.mut(i).status = PrimitiveStatus::clipping;
             break;
         }
     v.plane.reset();
@@ -25,7 +25,7 @@ void activate(ClipView& v, PrimitiveId id) {
     v.edge = -1;
 }
 
-PrimitiveState* active(ClipView& v) { return v.active >= 0 ? &v.primitives[std::size_t(v.active)] : nullptr; }
+PrimitiveState* active(ClipView& v) { return v.active >= 0 ? &v.primitives.mut(std::size_t(v.active)) : nullptr; }
 
 void finish(ClipView& v, ClipOutcome outcome, std::vector<Vec4> visible) {
     if (PrimitiveState* p = active(v)) {
@@ -95,7 +95,8 @@ void reduce(ClipView& v, const ClipEvent& event) {
             },
             [&](const PolygonStarted& e) {
                 activate(v, e.id);
-                if (const PrimitiveState* p = active(v)) v.stage_output = p->input;
+                if (v.active >= 0)
+                    for (const Vec4& p : v.primitives[std::size_t(v.active)].input) v.stage_output.push_back(p);
             },
             [&](const StageStarted& e) {
                 std::swap(v.stage_input, v.stage_output);
@@ -105,7 +106,7 @@ void reduce(ClipView& v, const ClipEvent& event) {
             },
             [&](const EdgeClassified& e) {
                 v.edge = int(e.from);
-                const Vec4& end = v.stage_input[(e.from + 1) % v.stage_input.size()];
+                const Vec4 end = v.stage_input[(e.from + 1) % v.stage_input.size()];
                 switch (e.edge_case) {
                     case EdgeCase::in_in: v.stage_output.push_back(end); break;
                     case EdgeCase::in_out:
@@ -121,7 +122,7 @@ void reduce(ClipView& v, const ClipEvent& event) {
                 }
             },
             [&](const StageFinished&) { v.edge = -1; },
-            [&](const PolygonFinished& e) { finish(v, e.outcome, v.stage_output); },
+            [&](const PolygonFinished& e) { finish(v, e.outcome, v.stage_output.to_vector()); },
             [&](const StepBoundReached&) {
                 v.bound_reached = true;
                 if (PrimitiveState* p = active(v)) p->bounded = true;
@@ -131,11 +132,9 @@ void reduce(ClipView& v, const ClipEvent& event) {
 }
 
 std::size_t approx_bytes(const ClipView& v) {
-    std::size_t b = sizeof v + (v.intersections.capacity() + v.stage_input.capacity() + v.stage_output.capacity()) *
-                                   sizeof(Vec4);
-    for (const auto& p : v.primitives)
-        b += sizeof p + (p.input.capacity() + p.visible.capacity()) * sizeof(Vec4);
-    return b;
+    // what a copy costs: the primitives are shared chunk by chunk, the working state is copied
+    return sizeof v + v.primitives.copy_bytes() + v.intersections.copy_bytes() + v.stage_input.copy_bytes() +
+           v.stage_output.copy_bytes();
 }
 
 std::vector<PrimitiveClip> answers(const ClipView& v) {

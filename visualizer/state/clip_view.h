@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "clipping/clip_scene.h"
+#include "state/cow_vector.h"
 
 namespace hsr::viz {
 
@@ -30,7 +31,7 @@ struct PrimitiveState {
 struct ClipView {
     algo::ClipSpace space = algo::ClipSpace::homogeneous;
     algo::ClipAlgorithm algorithm = algo::ClipAlgorithm::cohen_sutherland;
-    std::vector<PrimitiveState> primitives;  // in the order the machine clips them
+    CowVector<PrimitiveState> primitives;    // in the order the machine clips them; shared between keyframes
     int active = -1;                         // index of the primitive being clipped
 
     // The segment being clipped (Cohen–Sutherland, Liang–Barsky): its current ends and their outcodes.
@@ -39,11 +40,11 @@ struct ClipView {
     bool c1_known = false, c2_known = false;  // computed for the current round
     int round = 0;
     std::optional<algo::ClipPlane> plane;    // the plane in focus
-    std::vector<Vec4> intersections;         // found so far on the active primitive
+    CowVector<Vec4, 1024> intersections;     // found so far on the active primitive
     double t_enter = 0, t_leave = 1;         // Liang–Barsky, along the input segment
 
     // Sutherland–Hodgman: the current stage's input and what it has emitted so far.
-    std::vector<Vec4> stage_input, stage_output;
+    CowVector<Vec4, 1024> stage_input, stage_output;  // chunks shared between keyframes, as the primitives are
     int edge = -1;                           // the edge from stage_input[edge] to its successor
 
     bool bound_reached = false;
@@ -53,6 +54,7 @@ struct ClipView {
 ClipView initial_view(const algo::ClipJob& job, algo::ClipAlgorithm algorithm);
 
 void reduce(ClipView& view, const ClipEvent& event);
+// What copying the view costs (the primitives are shared chunk by chunk between copies).
 std::size_t approx_bytes(const ClipView& view);
 
 // The answers the view shows, in the shape the machine returns them (the events are the truth the window shows,

@@ -22,8 +22,10 @@ namespace hsr::viz {
 
 struct PlayerOptions {
     std::size_t max_events = 50'000'000;  // a guard for the window; machines have their own step bounds
-    std::size_t min_keyframe_interval = 256;
-    std::size_t keyframe_bytes_per_event = 16;  // keyframes cost at most about this much per event of the log
+    // Keyframes every max(min_keyframe_interval, approx_bytes(view) / keyframe_bytes_per_event) events: a seek
+    // folds at most that many events, and keyframes cost about keyframe_bytes_per_event per event of the log.
+    std::size_t min_keyframe_interval = 2048;
+    std::size_t keyframe_bytes_per_event = 16;
 };
 
 template <class Event, class Result, class View>
