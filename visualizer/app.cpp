@@ -76,6 +76,20 @@ struct Lessonplay {
     }
 };
 
+// "Space", "Right", "Shift+Left", "Home", "End", "F5" as an SDL key press; false for a name it does not know.
+bool key_event(const std::string& name, SDL_Event& e) {
+    const bool shift = name.rfind("Shift+", 0) == 0;
+    const SDL_Keycode code = SDL_GetKeyFromName(shift ? name.substr(6).c_str() : name.c_str());
+    if (code == SDLK_UNKNOWN) return false;
+    e = SDL_Event{};
+    e.type = SDL_KEYDOWN;
+    e.key.state = SDL_PRESSED;
+    e.key.keysym.sym = code;
+    e.key.keysym.scancode = SDL_GetScancodeFromKey(code);
+    e.key.keysym.mod = shift ? KMOD_LSHIFT : KMOD_NONE;
+    return true;
+}
+
 void keys(const SDL_Event& e, UiActions& a) {
     if (e.type != SDL_KEYDOWN) return;
     const bool shift = (e.key.keysym.mod & KMOD_SHIFT) != 0;
@@ -213,9 +227,19 @@ int run_app(const AppOptions& o) {
         bool dragging = false, running = true;
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
+        std::size_t next_key = 0;
         while (running) {
             UiActions actions;
             SDL_Event e;
+            if (frame > 0 && next_key < o.keys.size()) {  // scripted keys go through the same queue as real ones
+                if (!key_event(o.keys[next_key], e)) {
+                    std::fprintf(stderr, "hsrviz: --keys: unknown key \"%s\"\n", o.keys[next_key].c_str());
+                    exit_code = 2;
+                    break;
+                }
+                SDL_PushEvent(&e);
+                ++next_key;
+            }
             while (SDL_PollEvent(&e)) {
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 if (e.type == SDL_QUIT) running = false;
@@ -229,7 +253,7 @@ int run_app(const AppOptions& o) {
             }
             const std::uint64_t ticks = SDL_GetTicks64();
             // recording and screenshots take one Step per frame, so the same command gives the same picture
-            if ((o.record_dir || o.screenshot) && frame > 0) actions.step = true;
+            if ((o.record_dir || (o.screenshot && o.keys.empty())) && frame > 0) actions.step = true;
             lp.update(actions, double(ticks - last_ticks) / 1000.0, o);
             last_ticks = ticks;
 
@@ -252,6 +276,10 @@ int run_app(const AppOptions& o) {
                 if (done) running = false;
             }
             if (o.screenshot && frame >= std::uint64_t(o.frames)) {
+                if (lp.session)
+                    std::printf("hsrviz: at step %zu of %zu%s, %s\n", lp.session->player().cursor(),
+                                lp.session->player().known(), lp.session->player().complete() ? "" : "+",
+                                lp.playback.playing ? "playing" : "paused");
                 if (!write_png(*o.screenshot, width, height)) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
                     exit_code = 1;

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hsr::viz {
 
@@ -15,6 +16,7 @@ struct AppOptions {
     std::optional<std::string> record_dir;     // headless: a PNG per step and the trace, then exit
     int width = 1280, height = 800;
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
+    std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };
 
 // Runs until the window closes (or the screenshot / recording is done). Returns the process exit code.

@@ -41,6 +41,26 @@ case "$case" in
     test "$(echo "$a" | sed 's/.*hash \([0-9a-f]*\).*/\1/')" = "$(echo "$b" | sed 's/.*hash \([0-9a-f]*\).*/\1/')"
     test "$(echo "$a" | sed 's/.*hash \([0-9a-f]*\).*/\1/')" != "$(echo "$c" | sed 's/.*hash \([0-9a-f]*\).*/\1/')"
     test "$(wc -l < a.jsonl)" -eq "$(echo "$a" | cut -d' ' -f1)" ;;
+  keys)  # the keys a student expects: → and ← step, Shift for one event, Home/End, Space plays
+    lesson="$src/lessons/01_cohen_sutherland.toml"
+    at() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p'; }
+    micro5=$(at 8 Shift+Right,Shift+Right,Shift+Right,Shift+Right,Shift+Right)
+    test "$micro5" -eq 5
+    two=$(at 5 Right,Right)
+    three_back=$(at 6 Right,Right,Right,Left)
+    echo "two steps: $two; three steps and one back: $three_back"
+    test "$two" -gt 2 && test "$two" -eq "$three_back"
+    end=$(at 4 End)
+    events=$("$hsrviz" trace "$lesson" --out t.jsonl | cut -d' ' -f1)
+    test "$end" -eq "$events"
+    test "$(at 4 End,Home)" -eq 0
+    state() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step .*, //p'; }
+    test "$(state 3 Space)" = playing
+    test "$(state 4 Space,Space)" = paused
+    test "$(state 4 Space,Right)" = paused   # a step by hand pauses playback
+    test "$(state 4 End,Space)" = paused     # nothing left to play
+    "$png_check" k.png 1280 800
+    if "$hsrviz" "$lesson" --screenshot k.png --frames 3 --keys Bogus 2>/dev/null; then exit 1; fi ;;
   help)
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"
