@@ -10,8 +10,10 @@
 #include <imgui_impl_sdl.h>
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <vector>
 
@@ -33,6 +35,10 @@ struct Lessonplay {
     std::string error;  // why the lesson could not be loaded ("" when it could)
     PlaybackState playback;
     OrbitCamera camera;
+    std::optional<ClipView> before;  // the view the picture is sliding from
+    double tween = 1;                // 0 … 1 of the way from `before` to the current view
+    static constexpr double tween_seconds = 0.25;
+    bool animate = true;             // off for screenshots and recordings: they show each step as it ends
 
     void load(const AppOptions& o) {
         try {
@@ -54,6 +60,11 @@ struct Lessonplay {
         if (a.reload) load(o);
         if (!session) return;
         ClipPlayer& p = session->player();
+        const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
+                              a.to_start || a.to_end || a.seek || playback.playing;
+        std::optional<ClipView> shown;
+        if (animate && may_move) shown = p.view();  // cheap: the view's large parts are shared, not copied
+        const std::size_t cursor = p.cursor();
         if (a.speed) playback.speed = *a.speed;
         if (a.toggle_play) playback.playing = !playback.playing && !p.at_end();
         if (a.step) session->step();
@@ -72,6 +83,12 @@ struct Lessonplay {
                 session->step();
                 if (p.at_end()) playback.playing = false;
             }
+        }
+        if (p.cursor() != cursor && shown) {  // a step was taken (either way): slide from what was shown
+            before = std::move(shown);
+            tween = 0;
+        } else {
+            tween = std::min(1.0, tween + dt / tween_seconds);
         }
     }
 };
@@ -123,7 +140,8 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, Ui
     r.batches.faint.clear();
     r.batches.bold.clear();
     r.labels.clear();
-    draw_clip_view(s.player().view(), s.lesson().scene, r.batches, r.labels);
+    draw_clip_view(s.player().view(), s.lesson().scene, r.batches, r.labels,
+                   {lp.before ? &*lp.before : nullptr, float(lp.tween)});
     // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
     glViewport(0, GLsizei(layout.bottom), GLsizei(view_w), GLsizei(view_h));
     const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
@@ -222,6 +240,7 @@ int run_app(const AppOptions& o) {
         Lessonplay lp;
         lp.load(o);
         lp.playback.playing = o.autoplay;
+        lp.animate = !o.screenshot && !o.record_dir;
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool dragging = false, running = true;

@@ -38,6 +38,11 @@ void place(float x, float y, float w, float h) {
     ImGui::SetNextWindowSize(ImVec2(w, h));
 }
 
+void place_in_column(const PanelLayout& l, int panel) {
+    const auto slot = l.slot(panel);
+    place(l.width - l.side, slot.y, l.side, slot.h);
+}
+
 std::string step_text(const ClipSession& s) {
     const auto& p = s.player();
     char buf[96];
@@ -49,7 +54,7 @@ std::string step_text(const ClipSession& s) {
 }  // namespace
 
 void lesson_panel(const ClipSession& s, const PanelLayout& l) {
-    place(l.width - l.side, 0, l.side, 150);
+    place_in_column(l, 0);
     ImGui::Begin("Lesson", nullptr, fixed);
     ImGui::TextWrapped("%s", s.lesson().title.c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
@@ -66,7 +71,7 @@ void lesson_panel(const ClipSession& s, const PanelLayout& l) {
 }
 
 void pseudocode_panel(const ClipSession& s, const PanelLayout& l) {
-    place(l.width - l.side, 150, l.side, 262);
+    place_in_column(l, 1);
     ImGui::Begin("Pseudocode", nullptr, fixed | ImGuiWindowFlags_HorizontalScrollbar);
     const auto lines = pseudocode(s.algorithm());
     const int current = s.current_line();
@@ -89,8 +94,7 @@ void pseudocode_panel(const ClipSession& s, const PanelLayout& l) {
 }
 
 void narration_panel(const ClipSession& s, const PanelLayout& l) {
-    const float top = 412 + 170;
-    place(l.width - l.side, top, l.side, l.height - l.bottom - top);
+    place_in_column(l, 3);
     ImGui::Begin("Narration", nullptr, fixed);
     ImGui::TextColored(dim_text, "%s", step_text(s).c_str());
     const std::string now = s.narration();
@@ -169,7 +173,7 @@ void pipeline(const ClipView& v) {
 }  // namespace
 
 void state_panel(const ClipSession& s, const PanelLayout& l) {
-    place(l.width - l.side, 412, l.side, 170);
+    place_in_column(l, 2);
     const ClipView& v = s.player().view();
     const char* title = s.algorithm() == ClipAlgorithm::cohen_sutherland ? "Outcodes"
                         : s.algorithm() == ClipAlgorithm::liang_barsky   ? "Parameters"

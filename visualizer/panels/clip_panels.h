@@ -16,6 +16,19 @@ struct PanelLayout {
     float width, height;  // of the window, in pixels
     float side = 500;     // width of the right-hand column
     float bottom = 96;    // height of the timeline
+
+    // The right-hand column, top to bottom: lesson, pseudocode, state, narration; as shares of its height, so that
+    // 1280×800 gives 150, 262, 170 and the rest, and smaller windows shrink every panel alike.
+    struct Slot {
+        float y, h;
+    };
+    Slot slot(int panel) const {
+        static constexpr float share[] = {150.f / 704, 262.f / 704, 170.f / 704, 122.f / 704};
+        const float column = height - bottom;
+        float y = 0;
+        for (int i = 0; i < panel; ++i) y += share[i] * column;
+        return {y, panel == 3 ? column - y : share[panel] * column};
+    }
 };
 
 void lesson_panel(const ClipSession& s, const PanelLayout& layout);

@@ -100,10 +100,16 @@ void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera&
 }
 
 void draw_active_segment(const ClipView& view, const PrimitiveState& p, const ToWorld& world, ClipBatches& out,
-                         std::vector<Label>& labels) {
+                         std::vector<Label>& labels, Tween tween) {
     const Vec4 a = p.input[0], b = p.input[1];
+    // the tween applies only while the same primitive is being clipped before and after the step
+    const ClipView* before = tween.before && tween.before->active == view.active ? tween.before : nullptr;
+    const double t = before ? double(tween.t) : 1.0;
+    const auto slide = [&](auto from, auto to) { return from + (to - from) * t; };
     if (view.algorithm == algo::ClipAlgorithm::liang_barsky) {  // the part [t_enter, t_leave] of the input
-        const Vec4 e = a + view.t_enter * (b - a), l = a + view.t_leave * (b - a);
+        const double t_enter = before ? slide(before->t_enter, view.t_enter) : view.t_enter;
+        const double t_leave = before ? slide(before->t_leave, view.t_leave) : view.t_leave;
+        const Vec4 e = a + t_enter * (b - a), l = a + t_leave * (b - a);
         if (auto we = world(e), wl = world(l); we && wl) {
             out.bold.line(*we, *wl, palette::working);
             out.bold.point(*we, palette::parameter);
@@ -116,7 +122,8 @@ void draw_active_segment(const ClipView& view, const PrimitiveState& p, const To
         }
         return;
     }
-    const auto w1 = world(view.p1), w2 = world(view.p2);
+    const auto w1 = world(before ? slide(before->p1, view.p1) : view.p1);
+    const auto w2 = world(before ? slide(before->p2, view.p2) : view.p2);
     if (w1 && w2) out.bold.line(*w1, *w2, palette::working);
     const auto end = [&](const std::optional<glm::vec3>& at, const char* name, algo::Outcode c, bool known) {
         if (!at) return;
@@ -143,7 +150,8 @@ void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const P
 
 }  // namespace
 
-void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& out, std::vector<Label>& labels) {
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& out, std::vector<Label>& labels,
+                    Tween tween) {
     const ToWorld world(scene.camera);
     draw_volume(view, world, scene.camera, out, labels);
 
@@ -158,7 +166,7 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches&
         if (!p.input.empty())
             if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), color_of(scene, p.id, 0.9f)});
         if (!active) continue;
-        if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels);
+        if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels, tween);
         if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, scene, p, world, out);
     }
     for (std::size_t k = 0; k < view.intersections.size(); ++k)

@@ -24,7 +24,16 @@ struct ClipBatches {
     LineBatch bold;   // thick lines: visible parts, the segment being clipped
 };
 
-void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& batches, std::vector<Label>& labels);
+// A step in motion: the view before it, and how far (0 … 1) the picture has moved from there to the current view.
+struct Tween {
+    const ClipView* before = nullptr;
+    float t = 1;
+};
+
+// The working segment's ends (and Liang–Barsky's t_enter, t_leave) slide from `tween.before` to `view`; the rest
+// of the picture shows `view`. Stepping back tweens the same way, from the later view to the earlier one.
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& batches, std::vector<Label>& labels,
+                    Tween tween = {});
 
 // A sphere holding the clip volume and the scene, for framing the viewer's camera.
 void clip_view_bounds(const ClipView& view, const algo::Scene& scene, glm::vec3& centre, float& radius);
