@@ -5,6 +5,7 @@
 #include "clipping/clip_test_helpers.h"
 #include "state/clip_view.h"
 #include "state/event_log.h"
+#include "state/lesson.h"
 #include "state/player.h"
 
 using namespace hsr::algo;
@@ -119,4 +120,24 @@ TEST_CASE("a player with an event cap ends there instead of pulling forever", "[
     CHECK(player.cursor() == 7);
     CHECK(player.capped());
     CHECK(player.at_end());
+}
+
+TEST_CASE("seek(k) equals a fold of events [0, k) on every shipped lesson's trace", "[state][player][lesson]") {
+    for (const char* file : {"01_cohen_sutherland.toml", "02_liang_barsky.toml", "03_sutherland_hodgman.toml"}) {
+        INFO(file);
+        const Lesson lesson = load_lesson(data_dir() + "/lessons/" + file);
+        const auto algorithm = ClipAlgorithm(lesson.algorithm.variant);
+        const ClipJob job = clip_job(lesson.scene);
+        std::vector<ClipView> folds{initial_view(job, algorithm)};
+        for (const auto& e : clip_scene(job, algorithm)) {
+            folds.push_back(folds.back());
+            reduce(folds.back(), e);
+        }
+        TestPlayer player(clip_scene(job, algorithm), initial_view(job, algorithm), {.min_keyframe_interval = 4});
+        player.seek_end();
+        for (std::size_t k = folds.size(); k-- > 0;) {  // backwards: every seek goes through a keyframe
+            player.seek(k);
+            REQUIRE(same_view(player.view(), folds[k]));
+        }
+    }
 }
