@@ -43,7 +43,9 @@ struct Lessonplay {
     void load(const AppOptions& o) {
         try {
             session = std::make_unique<ClipSession>(load_lesson(o.lesson_path, o.algorithm));
+            session->player().prefetch(100'000);  // the scrub bar shows a lesson's whole length
             error.clear();
+            before.reset();
             glm::vec3 centre;
             float radius;
             clip_view_bounds(session->player().view(), session->lesson().scene, centre, radius);
@@ -127,9 +129,11 @@ struct Renderer {
     std::vector<Label> labels;
 };
 
-void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, UiActions& actions) {
+// `layout` is in ImGui's units (window points); `scale` turns them into framebuffer pixels (2 on a HiDPI display).
+void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions) {
     const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
-    glViewport(0, 0, GLsizei(layout.width), GLsizei(layout.height));
+    const auto px = [&](float points) { return GLsizei(points * scale); };
+    glViewport(0, 0, px(layout.width), px(layout.height));
     glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!lp.session) {
@@ -143,11 +147,11 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, Ui
     draw_clip_view(s.player().view(), s.lesson().scene, r.batches, r.labels,
                    {lp.before ? &*lp.before : nullptr, float(lp.tween)});
     // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
-    glViewport(0, GLsizei(layout.bottom), GLsizei(view_w), GLsizei(view_h));
+    glViewport(0, px(layout.bottom), px(view_w), px(view_h));
     const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
-    r.batches.faint.draw(vp, 1.5f, 7.0f);
-    r.batches.bold.draw(vp, 3.5f, 11.0f);
-    glViewport(0, 0, GLsizei(layout.width), GLsizei(layout.height));
+    r.batches.faint.draw(vp, 1.5f * scale, 7.0f * scale);
+    r.batches.bold.draw(vp, 3.5f * scale, 11.0f * scale);
+    glViewport(0, 0, px(layout.width), px(layout.height));
 
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
     lesson_panel(s, layout);
@@ -282,7 +286,8 @@ int run_app(const AppOptions& o) {
             int width = 0, height = 0;
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
-            draw_frame(lp, renderer, PanelLayout{float(width), float(height)}, from_panels);
+            draw_frame(lp, renderer, PanelLayout{io.DisplaySize.x, io.DisplaySize.y}, io.DisplayFramebufferScale.x,
+                       from_panels);
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             ++frame;

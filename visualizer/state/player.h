@@ -59,6 +59,10 @@ public:
         return b;
     }
 
+    // Pulls events until the log holds n (or the machine ends) without moving the cursor: lets a window show a
+    // lesson's length up front while a huge run stays lazy beyond n.
+    void prefetch(std::size_t n) { ensure_known(n); }
+
     // ── moving ──
     bool step_forward() {
         if (!ensure_known(cursor_ + 1)) return false;
@@ -117,7 +121,10 @@ private:
     bool ensure_known(std::size_t n) {
         while (log_.size() < n && !capped()) {
             const Event* e = machine_.next();
-            if (!e) break;
+            if (!e) {
+                log_.shrink_to_fit();  // the log is complete: give back the growth slack
+                break;
+            }
             log_.push(*e);
         }
         return log_.size() >= n;
