@@ -134,7 +134,8 @@ std::string describe(const ClipEvent& event, ClipSpace s) {
                        std::to_string(e.input_vertices) + " vertices";
             },
             [&](const EdgeClassified& e) {
-                std::string out = "edge v" + std::to_string(e.from) + "→next is " +
+                std::string out = "edge v" + std::to_string(e.from) + "→v" +
+                                  std::to_string(e.closes ? 0 : e.from + 1) + " is " +
                                   std::string(to_string(e.edge_case)) + " (" + num(e.bc_from) + ", " +
                                   num(e.bc_to) + ")";
                 switch (e.edge_case) {

@@ -134,7 +134,8 @@ struct EdgeClassified {
     static constexpr std::string_view kind = "EdgeClassified";
     ClipPlane plane;
     EdgeCase edge_case;
-    std::uint32_t from;         // index of s in the stage's input; e is from + 1 (wrapping)
+    bool closes;                // the last edge, back to vertex 0
+    std::uint32_t from;         // index of s in the stage's input; e is from + 1, or 0 when the edge closes
     double bc_from, bc_to;      // boundary values of s and e (≥ 0 is inside)
     Vec4 intersection;          // i, for in→out and out→in; unused otherwise
     bool operator==(const EdgeClassified&) const = default;
@@ -166,6 +167,10 @@ using ClipEvent = std::variant<PointClassified, SegmentStarted, OutcodeComputed,
                                TriviallyRejected, PlaneChosen, IntersectionComputed, BoundaryTested, ParameterUpdated,
                                SegmentEmptied, SegmentFinished, PolygonStarted, StageStarted, EdgeClassified,
                                StageFinished, PolygonFinished, StepBoundReached>;
+
+// The player stores millions of these: keep the most frequent ones small (see tests/bench for the figures).
+static_assert(sizeof(EdgeClassified) <= 56);
+static_assert(sizeof(OutcodeComputed) <= 40);
 
 // One sentence with the live numbers, for the narration panel, traces and test failures.
 std::string describe(const ClipEvent& e, ClipSpace s);

@@ -33,20 +33,21 @@ Steps<ClipEvent, PolygonClip> sutherland_hodgman_machine(ClipPolygon polygon, Cl
             const Vec4& v_e = input[(i + 1) % input.size()];
             const double bs = boundary_value(v_s, r, s), be = boundary_value(v_e, r, s);
             const bool s_in = bs >= 0, e_in = be >= 0;  // inside_test: the sign of the plane equation
+            const bool closes = i + 1 == input.size();
             if (s_in && e_in) {
                 output.push_back(v_e);
-                co_yield EdgeClassified{r, EdgeCase::in_in, std::uint32_t(i), bs, be, {}};
+                co_yield EdgeClassified{r, EdgeCase::in_in, closes, std::uint32_t(i), bs, be, {}};
             } else if (s_in) {
                 const Vec4 x = crossing(r, s, v_s, bs, v_e, be);
                 output.push_back(x);
-                co_yield EdgeClassified{r, EdgeCase::in_out, std::uint32_t(i), bs, be, x};
+                co_yield EdgeClassified{r, EdgeCase::in_out, closes, std::uint32_t(i), bs, be, x};
             } else if (e_in) {
                 const Vec4 x = crossing(r, s, v_e, be, v_s, bs);
                 output.push_back(x);
                 output.push_back(v_e);
-                co_yield EdgeClassified{r, EdgeCase::out_in, std::uint32_t(i), bs, be, x};
+                co_yield EdgeClassified{r, EdgeCase::out_in, closes, std::uint32_t(i), bs, be, x};
             } else {
-                co_yield EdgeClassified{r, EdgeCase::out_out, std::uint32_t(i), bs, be, {}};
+                co_yield EdgeClassified{r, EdgeCase::out_out, closes, std::uint32_t(i), bs, be, {}};
             }
             cut = cut || !(s_in && e_in);
         }

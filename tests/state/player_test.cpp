@@ -45,7 +45,8 @@ ClipJob job_for(ClipSpace s, int n) {
 TEST_CASE("the event log returns each event as it was pushed", "[state][log]") {
     EventLog<ClipEvent> log;
     const std::vector<ClipEvent> events = {SegmentStarted{1, {1, 2, 3, 4}, {5, 6, 7, 8}}, CodesCompared{{3}, {4}},
-                                           StageStarted{ClipPlane::x_min, 9}, CodesCompared{{5}, {6}}};
+                                           StageStarted{ClipPlane::x_min, 9}, CodesCompared{{5}, {6}},
+                                           EdgeClassified{ClipPlane::y_max, EdgeCase::out_in, true, 7, 0.5, -0.25, {1, 2, 3, 4}}};
     for (const auto& e : events) log.push(e);
     REQUIRE(log.size() == events.size());
     for (std::size_t k = 0; k < events.size(); ++k) CHECK(log.at(k) == events[k]);
