@@ -10,12 +10,19 @@
 //
 // std::generator would do, but it needs libstdc++ 14; this is the small subset we use, with a result added.
 // An exception thrown in the body is rethrown from next() (and from the range-for's ++).
+//
+// GCC 12 destroys an aggregate temporary in a co_yield expression twice when it has non-trivial members (seen
+// with `co_yield PolygonSplit{…, std::move(shared)}`: a use-after-free under ASan; clang is fine). So an event
+// that is not trivially destructible must be yielded by name: `const BspEvent e = PolygonSplit{…}; co_yield e;`.
+// yield_value refuses the temporary form at compile time; trivially destructible events may be yielded as
+// temporaries (a second destruction of those does nothing).
 #pragma once
 
 #include <coroutine>
 #include <exception>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace hsr::algo {
@@ -31,8 +38,16 @@ public:
         Steps get_return_object() { return Steps{Handle::from_promise(*this)}; }
         std::suspend_always initial_suspend() noexcept { return {}; }  // lazy: nothing runs before next()
         std::suspend_always final_suspend() noexcept { return {}; }
-        std::suspend_always yield_value(Event e) {
-            current = std::move(e);
+        std::suspend_always yield_value(const Event& e) {  // a named event, or a child's forwarded one
+            current = e;
+            return {};
+        }
+        template <class T>
+            requires(!std::is_lvalue_reference_v<T>)
+        std::suspend_always yield_value(T&& e) {
+            static_assert(std::is_trivially_destructible_v<std::remove_cvref_t<T>>,
+                          "yield an event with non-trivial members by name (GCC 12 bug: see the top of steps.h)");
+            current.emplace(std::forward<T>(e));
             return {};
         }
         void return_value(Result r) { result = std::move(r); }

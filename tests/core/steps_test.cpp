@@ -1,4 +1,6 @@
+#include <memory>
 #include <stdexcept>
+#include <variant>
 #include <string>
 #include <vector>
 
@@ -127,4 +129,50 @@ TEST_CASE("destroying an unfinished machine runs no more of its body", "[core][s
         machine.next();
     }
     CHECK(checkpoints == std::vector<std::string>{"started", "before 0"});
+}
+
+namespace {
+
+struct Owning {  // an event with a non-trivial member, like the BSP's PolygonSplit
+    std::shared_ptr<const int> value;
+    bool operator==(const Owning&) const = default;
+};
+using OwningEvent = std::variant<int, Owning>;
+
+Steps<OwningEvent, int> owning_events(std::shared_ptr<const int> shared, int n) {
+    for (int i = 0; i < n; ++i) {
+        if (i % 2 == 0) {
+            auto copy = shared;
+            const OwningEvent e = Owning{std::move(copy)};  // by name: see the top of steps.h
+            co_yield e;
+        } else {
+            co_yield i;
+        }
+    }
+    co_return n;
+}
+
+Steps<OwningEvent, int> forwarding(std::shared_ptr<const int> shared) {
+    auto child = owning_events(std::move(shared), 6);
+    for (const auto& e : child) co_yield e;
+    co_return child.result();
+}
+
+}  // namespace
+
+TEST_CASE("events with non-trivial members are destroyed exactly once, also when forwarded", "[core][steps]") {
+    auto shared = std::make_shared<const int>(42);
+    {
+        auto machine = forwarding(shared);
+        int owning = 0;
+        while (const OwningEvent* e = machine.next()) {
+            if (const auto* o = std::get_if<Owning>(e)) {
+                ++owning;
+                CHECK(*o->value == 42);
+            }
+        }
+        CHECK(owning == 3);
+        CHECK(machine.result() == 6);
+    }
+    CHECK(shared.use_count() == 1);  // every copy made for an event is gone, none released twice
 }

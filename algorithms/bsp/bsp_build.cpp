@@ -1,0 +1,173 @@
+// BuildBSP, as the lecture gives it: choose a splitting polygon, classify every other polygon against its plane
+// (front, back, coplanar, spanning), split the spanning ones, keep the coplanar ones at the node, recurse.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "bsp/bsp_tree.h"
+#include "core/numeric.h"
+
+#include <glm/common.hpp>
+
+namespace hsr::algo {
+namespace {
+
+constexpr std::size_t max_candidates = 32;  // a node scores at most this many splitters (spread over its list)
+
+struct Score {
+    std::uint32_t front = 0, back = 0, spanning = 0;
+    double value = 0;
+};
+
+Score score(const BspTree& t, BspPolygonId candidate, const std::vector<BspPolygonId>& list, const BspOptions& o) {
+    Score s;
+    const Plane& plane = t.polygons[std::size_t(candidate)].plane;
+    for (BspPolygonId p : list) {
+        if (p == candidate) continue;
+        switch (classify(plane, t.polygons[std::size_t(p)].vertices, t.tolerance)) {
+            case PolygonSide::front: ++s.front; break;
+            case PolygonSide::back: ++s.back; break;
+            case PolygonSide::spanning: ++s.spanning, ++s.front, ++s.back; break;
+            case PolygonSide::coplanar: break;
+        }
+    }
+    const double imbalance = std::fabs(double(s.front) - double(s.back));
+    switch (o.splitter) {
+        case SplitterRule::first: s.value = 0; break;
+        case SplitterRule::balanced: s.value = imbalance; break;  // "roughly equal cardinality"
+        case SplitterRule::fewest_splits: s.value = s.spanning; break;
+        case SplitterRule::weighted: s.value = o.balance_weight * imbalance + o.split_weight * s.spanning; break;
+    }
+    return s;
+}
+
+BspPolygonId add_part(BspTree& t, BspPolygonId whole, std::vector<Vec3> vertices, const char* side) {
+    const BspPolygon& w = t.polygons[std::size_t(whole)];
+    BspPolygon part{w.source, w.label + side, std::move(vertices), w.plane};  // a part lies in its whole's plane
+    t.polygons.push_back(std::move(part));
+    return BspPolygonId(t.polygons.size() - 1);
+}
+
+// BuildBSP(list): the node made for `list`, or −1 for an empty list. `t` is the tree the top-level machine owns.
+Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list, std::uint32_t depth, BspOptions o) {
+    if (list.empty()) co_return -1;
+    const BspNodeId node = BspNodeId(t->nodes.size());
+    t->nodes.push_back({});
+    t->nodes.back().depth = depth;
+    t->depth = std::max(t->depth, depth + 1);
+
+    // Choose a splitting polygon
+    BspPolygonId splitter = list.front();
+    Score best;
+    std::uint32_t scored = 1;
+    if (o.splitter != SplitterRule::first) {
+        best.value = std::numeric_limits<double>::infinity();
+        const std::size_t step = std::max<std::size_t>(1, list.size() / max_candidates);
+        scored = 0;
+        for (std::size_t i = 0; i < list.size() && scored < max_candidates; i += step, ++scored) {
+            const Score s = score(*t, list[i], list, o);
+            co_yield CandidateScored{node, list[i], s.front, s.back, s.spanning, s.value};
+            if (s.value < best.value) best = s, splitter = list[i];
+        }
+    }
+    const Plane plane = t->polygons[std::size_t(splitter)].plane;
+    t->nodes[std::size_t(node)].plane = plane;
+    co_yield SplitterChosen{node, splitter, depth, scored, best.value, plane};
+
+    std::vector<BspPolygonId> front, back, here{splitter};
+    if (depth + 1 >= o.max_depth) {  // bound: keep what is left at this node, in list order
+        co_yield BspBoundReached{BspBound::depth, o.max_depth};
+        t->bounded = true;
+        for (BspPolygonId p : list)
+            if (p != splitter) here.push_back(p);
+        list.clear();
+    }
+    // Classify every other polygon against the splitter's plane
+    for (BspPolygonId p : list) {
+        if (p == splitter) continue;
+        const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, t->tolerance);
+        co_yield PolygonClassified{node, p, side};
+        switch (side) {
+            case PolygonSide::front: front.push_back(p); break;
+            case PolygonSide::back: back.push_back(p); break;
+            case PolygonSide::coplanar: here.push_back(p); break;  // never split against its own plane
+            case PolygonSide::spanning: {
+                if (t->polygons.size() + 2 > o.max_polygons) {
+                    co_yield BspBoundReached{BspBound::polygons, o.max_polygons};
+                    t->bounded = true;
+                    here.push_back(p);
+                    break;
+                }
+                SplitParts parts = split(plane, t->polygons[std::size_t(p)].vertices, t->tolerance);
+                auto f = std::make_shared<const std::vector<Vec3>>(parts.front);
+                auto b = std::make_shared<const std::vector<Vec3>>(parts.back);
+                const BspPolygonId fp = add_part(*t, p, std::move(parts.front), "f");
+                const BspPolygonId bp = add_part(*t, p, std::move(parts.back), "b");
+                ++t->splits;
+                const BspEvent split_event = PolygonSplit{node, p, fp, bp, std::move(f), std::move(b)};
+                co_yield split_event;  // by name: see the top of core/steps.h
+                front.push_back(fp);
+                back.push_back(bp);
+                break;
+            }
+        }
+    }
+    t->nodes[std::size_t(node)].polygons = here;
+    co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(front.size()), std::uint32_t(back.size())};
+
+    // Recurse: front subtree, then back subtree
+    auto front_child = build_node(t, std::move(front), depth + 1, o);
+    for (const auto& e : front_child) co_yield e;
+    t->nodes[std::size_t(node)].front = front_child.result();
+    auto back_child = build_node(t, std::move(back), depth + 1, o);
+    for (const auto& e : back_child) co_yield e;
+    t->nodes[std::size_t(node)].back = back_child.result();
+    co_return node;
+}
+
+Steps<BspEvent, BspTree> build_machine(BspTree tree, BspOptions o) {
+    co_yield BuildStarted{std::uint32_t(tree.polygons.size()), o.splitter, tree.tolerance.epsilon};
+    std::vector<BspPolygonId> all(tree.polygons.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = BspPolygonId(i);
+    auto root = build_node(&tree, std::move(all), 0, o);
+    for (const auto& e : root) co_yield e;
+    tree.root = root.result();
+    co_yield BuildFinished{std::uint32_t(tree.nodes.size()), tree.depth, std::uint32_t(tree.polygons.size()),
+                           tree.splits};
+    co_return std::move(tree);
+}
+
+}  // namespace
+
+std::vector<std::string> BspTree::labels() const {
+    std::vector<std::string> out;
+    for (const auto& p : polygons) out.push_back(p.label);
+    return out;
+}
+
+Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions options) {
+    BspTree tree;
+    Vec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const BspInput& in : polygons) {
+        const std::string name = "polygon " + std::to_string(in.id);
+        if (in.vertices.size() < 2) throw InvalidInput(name + " has fewer than 2 vertices");
+        for (std::size_t i = 0; i < in.vertices.size(); ++i) {
+            const Vec3& v = in.vertices[i];
+            require_finite(glm::dvec4(v, 1.0), name + " vertex " + std::to_string(i));
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+        Plane plane;
+        if (!plane_of(in.vertices, plane)) throw InvalidInput(name + " is degenerate (it has no area)");
+        tree.polygons.push_back({in.id, std::to_string(in.id), in.vertices, plane});
+    }
+    if (tree.polygons.size() > options.max_polygons)
+        throw InvalidInput(std::to_string(tree.polygons.size()) + " polygons are more than the bound of " +
+                           std::to_string(options.max_polygons));
+    const Vec3 size = polygons.empty() ? Vec3(1) : hi - lo;
+    tree.tolerance = Tolerance::for_extent(std::max({size.x, size.y, size.z}));
+    return build_machine(std::move(tree), options);
+}
+
+}  // namespace hsr::algo

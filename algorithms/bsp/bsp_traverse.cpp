@@ -1,0 +1,62 @@
+// DisplayBSP, as the lecture gives it: if the eye is in front of the node's plane, display the back subtree, the
+// node's polygons, then the front subtree; otherwise the other way round. The polygons come out back to front
+// (the painter's order); front to back swaps the sides.
+#include "bsp/bsp_tree.h"
+#include "core/numeric.h"
+
+namespace hsr::algo {
+namespace {
+
+Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n, Vec3 eye, Order order,
+                                                   std::vector<BspPolygonId> drawn) {
+    if (n < 0) co_return drawn;
+    const BspNode& node = t->nodes[std::size_t(n)];
+    const double distance = node.plane.distance(eye);
+    const Side side = classify(node.plane, eye, t->tolerance);
+    co_yield EyeClassified{n, side, order, distance};
+
+    // The far side first: behind the plane when the eye is in front (or on it: then either order is right,
+    // since the node's polygons are seen edge-on)
+    BspNodeId far = side == Side::back ? node.front : node.back;
+    BspNodeId near = side == Side::back ? node.back : node.front;
+    if (order == Order::front_to_back) std::swap(far, near);
+
+    auto far_side = display(t, far, eye, order, std::move(drawn));
+    for (const auto& e : far_side) co_yield e;
+    drawn = far_side.result();
+    for (BspPolygonId p : node.polygons) {
+        drawn.push_back(p);
+        co_yield PolygonDrawn{n, p, std::uint32_t(drawn.size())};
+    }
+    auto near_side = display(t, near, eye, order, std::move(drawn));
+    for (const auto& e : near_side) co_yield e;
+    co_return near_side.result();
+}
+
+Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Vec3 eye, Order order) {
+    auto all = display(t, t->root, eye, order, {});
+    for (const auto& e : all) co_yield e;
+    co_yield TraversalFinished{std::uint32_t(all.result().size())};
+    co_return all.result();
+}
+
+}  // namespace
+
+Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Vec3 eye, Order order) {
+    require_finite(glm::dvec4(eye, 1.0), "eye");
+    return traversal(tree, eye, order);
+}
+
+Location locate(const BspTree& tree, const Vec3& p) {
+    Location where;
+    for (BspNodeId n = tree.root; n >= 0;) {
+        const BspNode& node = tree.nodes[std::size_t(n)];
+        const Side side = classify(node.plane, p, tree.tolerance);
+        where.path.push_back(n);
+        where.sides.push_back(side);
+        n = side == Side::back ? node.back : node.front;  // a point on the plane counts as in front
+    }
+    return where;
+}
+
+}  // namespace hsr::algo

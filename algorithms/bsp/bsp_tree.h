@@ -1,0 +1,66 @@
+// A BSP tree (the lecture's BuildBSP / DisplayBSP), in 3D for polygons and in 2D for segments in the plane z = 0
+// (the classroom picture): a segment is a 2-vertex polygon whose plane is the vertical plane through it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bsp/bsp_events.h"
+#include "core/steps.h"
+
+namespace hsr::algo {
+
+struct BspPolygon {
+    std::int32_t source;         // the scene's id of the polygon it is (a part of)
+    std::string label;           // "3", or "3f" / "3b" for the parts of a split, "3fb" for a part of a part
+    std::vector<Vec3> vertices;  // world space; 2 vertices for a 2D segment
+    Plane plane;
+};
+
+struct BspNode {
+    Plane plane;                        // the splitter's plane
+    std::vector<BspPolygonId> polygons; // the splitter and the polygons coplanar with it
+    BspNodeId front = -1, back = -1;
+    std::uint32_t depth = 0;            // the root is 0
+};
+
+struct BspTree {
+    std::vector<BspPolygon> polygons;  // inputs first, then parts as they are made
+    std::vector<BspNode> nodes;        // in the order they are made; the root is nodes[0] when not empty
+    BspNodeId root = -1;
+    Tolerance tolerance;
+    std::uint32_t splits = 0, depth = 0;  // depth: of the deepest node, counting the root as 1
+    bool bounded = false;                 // a bound stopped the build; the tree is still a valid BSP of what it has
+    std::vector<std::string> labels() const;
+};
+
+struct BspInput {
+    std::int32_t id = 0;
+    std::vector<Vec3> vertices;  // 3 or more (a planar polygon), or 2 (a 2D segment in z = 0)
+};
+
+struct BspOptions {
+    SplitterRule splitter = SplitterRule::first;
+    double balance_weight = 1.0;      // weighted rule: score = balance_weight·|front − back| + split_weight·spanning
+    double split_weight = 8.0;
+    std::uint32_t max_depth = 4096;   // bounds: the build ends with BspBoundReached at either
+    std::uint32_t max_polygons = 4u << 20;
+};
+
+// Validates (InvalidInput naming the polygon: NaN, infinity, fewer than 2 vertices, no area), then returns the
+// lazy machine. The tolerance is ε = 1e-9 × the inputs' extent (core/plane.h).
+Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions options = {});
+
+// DisplayBSP: at each node classify the eye, visit the far side, draw the node's polygons, visit the near side
+// (front to back swaps the sides). The tree must outlive the machine.
+Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Vec3 eye,
+                                                        Order order = Order::back_to_front);
+
+// The leaf region holding p: the path of nodes from the root and the side taken at each, in O(depth).
+struct Location {
+    std::vector<BspNodeId> path;
+    std::vector<Side> sides;
+};
+Location locate(const BspTree& tree, const Vec3& p);
+
+}  // namespace hsr::algo

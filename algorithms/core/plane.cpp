@@ -1,0 +1,103 @@
+#include "core/plane.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace hsr::algo {
+
+double Plane::distance(const Vec3& p) const { return glm::dot(n, p) + d; }
+
+Side classify(const Plane& plane, const Vec3& p, Tolerance tol) {
+    const double s = plane.distance(p);
+    return s > tol.epsilon ? Side::front : s < -tol.epsilon ? Side::back : Side::on;
+}
+
+PolygonSide classify(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol) {
+    bool front = false, back = false;
+    for (const Vec3& v : polygon) {
+        const Side s = classify(plane, v, tol);
+        front = front || s == Side::front;
+        back = back || s == Side::back;
+    }
+    return front && back ? PolygonSide::spanning : front ? PolygonSide::front : back ? PolygonSide::back
+                                                                                    : PolygonSide::coplanar;
+}
+
+SplitParts split(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol) {
+    SplitParts parts;
+    const std::size_t n = polygon.size();
+    const bool open = n == 2;  // a 2D segment: one edge, not a closed loop
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& a = polygon[i];
+        const Side sa = classify(plane, a, tol);
+        if (sa != Side::back) parts.front.push_back(a);
+        if (sa != Side::front) parts.back.push_back(a);
+        if (open && i + 1 == n) break;
+        const Vec3& b = polygon[(i + 1) % n];
+        const Side sb = classify(plane, b, tol);
+        if ((sa == Side::front && sb == Side::back) || (sa == Side::back && sb == Side::front)) {
+            // the crossing, computed from the front end so that both neighbours of a shared edge agree
+            const Vec3& f = sa == Side::front ? a : b;
+            const Vec3& k = sa == Side::front ? b : a;
+            const double df = plane.distance(f), dk = plane.distance(k);
+            const Vec3 x = f + (k - f) * (df / (df - dk));
+            parts.front.push_back(x);
+            parts.back.push_back(x);
+        }
+    }
+    return parts;
+}
+
+bool plane_of(std::span<const Vec3> polygon, Plane& out) {
+    if (polygon.size() == 2) {
+        const Vec3 dir = polygon[1] - polygon[0];
+        const Vec3 normal(-dir.y, dir.x, 0);  // left of the direction, in the plane z = 0
+        const double len = glm::length(normal);
+        if (!(len > 0)) return false;
+        out.n = normal / len;
+        out.d = -glm::dot(out.n, polygon[0]);
+        return true;
+    }
+    Vec3 normal(0), centre(0);
+    for (std::size_t i = 0; i < polygon.size(); ++i) {  // Newell's method
+        const Vec3& a = polygon[i];
+        const Vec3& b = polygon[(i + 1) % polygon.size()];
+        normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        centre += a;
+    }
+    const double len = glm::length(normal);
+    if (polygon.size() < 3 || !(len > 0)) return false;
+    out.n = normal / len;
+    out.d = -glm::dot(out.n, centre / double(polygon.size()));
+    return true;
+}
+
+double measure(std::span<const Vec3> polygon) {
+    if (polygon.size() == 2) return glm::length(polygon[1] - polygon[0]);
+    Vec3 twice(0);
+    for (std::size_t i = 0; i < polygon.size(); ++i)
+        twice += glm::cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+    return 0.5 * glm::length(twice);
+}
+
+std::string_view to_string(Side s) {
+    switch (s) {
+        case Side::front: return "front";
+        case Side::back: return "back";
+        case Side::on: return "on";
+    }
+    return "?";
+}
+
+std::string_view to_string(PolygonSide s) {
+    switch (s) {
+        case PolygonSide::front: return "front";
+        case PolygonSide::back: return "back";
+        case PolygonSide::coplanar: return "coplanar";
+        case PolygonSide::spanning: return "spanning";
+    }
+    return "?";
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,58 @@
+// Point-versus-plane and polygon-versus-plane classification: the one predicate every algorithm that sorts
+// geometry by a plane uses (BSP build and traversal, depth sort's tests 3 and 4, portals), and its one tolerance.
+//
+// Tolerance policy: a point is "on" a plane when its signed distance is within ε = 1e-9 × the scene's extent
+// (the side of its bounding box). Scaling with the extent is what keeps a scene at coordinates around 1e6 from
+// being split by rounding noise a fixed ε would see as geometry; 1e-9 stays far above double rounding
+// (≈ 1e-16 × extent) and far below any feature a lesson draws.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace hsr::algo {
+
+using Vec3 = glm::dvec3;
+
+// n · x + d = 0 with |n| = 1: d is minus the distance of the plane from the origin along n; "front" is where n points.
+struct Plane {
+    Vec3 n{0, 0, 1};
+    double d = 0;
+    [[nodiscard]] double distance(const Vec3& p) const;  // signed, world units
+    bool operator==(const Plane&) const = default;
+};
+
+struct Tolerance {
+    double epsilon = 1e-9;  // world units
+    static Tolerance for_extent(double extent) { return {1e-9 * (extent > 0 ? extent : 1.0)}; }
+};
+
+enum class Side : std::uint8_t { front, back, on };
+enum class PolygonSide : std::uint8_t { front, back, coplanar, spanning };
+
+Side classify(const Plane& plane, const Vec3& p, Tolerance tol);
+PolygonSide classify(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol);
+
+// The part of the polygon in front of the plane and the part behind it (vertices on the plane go to both), in
+// order. For a spanning polygon both are non-empty.
+struct SplitParts {
+    std::vector<Vec3> front, back;
+};
+SplitParts split(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol);
+
+// The plane of a polygon by Newell's method (robust for slightly non-planar polygons), front side by the
+// counter-clockwise winding; for a 2-vertex "polygon" (a 2D segment in z = 0) the vertical plane through it, whose
+// front is the segment's left side. Returns false when the polygon has no area (or the segment no length).
+bool plane_of(std::span<const Vec3> polygon, Plane& out);
+
+// Area of a planar polygon (length for a 2-vertex one).
+double measure(std::span<const Vec3> polygon);
+
+std::string_view to_string(Side s);
+std::string_view to_string(PolygonSide s);
+
+}  // namespace hsr::algo
