@@ -1,0 +1,130 @@
+#include "culling/backface.h"
+
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "clipping/sutherland_hodgman.h"
+#include "core/numeric.h"
+#include "core/overloaded.h"
+
+namespace hsr::algo {
+namespace {
+
+Facing by_sign(double front_positive) {
+    return front_positive > 0 ? Facing::front : front_positive < 0 ? Facing::back : Facing::edge_on;
+}
+
+// Signed area of the polygon's visible part on the screen (NDC), by the shoelace formula.
+std::optional<double> screen_area(const Face& f, const glm::dmat4& view_projection) {
+    ClipPolygon clip{f.id, {}};
+    for (const Vec3& v : f.vertices) clip.vertices.push_back(view_projection * glm::dvec4(v, 1.0));
+    // clipped at the near plane (and the rest of the volume) before the divide, so w > 0 for every vertex
+    const PolygonClip visible = sutherland_hodgman(clip, {.space = ClipSpace::homogeneous}).run_to_end();
+    if (visible.vertices.size() < 3) return std::nullopt;
+    double twice = 0;
+    for (std::size_t i = 0; i < visible.vertices.size(); ++i) {
+        const Vec4& a = visible.vertices[i];
+        const Vec4& b = visible.vertices[(i + 1) % visible.vertices.size()];
+        twice += (a.x / a.w) * (b.y / b.w) - (b.x / b.w) * (a.y / a.w);
+    }
+    return 0.5 * twice;
+}
+
+Steps<CullEvent, std::vector<std::int32_t>> cull_machine(std::vector<Face> faces, Camera camera, BackfaceTest test,
+                                                         std::vector<Plane> planes) {
+    const glm::dmat4 vp = view_projection(camera);
+    std::vector<std::int32_t> kept;
+    std::uint32_t culled = 0;
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        const Face& f = faces[i];
+        const Plane& plane = planes[i];
+        double value = 0;
+        Facing facing = Facing::edge_on;
+        switch (test) {
+            case BackfaceTest::view_vector: {  // v from the eye to a vertex of the polygon
+                value = glm::dot(glm::normalize(f.vertices[0] - camera.eye), plane.n);
+                facing = by_sign(-value);
+                break;
+            }
+            case BackfaceTest::plane_equation:
+                value = plane.distance(camera.eye);  // N · eye + D
+                facing = by_sign(value);
+                break;
+            case BackfaceTest::screen_winding:
+                if (const auto area = screen_area(f, vp)) {
+                    value = *area;
+                    facing = by_sign(value);
+                } else {
+                    facing = Facing::outside_view;
+                }
+                break;
+        }
+        co_yield FaceTested{f.id, test, facing, value};
+        if (facing == Facing::front) kept.push_back(f.id);
+        else ++culled;
+    }
+    co_yield CullingFinished{std::uint32_t(faces.size()), culled};
+    co_return kept;
+}
+
+}  // namespace
+
+Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> faces, Camera camera, BackfaceTest test) {
+    std::vector<Plane> planes;
+    for (const Face& f : faces) {
+        const std::string name = "face " + std::to_string(f.id);
+        if (f.vertices.size() < 3) throw InvalidInput(name + " has fewer than 3 vertices");
+        for (std::size_t i = 0; i < f.vertices.size(); ++i)
+            require_finite(glm::dvec4(f.vertices[i], 1.0), name + " vertex " + std::to_string(i));
+        Plane p;
+        if (!plane_of(f.vertices, p)) throw InvalidInput(name + " is degenerate (it has no area)");
+        planes.push_back(p);
+    }
+    require_finite(glm::dvec4(camera.eye, 1.0), "camera eye");
+    return cull_machine(std::move(faces), camera, test, std::move(planes));
+}
+
+std::string_view to_string(BackfaceTest t) {
+    switch (t) {
+        case BackfaceTest::view_vector: return "view vector";
+        case BackfaceTest::plane_equation: return "plane equation";
+        case BackfaceTest::screen_winding: return "screen winding";
+    }
+    return "?";
+}
+
+std::string_view to_string(Facing f) {
+    switch (f) {
+        case Facing::front: return "front-facing: kept";
+        case Facing::back: return "back-facing: culled";
+        case Facing::edge_on: return "edge-on: culled";
+        case Facing::outside_view: return "outside the view volume: culled";
+    }
+    return "?";
+}
+
+std::string_view kind_of(const CullEvent& e) {
+    return std::visit([](const auto& ev) { return std::decay_t<decltype(ev)>::kind; }, e);
+}
+
+std::string describe(const CullEvent& event) {
+    char buf[160];
+    return std::visit(overloaded{
+                          [&](const FaceTested& e) {
+                              const char* quantity = e.test == BackfaceTest::view_vector      ? "v·n"
+                                                     : e.test == BackfaceTest::plane_equation ? "N·eye + D"
+                                                                                               : "screen area";
+                              std::snprintf(buf, sizeof buf, "face %d: %s = %.6g, %s", e.id, quantity, e.value,
+                                            std::string(to_string(e.facing)).c_str());
+                              return std::string(buf);
+                          },
+                          [&](const CullingFinished& e) {
+                              std::snprintf(buf, sizeof buf, "%u faces tested, %u culled", e.tested, e.culled);
+                              return std::string(buf);
+                          },
+                      },
+                      event);
+}
+
+}  // namespace hsr::algo
