@@ -5,6 +5,7 @@
 
 #include "app.h"
 #include "cli/commands.h"
+#include "cli/render_command.h"
 #include "state/lesson.h"
 #include "state/trace.h"
 
@@ -30,9 +31,19 @@ int main(int argc, char** argv) {
     trace_cmd->add_option("input", trace.input, "Lesson or scene file")->required()->check(CLI::ExistingFile);
     trace_cmd->add_option("--out", trace.out, "JSON Lines file to write (one event per line)")->required();
     trace_cmd->add_option("--algorithm", trace.algorithm, "Override the lesson's algorithm");
+    hsr::viz::RenderOptions render;
+    CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
+    render_cmd->add_option("scene", render.scene, "Scene file (world coordinates)")->required()->check(CLI::ExistingFile);
+    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp");
+    render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");
+    render_cmd->add_option("--eye", render.eye, "Eye position X,Y,Z (default: the scene camera's)");
+    render_cmd->add_option("--size", render.size, "Image size WxH (default 512x512)");
+    render_cmd->add_option("--out", render.out, "Colour image (PNG)")->required();
+    render_cmd->add_option("--ids", render.ids, "Visible primitive id per pixel (16-bit grey PNG, 0 = background)");
     CLI11_PARSE(cli, argc, argv);
 
     if (*trace_cmd) return hsr::viz::run_trace(trace);
+    if (*render_cmd) return hsr::viz::run_render(render);
 
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();

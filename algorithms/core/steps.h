@@ -84,18 +84,22 @@ public:
     [[nodiscard]] bool done() const { return !handle_ || handle_.done(); }
 
     // The co_return'ed answer. Only after the body has returned.
-    [[nodiscard]] const Result& result() const {
+    [[nodiscard]] const Result& result() const& {
         if (!handle_ || !handle_.done() || !handle_.promise().result)
             throw std::logic_error("Steps::result() asked before the algorithm finished");
         return *handle_.promise().result;
     }
+    // On a temporary machine the answer is moved out: a reference into it would dangle (C++20 ends a temporary in
+    // a range-for's range expression before the loop body runs).
+    [[nodiscard]] Result result() && { return std::move(const_cast<Result&>(result())); }
 
     // Drains the remaining events and returns the answer.
-    const Result& run_to_end() {
+    const Result& run_to_end() & {
         while (next() != nullptr) {
         }
         return result();
     }
+    Result run_to_end() && { return std::move(const_cast<Result&>(run_to_end())); }
 
     // Input range over the remaining events, for `for (const auto& e : steps)`.
     class iterator {

@@ -74,7 +74,27 @@ void for_each_table(const TomlReader& r, const toml::table& root, std::string_vi
 Expect read_expect(const TomlReader& r, const toml::table* t) {
     Expect e;
     if (!t) return e;
-    r.only_keys(*t, "expect", {"clip"});
+    r.only_keys(*t, "expect", {"clip", "bsp"});
+    for_each_table(r, *t, "bsp", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"splitter", "eye", "order", "splits"});
+        ExpectBsp x{r.text(c, "splitter", f, "first"), std::nullopt, std::nullopt, std::nullopt,
+                    int(c.source().begin.line)};
+        if (x.splitter != "first" && x.splitter != "balanced" && x.splitter != "fewest-splits" && x.splitter != "weighted")
+            r.fail(c.get("splitter"), join(f, "splitter"), "expected first, balanced, fewest-splits or weighted");
+        if (const toml::node* eye = c.get("eye")) x.eye = glm::dvec3(r.vector(*eye, join(f, "eye"), 3, 3));
+        if (const toml::array* order = r.array(c, "order", f, false)) {
+            if (!x.eye) r.fail(&c, join(f, "eye"), "an expected order needs the eye it is seen from");
+            x.order.emplace();
+            for (std::size_t i = 0; i < order->size(); ++i) {
+                const auto id = order->get(i)->value_exact<std::int64_t>();
+                if (!id) r.fail(order->get(i), index(join(f, "order"), i), "expected a polygon id");
+                x.order->push_back(SceneId(*id));
+            }
+        }
+        if (c.contains("splits")) x.splits = int(r.integer(c, "splits", f));
+        e.bsp.push_back(std::move(x));
+    });
     for_each_table(r, *t, "clip", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
         r.only_keys(c, f, {"id", "outcome", "vertices"});

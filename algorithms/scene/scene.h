@@ -58,8 +58,17 @@ struct ExpectClip {
     std::optional<std::vector<glm::dvec4>> vertices;  // the visible part in clip space, in order
     int line;                                         // where it is written, for test messages
 };
+// [[expect.bsp]]: what a BSP built with one splitter rule must give.
+struct ExpectBsp {
+    std::string splitter;                    // "first", "balanced", "fewest-splits" or "weighted"
+    std::optional<glm::dvec3> eye;           // with `order`: the eye the traversal is run from
+    std::optional<std::vector<SceneId>> order;  // the scene ids painted, back to front (a split polygon once per part)
+    std::optional<int> splits;
+    int line;
+};
 struct Expect {
     std::vector<ExpectClip> clip;
+    std::vector<ExpectBsp> bsp;
 };
 
 struct Scene {

@@ -176,3 +176,14 @@ TEST_CASE("events with non-trivial members are destroyed exactly once, also when
     }
     CHECK(shared.use_count() == 1);  // every copy made for an event is gone, none released twice
 }
+
+TEST_CASE("a temporary machine's result is moved out, so iterating it does not dangle", "[core][steps]") {
+    const auto digits = []() -> Steps<int, std::vector<int>> {
+        co_yield 0;
+        co_return std::vector<int>{1, 2, 3};
+    };
+    int sum = 0;
+    for (int d : digits().run_to_end()) sum += d;  // the Steps temporary ends before the loop body runs
+    CHECK(sum == 6);
+    STATIC_REQUIRE(std::is_same_v<decltype(digits().run_to_end()), std::vector<int>>);
+}

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "catch.h"
+#include "bsp/bsp_tree.h"
 #include "clipping/clip_scene.h"
 #include "scene/load_scene.h"
 
@@ -60,5 +61,27 @@ TEST_CASE("every scene file loads and meets its [expect] table", "[scene][expect
             }
         }
         CHECK(checked >= int(scene.expect.clip.size()));  // every expectation was checked by some machine
+
+        for (const ExpectBsp& x : scene.expect.bsp) {
+            INFO("expect.bsp at line " << x.line << ", splitter " << x.splitter);
+            std::vector<BspInput> in;
+            for (const auto& p : scene.polygons) {
+                BspInput b{p.id, {}};
+                for (const auto& v : p.vertices) b.vertices.emplace_back(v);
+                in.push_back(std::move(b));
+            }
+            const SplitterRule rule = x.splitter == "first"           ? SplitterRule::first
+                                      : x.splitter == "balanced"      ? SplitterRule::balanced
+                                      : x.splitter == "fewest-splits" ? SplitterRule::fewest_splits
+                                                                      : SplitterRule::weighted;
+            const BspTree tree = build_bsp(in, {.splitter = rule}).run_to_end();
+            if (x.splits) CHECK(int(tree.splits) == *x.splits);
+            if (x.order) {
+                std::vector<SceneId> painted;
+                for (BspPolygonId p : traverse_bsp(&tree, *x.eye).run_to_end())
+                    painted.push_back(tree.polygons[std::size_t(p)].source);
+                CHECK(painted == *x.order);
+            }
+        }
     }
 }

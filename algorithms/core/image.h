@@ -1,0 +1,31 @@
+// An image of colours and of visible primitive ids (0 is background), and the painter's fill: a polygon painted
+// over whatever is there, as the hidden-surface algorithms that produce an order (BSP, depth sort) draw.
+// A pixel is covered when its centre is inside the polygon's projection (after clipping in homogeneous clip space,
+// so polygons reaching behind the eye are cut, not wrapped).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "core/plane.h"
+#include "scene/scene.h"
+
+namespace hsr::algo {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgb;   // row 0 is the top
+    std::vector<std::uint16_t> ids;  // the scene's id of the primitive painted last, 0 for background
+
+    Image(int w, int h, Color background = {0, 0, 0});
+    std::uint16_t id(int x, int y) const { return ids[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+};
+
+// Paints the polygon (world space, 3 or more vertices) seen through view_projection. Returns the pixels covered.
+std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::span<const Vec3> polygon,
+                          std::uint16_t id, Color color);
+
+}  // namespace hsr::algo
