@@ -6,8 +6,11 @@
 #include <map>
 #include <random>
 
+#include <glm/matrix.hpp>
+
 #include "bsp/bsp_tree.h"
 #include "catch.h"
+#include "core/image.h"
 #include "core/numeric.h"
 #include "raycast/nearest_hit.h"
 
@@ -293,4 +296,52 @@ TEST_CASE("BSP extreme cases", "[bsp][extreme]") {
         REQUIRE(classify(root.plane, on_plane, b.tree.tolerance) == Side::on);
         CHECK(compare_images(in, b.tree, on_plane, false, 32, 32).wrong == 0);
     }
+}
+
+TEST_CASE("the painter's fill in BSP order gives the ray cast's id image through the same pixel centres",
+          "[bsp][raster]") {
+    std::mt19937_64 rng(21);
+    Camera camera;
+    camera.eye = Vec3(0.3, 0.2, 0.5);
+    camera.target = Vec3(0, 0, -4);
+    camera.near = 0.1;
+    camera.far = 50;
+    const int w = 64, h = 48;
+    camera.aspect = double(w) / h;
+    const glm::dmat4 vp_wide = view_projection(camera), inverse_wide = glm::inverse(vp_wide);
+    int compared = 0, wrong = 0;
+    for (int scene = 0; scene < 4; ++scene) {
+        const auto in = random_triangles(rng, 25);
+        const Built b = build(in, {.splitter = SplitterRule::balanced});
+        Image image(w, h);
+        for (BspPolygonId p : paint_order(b.tree, camera.eye)) {
+            const BspPolygon& poly = b.tree.polygons[std::size_t(p)];
+            paint_polygon(image, vp_wide, poly.vertices, std::uint16_t(poly.source), {255, 255, 255});
+        }
+        std::vector<std::vector<Vec3>> polys;
+        std::vector<Plane> planes;
+        for (const auto& p : in) {
+            polys.push_back(p.vertices);
+            planes.emplace_back();
+            plane_of(p.vertices, planes.back());
+        }
+        const auto seen = [&](double px, double py) {  // the ray through a point of the image (pixel units)
+            const glm::dvec4 ndc((px / w) * 2 - 1, 1 - (py / h) * 2, -1, 1);
+            const glm::dvec4 a = inverse_wide * ndc, z = inverse_wide * glm::dvec4(ndc.x, ndc.y, 1, 1);
+            const Vec3 from = Vec3(a) / a.w, to = Vec3(z) / z.w;
+            const auto hit = nearest_hit({camera.eye, to - from}, polys, planes);
+            return hit ? in[hit->index].id : 0;
+        };
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const int want = seen(x + 0.5, y + 0.5);
+                if (seen(x, y + 0.5) != want || seen(x + 1, y + 0.5) != want || seen(x + 0.5, y) != want ||
+                    seen(x + 0.5, y + 1) != want)
+                    continue;  // a boundary pixel
+                ++compared;
+                wrong += image.id(x, y) != want;
+            }
+    }
+    CHECK(compared > 4 * w * h / 2);
+    CHECK(wrong == 0);
 }

@@ -64,6 +64,19 @@ case "$case" in
     test "$(state 4 End,Space)" = paused     # nothing left to play
     "$png_check" k.png 1280 800
     if "$hsrviz" "$lesson" --screenshot k.png --frames 3 --keys Bogus 2>/dev/null; then exit 1; fi ;;
+  render)  # the BSP painter headless: a colour image and a 16-bit id image with the scene's ids
+    "$hsrviz" render "$src/assets/scenes/bsp_parallel.toml" --size 320x200 --out walls.png --ids walls_ids.png
+    "$png_check" --ids walls_ids.png 320 200 1 2 3
+    # from behind the walls (looking back at them), the nearest wall is the one at z = -6
+    "$hsrviz" render "$src/assets/scenes/bsp_parallel.toml" --eye 0,0,-12 --splitter balanced --size 160x100 --out back.png --ids back_ids.png
+    "$png_check" --ids back_ids.png 160 100 1 2 3
+    out=$("$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --out fan.png)
+    echo "$out"
+    echo "$out" | grep -q "after 5 splits"
+    out=$("$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --splitter fewest-splits --out fan.png)
+    echo "$out" | grep -q "after 0 splits"
+    if "$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --splitter nonsense --out x.png 2>/dev/null; then exit 1; fi
+    if "$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --size 0x5 --out x.png 2>/dev/null; then exit 1; fi ;;
   help)
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"

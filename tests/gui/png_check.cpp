@@ -3,10 +3,36 @@
 #include <cstdio>
 #include <cstdlib>
 #include <set>
+#include <string>
 
 #include <stb/stb_image.h>
 
+// png_check --ids FILE WIDTH HEIGHT ID…: a 16-bit grey id image of that size holding exactly the ids listed
+// (0, the background, may also appear).
+int check_ids(int argc, char** argv) {
+    int w = 0, h = 0, n = 0;
+    if (!stbi_is_16_bit(argv[2])) {
+        std::fprintf(stderr, "png_check: %s is not a 16-bit PNG\n", argv[2]);
+        return 1;
+    }
+    stbi_us* ids = stbi_load_16(argv[2], &w, &h, &n, 0);
+    if (!ids || n != 1 || w != std::atoi(argv[3]) || h != std::atoi(argv[4])) {
+        std::fprintf(stderr, "png_check: %s: want %sx%s grey, got %dx%d with %d channels\n", argv[2], argv[3], argv[4], w, h, n);
+        return 1;
+    }
+    std::set<int> seen, want;
+    for (int i = 0; i < w * h; ++i)
+        if (ids[i] != 0) seen.insert(ids[i]);
+    stbi_image_free(ids);
+    for (int i = 5; i < argc; ++i) want.insert(std::atoi(argv[i]));
+    std::printf("png_check: %s: ids", argv[2]);
+    for (int id : seen) std::printf(" %d", id);
+    std::printf("\n");
+    return seen == want ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
+    if (argc >= 5 && std::string(argv[1]) == "--ids") return check_ids(argc, argv);
     if (argc != 4) {
         std::fprintf(stderr, "usage: png_check FILE WIDTH HEIGHT\n");
         return 2;
