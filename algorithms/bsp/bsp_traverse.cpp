@@ -23,21 +23,22 @@ Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n
 
     auto far_side = display(t, far, eye, order, std::move(drawn));
     for (const auto& e : far_side) co_yield e;
-    drawn = far_side.result();
+    drawn = std::move(far_side).result();  // moved, not copied: a copy per node would make this O(n²)
     for (BspPolygonId p : node.polygons) {
         drawn.push_back(p);
         co_yield PolygonDrawn{n, p, std::uint32_t(drawn.size())};
     }
     auto near_side = display(t, near, eye, order, std::move(drawn));
     for (const auto& e : near_side) co_yield e;
-    co_return near_side.result();
+    co_return std::move(near_side).result();
 }
 
 Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Vec3 eye, Order order) {
     auto all = display(t, t->root, eye, order, {});
     for (const auto& e : all) co_yield e;
-    co_yield TraversalFinished{std::uint32_t(all.result().size())};
-    co_return all.result();
+    std::vector<BspPolygonId> drawn = std::move(all).result();
+    co_yield TraversalFinished{std::uint32_t(drawn.size())};
+    co_return drawn;
 }
 
 }  // namespace
