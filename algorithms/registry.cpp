@@ -14,6 +14,8 @@ constexpr std::array registry = {
                   int(ClipAlgorithm::liang_barsky)},
     AlgorithmInfo{"sutherland_hodgman", "3D Sutherland–Hodgman polygon clipping", 2, Family::clipping,
                   int(ClipAlgorithm::sutherland_hodgman)},
+    AlgorithmInfo{"bsp_build", "BSP tree: BuildBSP", 3, Family::bsp, 0},
+    AlgorithmInfo{"bsp_traversal", "BSP tree: DisplayBSP, back to front", 3, Family::bsp, 1},
 };
 
 }  // namespace

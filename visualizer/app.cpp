@@ -11,18 +11,24 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <fstream>
 #include <vector>
 
+#include "panels/bsp_panels.h"
 #include "panels/clip_panels.h"
+#include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/gl.h"
 #include "render/orbit_camera.h"
 #include "render/palette.h"
+
+#include <glm/geometric.hpp>
 #include "scene/toml_reader.h"
+#include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/trace.h"
 
@@ -31,7 +37,7 @@ namespace {
 
 // ── [SECTION] the lesson and its playback (update) ──────────────────────────────────────────────────────────
 struct Lessonplay {
-    std::unique_ptr<ClipSession> session;
+    std::unique_ptr<Session> session;
     std::string error;  // why the lesson could not be loaded ("" when it could)
     PlaybackState playback;
     OrbitCamera camera;
@@ -42,13 +48,25 @@ struct Lessonplay {
 
     void load(const AppOptions& o) {
         try {
-            session = std::make_unique<ClipSession>(load_lesson(o.lesson_path, o.algorithm));
-            session->player().prefetch(100'000);  // the scrub bar shows a lesson's whole length
+            session = make_session(load_lesson(o.lesson_path, o.algorithm));
+            session->prefetch(100'000);  // the scrub bar shows a lesson's whole length
             error.clear();
             before.reset();
-            glm::vec3 centre;
-            float radius;
-            clip_view_bounds(session->player().view(), session->lesson().scene, centre, radius);
+            glm::vec3 centre(0);
+            float radius = 1;
+            if (const auto* clip = dynamic_cast<const ClipSession*>(session.get()))
+                clip_view_bounds(clip->view(), clip->lesson().scene, centre, radius);
+            if (const auto* bsp = dynamic_cast<const BspSession*>(session.get())) {
+                bsp_view_bounds(bsp->view(), centre, radius);
+                const glm::dvec3 from = bsp->lesson().scene.camera.eye - glm::dvec3(centre);
+                if (bsp->view().two_d) {
+                    camera.yaw = 0, camera.pitch = 0;  // face the plane z = 0
+                } else if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
+                    const glm::dvec3 d = glm::normalize(from);
+                    camera.yaw = float(std::atan2(d.x, d.z));
+                    camera.pitch = float(std::clamp(std::asin(d.y) + 0.25, -1.4, 1.4));
+                }
+            }
             camera.target = centre;
             camera.distance = radius * 2.4f;
         } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
@@ -61,18 +79,19 @@ struct Lessonplay {
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload) load(o);
         if (!session) return;
-        ClipPlayer& p = session->player();
+        Session& p = *session;
         const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
                               a.to_start || a.to_end || a.seek || playback.playing;
         std::optional<ClipView> shown;
-        if (animate && may_move) shown = p.view();  // cheap: the view's large parts are shared, not copied
+        const auto* clip = dynamic_cast<const ClipSession*>(session.get());
+        if (animate && may_move && clip) shown = clip->view();  // cheap: the view's large parts are shared
         const std::size_t cursor = p.cursor();
         if (a.speed) playback.speed = *a.speed;
         if (a.toggle_play) playback.playing = !playback.playing && !p.at_end();
-        if (a.step) session->step();
-        if (a.step_back) session->step_back();
-        if (a.micro_step) p.step_forward();
-        if (a.micro_step_back) p.step_back();
+        if (a.step) p.step();
+        if (a.step_back) p.step_back();
+        if (a.micro_step) p.micro_step();
+        if (a.micro_step_back) p.micro_step_back();
         if (a.to_start) p.seek(0);
         if (a.to_end) p.seek_end();
         if (a.seek) p.seek(*a.seek);
@@ -82,7 +101,7 @@ struct Lessonplay {
             playback.since_step += dt;
             if (playback.since_step >= 1.0 / playback.speed) {
                 playback.since_step = 0;
-                session->step();
+                p.step();
                 if (p.at_end()) playback.playing = false;
             }
         }
@@ -125,7 +144,7 @@ void keys(const SDL_Event& e, UiActions& a) {
 
 // ── [SECTION] drawing a frame (draw) ────────────────────────────────────────────────────────────────────────
 struct Renderer {
-    ClipBatches batches;
+    LineBatches batches;
     std::vector<Label> labels;
 };
 
@@ -140,12 +159,24 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
         error_panel(lp.error, layout, actions);
         return;
     }
-    const ClipSession& s = *lp.session;
+    const Session& s = *lp.session;
     r.batches.faint.clear();
     r.batches.bold.clear();
     r.labels.clear();
-    draw_clip_view(s.player().view(), s.lesson().scene, r.batches, r.labels,
-                   {lp.before ? &*lp.before : nullptr, float(lp.tween)});
+    std::string detail;
+    const auto* clip = dynamic_cast<const ClipSession*>(&s);
+    const auto* bsp = dynamic_cast<const BspSession*>(&s);
+    if (clip) {
+        draw_clip_view(clip->view(), s.lesson().scene, r.batches, r.labels,
+                       {lp.before ? &*lp.before : nullptr, float(lp.tween)});
+        detail = clip->space() == algo::ClipSpace::homogeneous ? "clip space −w ≤ x, y, z ≤ w and w ≥ ε = 1e-9"
+                                                               : "the canonical cube −1 ≤ x, y, z ≤ 1";
+    }
+    if (bsp) {
+        draw_bsp_view(bsp->view(), s.lesson().scene, r.batches, r.labels);
+        detail = "splitter: " + std::string(algo::to_string(bsp->stats().rule)) + " · ε = 1e-9 × extent" +
+                 (bsp->view().two_d ? " · 2D" : "");
+    }
     // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));
     const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
@@ -154,9 +185,10 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     glViewport(0, 0, px(layout.width), px(layout.height));
 
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
-    lesson_panel(s, layout);
+    lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
-    state_panel(s, layout);
+    if (clip) clip_state_panel(*clip, layout);
+    if (bsp) bsp_state_panel(*bsp, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }
@@ -296,13 +328,13 @@ int run_app(const AppOptions& o) {
                 char name[64];
                 std::snprintf(name, sizeof name, "/frame_%04llu.png", static_cast<unsigned long long>(frame - 1));
                 write_png(*o.record_dir + name, width, height);
-                const bool done = !lp.session || lp.session->player().at_end() || frame >= 2000;
+                const bool done = !lp.session || lp.session->at_end() || frame >= 2000;
                 if (done) running = false;
             }
             if (o.screenshot && frame >= std::uint64_t(o.frames)) {
                 if (lp.session)
-                    std::printf("hsrviz: at step %zu of %zu%s, %s\n", lp.session->player().cursor(),
-                                lp.session->player().known(), lp.session->player().complete() ? "" : "+",
+                    std::printf("hsrviz: at step %zu of %zu%s, %s\n", lp.session->cursor(), lp.session->known(),
+                                lp.session->complete() ? "" : "+",
                                 lp.playback.playing ? "playing" : "paused");
                 if (!write_png(*o.screenshot, width, height)) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());

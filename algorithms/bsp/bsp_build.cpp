@@ -50,7 +50,13 @@ BspPolygonId add_part(BspTree& t, BspPolygonId whole, std::vector<Vec3> vertices
 }
 
 // BuildBSP(list): the node made for `list`, or −1 for an empty list. `t` is the tree the top-level machine owns.
-Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list, std::uint32_t depth, BspOptions o) {
+struct Parent {
+    BspNodeId node = -1;
+    Side side = Side::front;
+};
+
+Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list, std::uint32_t depth, Parent parent,
+                                      BspOptions o) {
     if (list.empty()) co_return -1;
     const BspNodeId node = BspNodeId(t->nodes.size());
     t->nodes.push_back({});
@@ -73,7 +79,7 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
     }
     const Plane plane = t->polygons[std::size_t(splitter)].plane;
     t->nodes[std::size_t(node)].plane = plane;
-    co_yield SplitterChosen{node, splitter, depth, scored, best.value, plane};
+    co_yield SplitterChosen{node, parent.node, parent.side, splitter, depth, scored, best.value, plane};
 
     std::vector<BspPolygonId> front, back, here{splitter};
     if (depth + 1 >= o.max_depth) {  // bound: keep what is left at this node, in list order
@@ -117,10 +123,10 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
     co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(front.size()), std::uint32_t(back.size())};
 
     // Recurse: front subtree, then back subtree
-    auto front_child = build_node(t, std::move(front), depth + 1, o);
+    auto front_child = build_node(t, std::move(front), depth + 1, {node, Side::front}, o);
     for (const auto& e : front_child) co_yield e;
     t->nodes[std::size_t(node)].front = front_child.result();
-    auto back_child = build_node(t, std::move(back), depth + 1, o);
+    auto back_child = build_node(t, std::move(back), depth + 1, {node, Side::back}, o);
     for (const auto& e : back_child) co_yield e;
     t->nodes[std::size_t(node)].back = back_child.result();
     co_return node;
@@ -130,7 +136,7 @@ Steps<BspEvent, BspTree> build_machine(BspTree tree, BspOptions o) {
     co_yield BuildStarted{std::uint32_t(tree.polygons.size()), o.splitter, tree.tolerance.epsilon};
     std::vector<BspPolygonId> all(tree.polygons.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = BspPolygonId(i);
-    auto root = build_node(&tree, std::move(all), 0, o);
+    auto root = build_node(&tree, std::move(all), 0, {}, o);
     for (const auto& e : root) co_yield e;
     tree.root = root.result();
     co_yield BuildFinished{std::uint32_t(tree.nodes.size()), tree.depth, std::uint32_t(tree.polygons.size()),

@@ -44,6 +44,8 @@ struct CandidateScored {
 struct SplitterChosen {
     static constexpr std::string_view kind = "SplitterChosen";
     BspNodeId node;
+    BspNodeId parent;  // −1 for the root
+    Side side;         // which side of the parent this node is on (front or back)
     BspPolygonId splitter;
     std::uint32_t depth;
     std::uint32_t candidates;  // how many were scored (1 for the first-polygon rule)
@@ -95,6 +97,8 @@ struct PolygonDrawn {
     BspNodeId node;
     BspPolygonId polygon;
     std::uint32_t order;  // 1 for the first polygon painted
+    Side eye_side;        // the eye's side of the node's plane
+    bool leaf;            // the node has no children
     bool operator==(const PolygonDrawn&) const = default;
 };
 struct TraversalFinished {

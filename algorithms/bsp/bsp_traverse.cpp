@@ -26,7 +26,7 @@ Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n
     drawn = std::move(far_side).result();  // moved, not copied: a copy per node would make this O(n²)
     for (BspPolygonId p : node.polygons) {
         drawn.push_back(p);
-        co_yield PolygonDrawn{n, p, std::uint32_t(drawn.size())};
+        co_yield PolygonDrawn{n, p, std::uint32_t(drawn.size()), side, node.front < 0 && node.back < 0};
     }
     auto near_side = display(t, near, eye, order, std::move(drawn));
     for (const auto& e : near_side) co_yield e;

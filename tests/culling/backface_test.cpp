@@ -72,7 +72,7 @@ TEST_CASE("about half the faces of a closed mesh are culled", "[culling][backfac
     CHECK(kept.size() == 3);  // a cube seen from a corner direction shows three faces
 }
 
-TEST_CASE("a constant look direction is wrong at the edge of a wide field of view; the view vector is not",
+TEST_CASE("a constant look direction is wrong at the edge of a wide field of view, the view vector is not",
           "[culling][backface]") {
     Camera c;  // at the origin, looking down −z, 120° field of view
     c.eye = Vec3(0);

@@ -52,7 +52,7 @@ TEST_CASE("the event log returns each event as it was pushed", "[state][log]") {
     for (std::size_t k = 0; k < events.size(); ++k) CHECK(log.at(k) == events[k]);
 }
 
-TEST_CASE("seek(k) equals a fold of events [0, k) for every k", "[state][player]") {
+TEST_CASE("seek(k) equals a fold of the first k events for every k", "[state][player]") {
     const ClipSpace space = GENERATE(ClipSpace::cube, ClipSpace::homogeneous);
     const ClipAlgorithm algorithm = GENERATE(ClipAlgorithm::cohen_sutherland, ClipAlgorithm::sutherland_hodgman);
     const ClipJob job = job_for(space, 40);
@@ -123,7 +123,7 @@ TEST_CASE("a player with an event cap ends there instead of pulling forever", "[
     CHECK(player.at_end());
 }
 
-TEST_CASE("seek(k) equals a fold of events [0, k) on every shipped lesson's trace", "[state][player][lesson]") {
+TEST_CASE("seek(k) equals a fold of the first k events on every shipped lesson's trace", "[state][player][lesson]") {
     for (const char* file : {"01_cohen_sutherland.toml", "02_liang_barsky.toml", "03_sutherland_hodgman.toml"}) {
         INFO(file);
         const Lesson lesson = load_lesson(data_dir() + "/lessons/" + file);

@@ -1,8 +1,5 @@
-// [SECTION] helpers
-// [SECTION] lesson, pseudocode, narration
-// [SECTION] state: outcodes (Cohen–Sutherland), parameters (Liang–Barsky), pipeline (Sutherland–Hodgman)
-// [SECTION] timeline
-// [SECTION] error, labels
+// The state panel of a clipping lesson: outcodes (Cohen–Sutherland), parameters (Liang–Barsky) or the pipeline
+// stage (Sutherland–Hodgman).
 #include "panels/clip_panels.h"
 
 #include <algorithm>
@@ -10,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "state/clip_pseudocode.h"
+#include "panels/panel_style.h"
 
 namespace hsr::viz {
 namespace {
@@ -18,98 +15,6 @@ namespace {
 using algo::ClipAlgorithm;
 using algo::ClipPlane;
 
-// ── [SECTION] helpers ───────────────────────────────────────────────────────────────────────────────────────
-constexpr ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                   ImGuiWindowFlags_NoSavedSettings;
-
-const ImVec4 highlight_bg(0.20f, 0.34f, 0.52f, 1.0f);
-const ImVec4 bit_set(0.84f, 0.37f, 0.0f, 1.0f);    // vermillion: outside this plane
-const ImVec4 bit_clear(0.18f, 0.20f, 0.24f, 1.0f);
-const ImVec4 dim_text(0.62f, 0.64f, 0.68f, 1.0f);
-
-// The second font loaded by the app, if any: monospace, for pseudocode.
-ImFont* monospace_font() {
-    ImFontAtlas* atlas = ImGui::GetIO().Fonts;
-    return atlas->Fonts.Size > 1 ? atlas->Fonts[1] : nullptr;
-}
-
-void place(float x, float y, float w, float h) {
-    ImGui::SetNextWindowPos(ImVec2(x, y));
-    ImGui::SetNextWindowSize(ImVec2(w, h));
-}
-
-void place_in_column(const PanelLayout& l, int panel) {
-    const auto slot = l.slot(panel);
-    place(l.width - l.side, slot.y, l.side, slot.h);
-}
-
-std::string step_text(const ClipSession& s) {
-    const auto& p = s.player();
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "step %zu of %zu%s", p.cursor(), p.known(), p.complete() ? "" : "+");
-    return buf;
-}
-
-// ── [SECTION] lesson, pseudocode, narration ─────────────────────────────────────────────────────────────────
-}  // namespace
-
-void lesson_panel(const ClipSession& s, const PanelLayout& l) {
-    place_in_column(l, 0);
-    ImGui::Begin("Lesson", nullptr, fixed);
-    ImGui::TextWrapped("%s", s.lesson().title.c_str());
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%s  ·  difficulty %d  ·  %s", std::string(s.lesson().algorithm.id).c_str(),
-                       s.lesson().difficulty,
-                       s.space() == algo::ClipSpace::homogeneous ? "clip space −w ≤ x, y, z ≤ w and w ≥ ε = 1e-9"
-                                                                 : "the canonical cube −1 ≤ x, y, z ≤ 1");
-    ImGui::PopStyleColor();
-    ImGui::Separator();
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%s", s.lesson().summary.c_str());
-    ImGui::PopStyleColor();
-    ImGui::End();
-}
-
-void pseudocode_panel(const ClipSession& s, const PanelLayout& l) {
-    place_in_column(l, 1);
-    ImGui::Begin("Pseudocode", nullptr, fixed | ImGuiWindowFlags_HorizontalScrollbar);
-    const auto lines = pseudocode(s.algorithm());
-    const int current = s.current_line();
-    if (ImFont* mono = monospace_font()) ImGui::PushFont(mono);
-    for (int i = 0; i < int(lines.size()); ++i) {
-        const std::string text(lines[std::size_t(i)]);
-        if (i == current) {
-            const ImVec2 at = ImGui::GetCursorScreenPos();
-            const float w = std::max(ImGui::GetContentRegionAvail().x, ImGui::CalcTextSize(text.c_str()).x);
-            ImGui::GetWindowDrawList()->AddRectFilled(
-                at, ImVec2(at.x + w, at.y + ImGui::GetTextLineHeightWithSpacing()), ImGui::GetColorU32(highlight_bg));
-            ImGui::TextUnformatted(text.c_str());
-            ImGui::SetScrollHereY(0.5f);
-        } else {
-            ImGui::TextUnformatted(text.c_str());
-        }
-    }
-    if (monospace_font()) ImGui::PopFont();
-    ImGui::End();
-}
-
-void narration_panel(const ClipSession& s, const PanelLayout& l) {
-    place_in_column(l, 3);
-    ImGui::Begin("Narration", nullptr, fixed);
-    ImGui::TextColored(dim_text, "%s", step_text(s).c_str());
-    const std::string now = s.narration();
-    ImGui::TextWrapped("%s", now.empty() ? "Press Space to play, or → to take one step." : now.c_str());
-    // the few events before, faint, newest first
-    const auto& p = s.player();
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    for (std::size_t back = 2; back <= 4 && back <= p.cursor(); ++back)
-        ImGui::TextWrapped("%s", algo::describe(p.event(p.cursor() - back), s.space()).c_str());
-    ImGui::PopStyleColor();
-    ImGui::End();
-}
-
-// ── [SECTION] state ─────────────────────────────────────────────────────────────────────────────────────────
-namespace {
 
 void outcode_table(const ClipView& v) {
     const int columns = algo::plane_count(v.space);
@@ -172,9 +77,9 @@ void pipeline(const ClipView& v) {
 
 }  // namespace
 
-void state_panel(const ClipSession& s, const PanelLayout& l) {
+void clip_state_panel(const ClipSession& s, const PanelLayout& l) {
     place_in_column(l, 2);
-    const ClipView& v = s.player().view();
+    const ClipView& v = s.view();
     const char* title = s.algorithm() == ClipAlgorithm::cohen_sutherland ? "Outcodes"
                         : s.algorithm() == ClipAlgorithm::liang_barsky   ? "Parameters"
                                                                          : "Pipeline";
@@ -186,64 +91,6 @@ void state_panel(const ClipSession& s, const PanelLayout& l) {
     }
     if (v.bound_reached) ImGui::TextColored(bit_set, "a step bound was reached");
     ImGui::End();
-}
-
-// ── [SECTION] timeline ──────────────────────────────────────────────────────────────────────────────────────
-void timeline_panel(const ClipSession& s, const PlaybackState& playback, const PanelLayout& l, UiActions& out) {
-    place(0, l.height - l.bottom, l.width, l.bottom);
-    ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
-    out.to_start |= ImGui::Button("|< Home");
-    ImGui::SameLine();
-    out.step_back |= ImGui::Button("<< Step");
-    ImGui::SameLine();
-    out.micro_step_back |= ImGui::Button("< micro");
-    ImGui::SameLine();
-    out.toggle_play |= ImGui::Button(playback.playing ? "  Pause  " : "  Play  ");
-    ImGui::SameLine();
-    out.micro_step |= ImGui::Button("micro >");
-    ImGui::SameLine();
-    out.step |= ImGui::Button("Step >>");
-    ImGui::SameLine();
-    out.to_end |= ImGui::Button("End >|");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(180);
-    float speed = playback.speed;
-    if (ImGui::SliderFloat("steps/s", &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
-    ImGui::SameLine();
-    ImGui::TextColored(dim_text, "%s   Space play · ←/→ step · Shift micro-step · Home/End", step_text(s).c_str());
-
-    const auto& p = s.player();
-    int cursor = int(p.cursor());
-    ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderInt("##scrub", &cursor, 0, int(std::max<std::size_t>(p.known(), 1)), "step %d"))
-        out.seek = std::size_t(cursor);
-    ImGui::End();
-}
-
-// ── [SECTION] error, labels ─────────────────────────────────────────────────────────────────────────────────
-void error_panel(const std::string& message, const PanelLayout& l, UiActions& out) {
-    place(40, 40, l.width - 80, 220);
-    ImGui::Begin("The lesson could not be loaded", nullptr, fixed);
-    ImGui::PushStyleColor(ImGuiCol_Text, bit_set);
-    ImGui::TextWrapped("%s", message.c_str());
-    ImGui::PopStyleColor();
-    ImGui::Separator();
-    ImGui::TextWrapped("Fix the file and press F5 (or the button) to load it again.");
-    out.reload |= ImGui::Button("Reload (F5)");
-    ImGui::End();
-}
-
-void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x, float y, float w, float h) {
-    ImDrawList* d = ImGui::GetBackgroundDrawList();
-    for (const Label& label : labels) {
-        const glm::vec4 c = vp * glm::vec4(label.world, 1.0f);
-        if (c.w <= 1e-6f) continue;
-        const float sx = x + (c.x / c.w * 0.5f + 0.5f) * w, sy = y + (0.5f - c.y / c.w * 0.5f) * h;
-        if (sx < x || sx > x + w || sy < y || sy > y + h) continue;
-        const ImU32 color = ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, label.color.w));
-        d->AddText(ImVec2(sx + 7, sy - 9), IM_COL32(0, 0, 0, 200), label.text.c_str());
-        d->AddText(ImVec2(sx + 6, sy - 10), color, label.text.c_str());
-    }
 }
 
 }  // namespace hsr::viz

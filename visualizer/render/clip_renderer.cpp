@@ -70,7 +70,7 @@ void polyline(LineBatch& b, const ToWorld& world, const Points& v, bool closed, 
     }
 }
 
-void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera& camera, ClipBatches& out,
+void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera& camera, LineBatches& out,
                  std::vector<Label>& labels) {
     // the 12 edges of the frustum (or box)
     for (int a = -1; a <= 1; a += 2)
@@ -99,7 +99,7 @@ void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera&
     }
 }
 
-void draw_active_segment(const ClipView& view, const PrimitiveState& p, const ToWorld& world, ClipBatches& out,
+void draw_active_segment(const ClipView& view, const PrimitiveState& p, const ToWorld& world, LineBatches& out,
                          std::vector<Label>& labels, Tween tween) {
     const Vec4 a = p.input[0], b = p.input[1];
     // the tween applies only while the same primitive is being clipped before and after the step
@@ -136,7 +136,7 @@ void draw_active_segment(const ClipView& view, const PrimitiveState& p, const To
 }
 
 void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const PrimitiveState& p, const ToWorld& world,
-                         ClipBatches& out) {
+                         LineBatches& out) {
     polyline(out.faint, world, view.stage_input, true, palette::working);
     polyline(out.bold, world, view.stage_output, false, color_of(scene, p.id, 1));
     if (view.edge >= 0 && !view.stage_input.empty()) {
@@ -150,7 +150,7 @@ void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const P
 
 }  // namespace
 
-void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& out, std::vector<Label>& labels,
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels,
                     Tween tween) {
     const ToWorld world(scene.camera);
     draw_volume(view, world, scene.camera, out, labels);

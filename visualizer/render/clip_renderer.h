@@ -6,23 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "render/label.h"
 #include "render/line_batch.h"
 #include "scene/scene.h"
 #include "state/clip_view.h"
 
 namespace hsr::viz {
 
-// Text to show beside a point of the 3D view (drawn by the panels, which own the fonts).
-struct Label {
-    glm::vec3 world;
-    std::string text;
-    glm::vec4 color;
-};
-
-struct ClipBatches {
-    LineBatch faint;  // thin lines: the volume, inputs, context
-    LineBatch bold;   // thick lines: visible parts, the segment being clipped
-};
 
 // A step in motion: the view before it, and how far (0 … 1) the picture has moved from there to the current view.
 struct Tween {
@@ -32,7 +22,7 @@ struct Tween {
 
 // The working segment's ends (and Liang–Barsky's t_enter, t_leave) slide from `tween.before` to `view`; the rest
 // of the picture shows `view`. Stepping back tweens the same way, from the later view to the earlier one.
-void draw_clip_view(const ClipView& view, const algo::Scene& scene, ClipBatches& batches, std::vector<Label>& labels,
+void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels,
                     Tween tween = {});
 
 // A sphere holding the clip volume and the scene, for framing the viewer's camera.

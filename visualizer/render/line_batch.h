@@ -39,4 +39,10 @@ private:
     GLint mvp_location_ = -1, point_size_location_ = -1;
 };
 
+// Two batches drawn with different widths: thin context lines and thick lines for what the step is about.
+struct LineBatches {
+    LineBatch faint;
+    LineBatch bold;
+};
+
 }  // namespace hsr::viz

@@ -5,7 +5,8 @@
 namespace hsr::viz {
 namespace {
 
-ClipPlayer make_player(const Lesson& lesson, algo::ClipAlgorithm algorithm, PlayerOptions options) {
+ClipPlayer make_player(const Lesson& lesson, PlayerOptions options) {
+    const auto algorithm = algo::ClipAlgorithm(lesson.algorithm.variant);
     algo::ClipJob job = algo::clip_job(lesson.scene);
     ClipView initial = initial_view(job, algorithm);
     return ClipPlayer(algo::clip_scene(std::move(job), algorithm), std::move(initial), options);
@@ -14,20 +15,11 @@ ClipPlayer make_player(const Lesson& lesson, algo::ClipAlgorithm algorithm, Play
 }  // namespace
 
 ClipSession::ClipSession(Lesson lesson, PlayerOptions options)
-    : lesson_(std::move(lesson)),
-      algorithm_(algo::ClipAlgorithm(lesson_.algorithm.variant)),
-      player_(make_player(lesson_, algorithm_, options)) {}
+    : PlayerSession(lesson, make_player(lesson, options)), algorithm_(algo::ClipAlgorithm(lesson.algorithm.variant)) {}
 
-bool ClipSession::is_major_event(const algo::ClipEvent& e) { return is_major(e); }
-
-std::string ClipSession::narration() const {
-    const auto e = player_.last_applied();
-    return e ? algo::describe(*e, space()) : std::string();
-}
-
-int ClipSession::current_line() const {
-    const auto e = player_.last_applied();
-    return e ? pseudocode_line(algorithm_, *e) : -1;
-}
+std::span<const std::string_view> ClipSession::pseudocode() const { return viz::pseudocode(algorithm_); }
+std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return algo::describe(e, space()); }
+int ClipSession::line_of(const algo::ClipEvent& e) const { return pseudocode_line(algorithm_, e); }
+bool ClipSession::is_major(const algo::ClipEvent& e) const { return viz::is_major(e); }
 
 }  // namespace hsr::viz

@@ -32,12 +32,13 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         lesson.title = lesson.scene.name;
         lesson.summary = lesson.scene.description;
         const std::string fallback = lesson.scene.polygons.empty() ? "cohen_sutherland" : "sutherland_hodgman";
+        // (a scene plays with a clipping machine unless --algorithm names another)
         lesson.algorithm = algorithm_named(nullptr, nullptr, algorithm.value_or(fallback), path);
         lesson.difficulty = lesson.algorithm.difficulty;
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter"});
     lesson.title = r.text(root, "title", "");
     lesson.summary = r.text(root, "summary", "", "");
     lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);
@@ -45,6 +46,10 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
     if (lesson.difficulty < 1 || lesson.difficulty > 5)
         r.fail(root.get("difficulty"), "difficulty", "expected a difficulty from 1 to 5");
     lesson.prerequisites = r.strings(root, "prerequisites", "");
+    lesson.splitter = r.text(root, "splitter", "", "first");
+    if (lesson.splitter != "first" && lesson.splitter != "balanced" && lesson.splitter != "fewest-splits" &&
+        lesson.splitter != "weighted")
+        r.fail(root.get("splitter"), "splitter", "expected first, balanced, fewest-splits or weighted");
     const std::string scene = r.text(root, "scene", "");
     const auto scene_path = std::filesystem::path(path).parent_path() / scene;
     if (!std::filesystem::exists(scene_path))

@@ -6,6 +6,7 @@
 //   difficulty = 1                           # 1 … 5
 //   prerequisites = []                       # lesson file names
 //   summary = "…"
+//   splitter = "balanced"                  # BSP lessons only
 //
 // A scene file given where a lesson is expected plays as a lesson of its own, with the algorithm the caller names
 // (or the one that fits its geometry: Sutherland–Hodgman for polygons, Cohen–Sutherland otherwise).
@@ -27,6 +28,7 @@ struct Lesson {
     algo::AlgorithmInfo algorithm;
     int difficulty = 1;
     std::vector<std::string> prerequisites;
+    std::string splitter = "first";  // BSP lessons: first, balanced, fewest-splits or weighted
     algo::Scene scene;
 };
 

@@ -1,0 +1,22 @@
+// The machine a BSP lesson plays: build the tree from a scene's polygons (or, for the classroom picture, its
+// segments in the plane z = 0), then display it from the camera's eye (DisplayBSP), back to front.
+#pragma once
+
+#include "bsp/bsp_tree.h"
+#include "scene/scene.h"
+
+namespace hsr::algo {
+
+struct BspJob {
+    std::vector<BspInput> polygons;
+    BspOptions options;
+    Vec3 eye{0};
+};
+
+// Polygons from scene.polygons; when the scene has none, its segments as 2D segments (their z is dropped).
+BspJob bsp_job(const Scene& scene, SplitterRule rule);
+
+// Build events, then traversal events; the answer is the painter's order.
+Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene(BspJob job);
+
+}  // namespace hsr::algo

@@ -1,0 +1,89 @@
+// The BSP view folded from the machine's events shows exactly the tree the build returns and the order the
+// traversal returns; seek(k) equals the fold of [0, k) on the BSP lessons' traces.
+#include <random>
+
+#include "bsp/bsp_scene.h"
+#include "catch.h"
+#include "state/bsp_session.h"
+#include "state/bsp_view.h"
+
+using namespace hsr::algo;
+using namespace hsr::viz;
+
+namespace {
+
+BspJob random_job(std::mt19937_64& rng, bool two_d) {
+    std::uniform_real_distribution<double> at(-5, 5), r(-2, 2);
+    BspJob job;
+    job.options.splitter = SplitterRule::balanced;
+    for (int i = 0; i < 25; ++i) {
+        const Vec3 c(at(rng), at(rng), two_d ? 0 : at(rng) - 10);
+        if (two_d) job.polygons.push_back({i + 1, {c + Vec3(r(rng), r(rng), 0), c + Vec3(r(rng), r(rng), 0)}});
+        else
+            job.polygons.push_back({i + 1, {c + Vec3(r(rng), r(rng), r(rng)), c + Vec3(r(rng), r(rng), r(rng)),
+                                            c + Vec3(r(rng), r(rng), r(rng))}});
+    }
+    job.eye = Vec3(0.5, 0.25, 0);
+    return job;
+}
+
+}  // namespace
+
+TEST_CASE("the BSP view folded from the events is the tree and the order the machines return", "[state][bsp]") {
+    const bool two_d = GENERATE(false, true);
+    std::mt19937_64 rng(two_d ? 2 : 3);
+    const BspJob job = random_job(rng, two_d);
+    const BspTree tree = build_bsp(job.polygons, job.options).run_to_end();
+    const auto order = traverse_bsp(&tree, job.eye).run_to_end();
+
+    BspView view = initial_view(job);
+    auto machine = bsp_scene(job);
+    for (const auto& e : machine) reduce(view, e);
+    REQUIRE(tree.splits > 0);
+    REQUIRE(view.polygons.size() == tree.polygons.size());
+    for (std::size_t i = 0; i < tree.polygons.size(); ++i) {
+        INFO("polygon " << i);
+        CHECK(view.polygons[i].label == tree.polygons[i].label);
+        CHECK(view.polygons[i].source == tree.polygons[i].source);
+        CHECK(*view.polygons[i].vertices == tree.polygons[i].vertices);
+    }
+    REQUIRE(view.nodes.size() == tree.nodes.size());
+    for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
+        CHECK(view.nodes[n].front == tree.nodes[n].front);
+        CHECK(view.nodes[n].back == tree.nodes[n].back);
+        CHECK(view.nodes[n].plane == tree.nodes[n].plane);
+        CHECK(view.nodes[n].eye_side.has_value());
+    }
+    CHECK(view.splits == int(tree.splits));
+    for (std::size_t k = 0; k < order.size(); ++k) CHECK(view.polygons[std::size_t(order[k])].drawn == int(k + 1));
+    CHECK(machine.result() == order);
+}
+
+TEST_CASE("seek(k) equals a fold of the first k events on the BSP lessons", "[state][bsp][player]") {
+    for (const char* file : {"04_bsp_build.toml", "05_bsp_traversal.toml"}) {
+        INFO(file);
+        const Lesson lesson = load_lesson(data_dir() + "/lessons/" + file);
+        const BspJob job = bsp_job(lesson.scene, SplitterRule::first);
+        std::vector<BspView> folds{initial_view(job)};
+        for (const auto& e : bsp_scene(job)) {
+            folds.push_back(folds.back());
+            reduce(folds.back(), e);
+        }
+        BspSession::PlayerType player(bsp_scene(job), initial_view(job), {.min_keyframe_interval = 4});
+        player.seek_end();
+        for (std::size_t k = folds.size(); k-- > 0;) {
+            player.seek(k);
+            const BspView& a = player.view();
+            const BspView& b = folds[k];
+            REQUIRE(labels(a) == labels(b));
+            REQUIRE(a.current_node == b.current_node);
+            REQUIRE(a.current_polygon == b.current_polygon);
+            REQUIRE(a.drawn == b.drawn);
+            REQUIRE(a.nodes.size() == b.nodes.size());
+        }
+        BspSession session(lesson);
+        session.seek_end();
+        CHECK(session.at_end());
+        CHECK_FALSE(session.narration().empty());
+    }
+}

@@ -1,0 +1,34 @@
+// Colours and placement shared by the panels.
+#pragma once
+
+#include <imgui.h>
+
+#include "panels/lesson_panels.h"
+
+namespace hsr::viz {
+
+constexpr ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoSavedSettings;
+
+inline const ImVec4 highlight_bg(0.20f, 0.34f, 0.52f, 1.0f);
+inline const ImVec4 bit_set(0.84f, 0.37f, 0.0f, 1.0f);  // vermillion: outside this plane, back side, …
+inline const ImVec4 bit_clear(0.18f, 0.20f, 0.24f, 1.0f);
+inline const ImVec4 dim_text(0.62f, 0.64f, 0.68f, 1.0f);
+
+// The second font loaded by the app, if any: monospace, for pseudocode.
+inline ImFont* monospace_font() {
+    ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+    return atlas->Fonts.Size > 1 ? atlas->Fonts[1] : nullptr;
+}
+
+inline void place(float x, float y, float w, float h) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(w, h));
+}
+
+inline void place_in_column(const PanelLayout& l, int panel) {
+    const auto slot = l.slot(panel);
+    place(l.width - l.side, slot.y, l.side, slot.h);
+}
+
+}  // namespace hsr::viz

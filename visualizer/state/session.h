@@ -1,0 +1,86 @@
+// A lesson being played, whatever its algorithm: what the timeline, narration and pseudocode panels and the
+// keyboard need. Each family (clipping, BSP, …) derives a PlayerSession with its own events, view and tables.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "state/lesson.h"
+#include "state/player.h"
+
+namespace hsr::viz {
+
+class Session {
+public:
+    virtual ~Session() = default;
+    const Lesson& lesson() const { return lesson_; }
+
+    virtual std::size_t cursor() const = 0;
+    virtual std::size_t known() const = 0;
+    virtual bool complete() const = 0;
+    virtual bool at_end() const = 0;
+
+    virtual void step() = 0;  // to the next major event
+    virtual void step_back() = 0;
+    virtual void micro_step() = 0;  // one event
+    virtual void micro_step_back() = 0;
+    virtual void seek(std::size_t k) = 0;
+    virtual void seek_end() = 0;
+    virtual void prefetch(std::size_t n) = 0;
+
+    virtual std::string sentence(std::size_t k) const = 0;  // describe(event k)
+    std::string narration() const { return cursor() == 0 ? std::string() : sentence(cursor() - 1); }
+    virtual std::span<const std::string_view> pseudocode() const = 0;
+    virtual int current_line() const = 0;  // of pseudocode(), −1 at the start
+
+protected:
+    explicit Session(Lesson lesson) : lesson_(std::move(lesson)) {}
+
+private:
+    Lesson lesson_;
+};
+
+// The player-backed part every family shares; a family says how to describe an event, which pseudocode line it
+// belongs to and whether it is a Step.
+template <class Event, class Result, class View>
+class PlayerSession : public Session {
+public:
+    using PlayerType = Player<Event, Result, View>;
+    PlayerType& player() { return player_; }
+    const PlayerType& player() const { return player_; }
+    const View& view() const { return player_.view(); }
+
+    std::size_t cursor() const override { return player_.cursor(); }
+    std::size_t known() const override { return player_.known(); }
+    bool complete() const override { return player_.complete(); }
+    bool at_end() const override { return player_.at_end(); }
+    void step() override { player_.step_forward_until([this](const Event& e) { return is_major(e); }); }
+    void step_back() override { player_.step_back_until([this](const Event& e) { return is_major(e); }); }
+    void micro_step() override { player_.step_forward(); }
+    void micro_step_back() override { player_.step_back(); }
+    void seek(std::size_t k) override { player_.seek(k); }
+    void seek_end() override { player_.seek_end(); }
+    void prefetch(std::size_t n) override { player_.prefetch(n); }
+    std::string sentence(std::size_t k) const override { return describe_event(player_.event(k)); }
+    int current_line() const override {
+        const auto e = player_.last_applied();
+        return e ? line_of(*e) : -1;
+    }
+
+protected:
+    PlayerSession(Lesson lesson, PlayerType player) : Session(std::move(lesson)), player_(std::move(player)) {}
+    virtual std::string describe_event(const Event& e) const = 0;
+    virtual int line_of(const Event& e) const = 0;
+    virtual bool is_major(const Event& e) const = 0;
+
+private:
+    PlayerType player_;
+};
+
+// The session for a lesson, by its algorithm's family. Throws what loading the machine throws (InvalidInput).
+std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options = {});
+
+}  // namespace hsr::viz
