@@ -27,6 +27,7 @@
 #include "render/palette.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include "scene/toml_reader.h"
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
@@ -49,7 +50,7 @@ struct Lessonplay {
     void load(const AppOptions& o) {
         try {
             session = make_session(load_lesson(o.lesson_path, o.algorithm));
-            session->prefetch(100'000);  // the scrub bar shows a lesson's whole length
+            session->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
             error.clear();
             before.reset();
             glm::vec3 centre(0);
@@ -79,6 +80,8 @@ struct Lessonplay {
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload) load(o);
         if (!session) return;
+        if (a.move_eye)
+            if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
         Session& p = *session;
         const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
                               a.to_start || a.to_end || a.seek || playback.playing;
@@ -146,7 +149,30 @@ void keys(const SDL_Event& e, UiActions& a) {
 struct Renderer {
     LineBatches batches;
     std::vector<Label> labels;
+    glm::mat4 view_projection{1};  // of the last frame's 3D view, for picking
+    float view_w = 1, view_h = 1;   // its size in window points
 };
+
+// The 3D view's ray through a window point (x, y), hit with the plane z = 0: where a dragged 2D eye goes.
+std::optional<glm::dvec3> on_floor_plan(const Renderer& r, float x, float y) {
+    const glm::dmat4 inverse = glm::inverse(glm::dmat4(r.view_projection));
+    const double nx = x / r.view_w * 2 - 1, ny = 1 - y / r.view_h * 2;
+    const glm::dvec4 a = inverse * glm::dvec4(nx, ny, -1, 1), b = inverse * glm::dvec4(nx, ny, 1, 1);
+    const glm::dvec3 from = glm::dvec3(a) / a.w, to = glm::dvec3(b) / b.w;
+    if (std::abs(to.z - from.z) < 1e-12) return std::nullopt;
+    const double t = -from.z / (to.z - from.z);
+    return from + t * (to - from);
+}
+
+// Whether a window point is within a few pixels of the eye of a 2D BSP lesson (so a drag moves the eye).
+bool near_the_eye(const Renderer& r, const Session* s, float x, float y) {
+    const auto* bsp = dynamic_cast<const BspSession*>(s);
+    if (!bsp || !bsp->view().two_d) return false;
+    const glm::vec4 c = r.view_projection * glm::vec4(glm::vec3(bsp->view().eye), 1);
+    if (c.w <= 0) return false;
+    const float sx = (c.x / c.w * 0.5f + 0.5f) * r.view_w, sy = (0.5f - c.y / c.w * 0.5f) * r.view_h;
+    return std::hypot(sx - x, sy - y) < 14;
+}
 
 // `layout` is in ImGui's units (window points); `scale` turns them into framebuffer pixels (2 on a HiDPI display).
 void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions) {
@@ -180,6 +206,9 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));
     const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
+    r.view_projection = vp;
+    r.view_w = view_w;
+    r.view_h = view_h;
     r.batches.faint.draw(vp, 1.5f * scale, 7.0f * scale);
     r.batches.bold.draw(vp, 3.5f * scale, 11.0f * scale);
     glViewport(0, 0, px(layout.width), px(layout.height));
@@ -279,7 +308,7 @@ int run_app(const AppOptions& o) {
         lp.animate = !o.screenshot && !o.record_dir;
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
-        bool dragging = false, running = true;
+        bool dragging = false, dragging_eye = false, running = true;
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
         std::size_t next_key = 0;
@@ -299,12 +328,17 @@ int run_app(const AppOptions& o) {
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 if (e.type == SDL_QUIT) running = false;
                 if (!io.WantCaptureKeyboard) keys(e, actions);
-                if (!io.WantCaptureMouse) {  // orbit and zoom the 3D view
-                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) dragging = true;
+                if (!io.WantCaptureMouse) {  // drag the eye of a 2D lesson, or orbit and zoom the 3D view
+                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
+                        dragging_eye = near_the_eye(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
+                        dragging = !dragging_eye;
+                    }
                     if (e.type == SDL_MOUSEWHEEL) lp.camera.zoom(float(e.wheel.y));
                 }
-                if (e.type == SDL_MOUSEBUTTONUP) dragging = false;
+                if (e.type == SDL_MOUSEBUTTONUP) dragging = dragging_eye = false;
                 if (e.type == SDL_MOUSEMOTION && dragging) lp.camera.orbit(float(e.motion.xrel), float(e.motion.yrel));
+                if (e.type == SDL_MOUSEMOTION && dragging_eye)
+                    actions.move_eye = on_floor_plan(renderer, float(e.motion.x), float(e.motion.y));
             }
             const std::uint64_t ticks = SDL_GetTicks64();
             // recording and screenshots take one Step per frame, so the same command gives the same picture
@@ -346,7 +380,7 @@ int run_app(const AppOptions& o) {
             // carry the panels' requests into the next update
             if (from_panels.toggle_play || from_panels.step || from_panels.step_back || from_panels.micro_step ||
                 from_panels.micro_step_back || from_panels.to_start || from_panels.to_end || from_panels.seek ||
-                from_panels.speed || from_panels.reload)
+                from_panels.speed || from_panels.reload || from_panels.move_eye)
                 lp.update(from_panels, 0, o);
         }
         if (o.record_dir) {

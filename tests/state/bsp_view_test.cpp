@@ -87,3 +87,23 @@ TEST_CASE("seek(k) equals a fold of the first k events on the BSP lessons", "[st
         CHECK_FALSE(session.narration().empty());
     }
 }
+
+TEST_CASE("moving the eye reruns the traversal from the new eye and keeps the step", "[state][bsp]") {
+    BspSession session(load_lesson(data_dir() + "/lessons/04_bsp_build.toml"));
+    session.seek_end();
+    const std::size_t end = session.cursor();
+    session.seek(end - 3);
+    const Vec3 eye(0.5, 3, 7);  // across the line of segment 1 (y = 1); z is dropped in 2D
+    session.move_eye(eye);
+    CHECK(session.cursor() == end - 3);
+    session.seek_end();
+    CHECK(session.cursor() == end);  // the build is the same, and a traversal has one event per polygon
+
+    const BspJob job = bsp_job(session.lesson().scene, SplitterRule::first);
+    const BspTree tree = build_bsp(job.polygons, job.options).run_to_end();
+    const auto order = traverse_bsp(&tree, Vec3(eye.x, eye.y, 0)).run_to_end();
+    for (std::size_t k = 0; k < order.size(); ++k)
+        CHECK(session.view().polygons[std::size_t(order[k])].drawn == int(k + 1));
+    CHECK(session.view().eye == Vec3(0.5, 3, 0));
+    CHECK(session.view().nodes[0].eye_side == Side::front);  // above the line y = 1 now
+}

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <optional>
 
+#include <glm/vec3.hpp>
+
 namespace hsr::viz {
 
 struct UiActions {
@@ -15,6 +17,7 @@ struct UiActions {
     std::optional<std::size_t> seek;
     std::optional<float> speed;  // steps per second while playing
     bool reload = false;
+    std::optional<glm::dvec3> move_eye;  // the eye dragged to here (world space)
 };
 
 struct PlaybackState {

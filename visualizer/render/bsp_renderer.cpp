@@ -81,6 +81,13 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
 
     // the splitting planes: in 2D every node's line in its region, in 3D the current node's plane
     if (v.two_d) {
+        // regions shaded by depth: every node's region is filled faintly, so deeper regions come out lighter
+        for (std::size_t n = 0; n < v.nodes.size(); ++n) {
+            const auto region = region_2d(v, int(n), lo, hi);
+            for (std::size_t k = 1; k + 1 < region.size(); ++k)
+                out.faint.triangle(glm::vec3(region[0]), glm::vec3(region[k]), glm::vec3(region[k + 1]),
+                                   glm::vec4(0.55f, 0.65f, 0.85f, 0.07f));
+        }
         for (std::size_t n = 0; n < v.nodes.size(); ++n) {
             const auto line = split_line_2d(v, int(n), lo, hi);
             if (line.empty()) continue;

@@ -58,8 +58,11 @@ BspSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) 
 }  // namespace
 
 BspSession::BspSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(lesson, options)), kind_(BspLesson(lesson.algorithm.variant)) {
-    BspJob job = bsp_job(lesson.scene, rule_named(lesson.splitter));
+    : PlayerSession(lesson, make_player(lesson, options)),
+      kind_(BspLesson(lesson.algorithm.variant)),
+      job_(bsp_job(lesson.scene, rule_named(lesson.splitter))),
+      options_(options) {
+    BspJob job = job_;
     stats_.polygons_in = job.polygons.size();
     stats_.rule = job.options.splitter;
     const auto start = std::chrono::steady_clock::now();
@@ -71,6 +74,12 @@ BspSession::BspSession(Lesson lesson, PlayerOptions options)
     stats_.splits = tree.splits;
     if (kind_ == BspLesson::traversal)  // the traversal lesson starts with the tree built
         player().step_forward_until([](const BspEvent& e) { return std::holds_alternative<BuildFinished>(e); });
+}
+
+void BspSession::move_eye(Vec3 eye) {
+    if (view().two_d) eye.z = 0;
+    job_.eye = eye;
+    replace_player(PlayerType(bsp_scene(job_), initial_view(job_), options_));
 }
 
 std::span<const std::string_view> BspSession::pseudocode() const {

@@ -22,6 +22,9 @@ public:
         algo::SplitterRule rule = algo::SplitterRule::first;
     };
     const Stats& stats() const { return stats_; }
+    // Moves the eye and reruns the machine (the build is the same; the traversal follows the new eye), keeping
+    // the cursor at the same step. In a 2D scene the eye stays in the plane z = 0.
+    void move_eye(algo::Vec3 eye);
 
 private:
     std::string describe_event(const algo::BspEvent& e) const override;
@@ -29,6 +32,8 @@ private:
     bool is_major(const algo::BspEvent& e) const override;
     BspLesson kind_;
     Stats stats_;
+    algo::BspJob job_;
+    PlayerOptions options_;
 };
 
 }  // namespace hsr::viz

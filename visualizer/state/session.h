@@ -13,6 +13,10 @@
 
 namespace hsr::viz {
 
+// How many events a window pulls up front, so that its scrub bar shows a lesson's whole length while a huge run
+// stays lazy beyond it.
+inline constexpr std::size_t prefetch_events = 100'000;
+
 class Session {
 public:
     virtual ~Session() = default;
@@ -72,6 +76,13 @@ public:
 
 protected:
     PlayerSession(Lesson lesson, PlayerType player) : Session(std::move(lesson)), player_(std::move(player)) {}
+    // A rerun with changed inputs: the new machine's player, at the same step where that step still exists.
+    void replace_player(PlayerType player) {
+        const std::size_t k = player_.cursor();
+        player_ = std::move(player);
+        player_.prefetch(prefetch_events);
+        player_.seek(k);
+    }
     virtual std::string describe_event(const Event& e) const = 0;
     virtual int line_of(const Event& e) const = 0;
     virtual bool is_major(const Event& e) const = 0;
