@@ -1,6 +1,9 @@
 #include "scene/load_scene.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include "core/plane.h"
 #include <set>
 
 namespace hsr::algo {
@@ -57,6 +60,19 @@ Camera read_camera(const TomlReader& r, const toml::table* t) {
         r.fail(t->get("near"), join(f, "near"), "expected near > 0 for a perspective camera");
     if (!(c.far > c.near)) r.fail(t->get("far"), join(f, "far"), "expected far > near");
     return c;
+}
+
+// Newell's normal is zero for a polygon with no area; "zero" relative to the polygon's size, so that collinear
+// vertices given with rounding still count.
+bool has_area(const std::vector<glm::dvec4>& vertices) {
+    std::vector<Vec3> v;
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& x : vertices) {
+        v.emplace_back(x);
+        lo = glm::min(lo, glm::dvec3(x)), hi = glm::max(hi, glm::dvec3(x));
+    }
+    const double size = glm::length(hi - lo);
+    return size > 0 && measure(v) > 1e-12 * size * size;
 }
 
 template <class Each>
@@ -157,6 +173,9 @@ Scene read_scene(const TomlReader& r) {
             p.vertices.push_back(r.vector(*v->get(i), index(join(f, "vertices"), i), dims, dims));
         if (p.vertices.size() < 3)
             r.fail(t.get("vertices"), join(f, "vertices"), "a polygon needs at least 3 vertices");
+        if (s.coordinates == Coordinates::world && !has_area(p.vertices))
+            r.fail(t.get("vertices"), join(f, "vertices"),
+                   "the polygon has no area (its vertices are on one line or at one point)");
         s.polygons.push_back(std::move(p));
     });
     s.expect = read_expect(r, r.table(root, "expect", "", false));

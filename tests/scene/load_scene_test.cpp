@@ -68,6 +68,7 @@ TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
         {"[[points]]\nid = 1\np = [0, 0, 0]\n[[points]]\nid = 1\np = [1, 0, 0]\n", 5, "points[1].id", "used twice"},
         {"[[points]]\nid = 1\ncolor = \"red\"\np = [0, 0, 0]\n", 3, "points[0].color", "#rrggbb"},
         {"[[polygons]]\nid = 1\nvertices = [[0, 0, 0], [1, 0, 0]]\n", 3, "polygons[0].vertices", "at least 3"},
+        {"[[polygons]]\nid = 1\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n", 3, "polygons[0].vertices", "no area"},
         {"[[expect.clip]]\nid = 1\noutcome = \"maybe\"\n", 3, "expect.clip[0].outcome", "\"inside\""},
         {"coordinates = \"screen\"\n", 1, "coordinates", "\"world\" or \"clip\""},
         {"name = \"x\"\n[camera\n", 2, "", ""},  // a TOML syntax error
