@@ -7,11 +7,7 @@
 namespace hsr::algo {
 namespace {
 
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string num(double v) { return format_number(v); }
 
 }  // namespace
 
@@ -36,10 +32,6 @@ std::string_view to_string(BspBound b) {
         case BspBound::polygons: return "polygons";
     }
     return "?";
-}
-
-std::string_view kind_of(const BspEvent& e) {
-    return std::visit([](const auto& ev) { return std::decay_t<decltype(ev)>::kind; }, e);
 }
 
 std::string describe(const BspEvent& event, const std::vector<std::string>& labels) {

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/events.h"
 #include "core/plane.h"
 
 namespace hsr::algo {
@@ -120,7 +121,6 @@ using BspEvent = std::variant<BuildStarted, CandidateScored, SplitterChosen, Pol
 
 // `label(p)` names a polygon as the view does ("3", "3f", "3fb"); describe uses it for every polygon it mentions.
 std::string describe(const BspEvent& e, const std::vector<std::string>& labels);
-std::string_view kind_of(const BspEvent& e);
 std::string_view to_string(SplitterRule r);
 std::string_view to_string(BspBound b);
 

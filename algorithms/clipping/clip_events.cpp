@@ -7,11 +7,7 @@
 namespace hsr::algo {
 namespace {
 
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string num(double v) { return format_number(v); }
 
 std::string endpoint(Endpoint e) { return e == Endpoint::p1 ? "p1" : "p2"; }
 
@@ -60,10 +56,6 @@ std::string_view to_string(Bound b) {
         case Bound::vertices: return "polygon vertices";
     }
     return "?";
-}
-
-std::string_view kind_of(const ClipEvent& e) {
-    return std::visit([](const auto& ev) { return std::decay_t<decltype(ev)>::kind; }, e);
 }
 
 std::string describe(const ClipEvent& event, ClipSpace s) {

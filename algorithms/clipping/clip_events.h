@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "clipping/clip_space.h"
+#include "core/events.h"
 
 namespace hsr::algo {
 
@@ -174,7 +175,6 @@ static_assert(sizeof(OutcodeComputed) <= 40);
 
 // One sentence with the live numbers, for the narration panel, traces and test failures.
 std::string describe(const ClipEvent& e, ClipSpace s);
-std::string_view kind_of(const ClipEvent& e);
 
 std::string_view to_string(ClipOutcome o);
 std::string_view to_string(EdgeCase c);

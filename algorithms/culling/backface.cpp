@@ -104,10 +104,6 @@ std::string_view to_string(Facing f) {
     return "?";
 }
 
-std::string_view kind_of(const CullEvent& e) {
-    return std::visit([](const auto& ev) { return std::decay_t<decltype(ev)>::kind; }, e);
-}
-
 std::string describe(const CullEvent& event) {
     char buf[160];
     return std::visit(overloaded{

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/events.h"
 #include "core/plane.h"
 #include "core/steps.h"
 #include "scene/scene.h"
@@ -48,7 +49,6 @@ struct Face {
 Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> faces, Camera camera, BackfaceTest test);
 
 std::string describe(const CullEvent& e);
-std::string_view kind_of(const CullEvent& e);
 std::string_view to_string(BackfaceTest t);
 std::string_view to_string(Facing f);
 
