@@ -34,10 +34,7 @@ std::string_view to_string(BspBound b) {
     return "?";
 }
 
-std::string describe(const BspEvent& event, const std::vector<std::string>& labels) {
-    const auto name = [&](BspPolygonId p) {
-        return p >= 0 && std::size_t(p) < labels.size() ? labels[std::size_t(p)] : "#" + std::to_string(p);
-    };
+std::string describe(const BspEvent& event, const PolygonNamer& name) {
     const auto node = [](BspNodeId n) { return "node " + std::to_string(n); };
     return std::visit(
         overloaded{

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -119,8 +120,9 @@ using BspEvent = std::variant<BuildStarted, CandidateScored, SplitterChosen, Pol
                               NodeFinished, BuildFinished, EyeClassified, PolygonDrawn, TraversalFinished,
                               BspBoundReached>;
 
-// `label(p)` names a polygon as the view does ("3", "3f", "3fb"); describe uses it for every polygon it mentions.
-std::string describe(const BspEvent& e, const std::vector<std::string>& labels);
+// Names a polygon as the view does ("3", "3f", "3fb"); describe uses it for every polygon it mentions.
+using PolygonNamer = std::function<std::string(BspPolygonId)>;
+std::string describe(const BspEvent& e, const PolygonNamer& name);
 std::string_view to_string(SplitterRule r);
 std::string_view to_string(BspBound b);
 

@@ -229,7 +229,8 @@ TEST_CASE("the build's events agree with the tree it returns", "[bsp][events]") 
     CHECK(done->nodes == b.tree.nodes.size());
     CHECK(done->splits == b.tree.splits);
     const auto labels = b.tree.labels();
-    for (const auto& e : b.events) CHECK_FALSE(describe(e, labels).empty());
+    const PolygonNamer name = [&](BspPolygonId p) { return labels.at(std::size_t(p)); };
+    for (const auto& e : b.events) CHECK_FALSE(describe(e, name).empty());
 }
 
 TEST_CASE("BSP extreme cases", "[bsp][extreme]") {

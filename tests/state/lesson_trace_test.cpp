@@ -53,10 +53,8 @@ TEST_CASE("a lesson with an unknown algorithm or a missing scene names the field
 TEST_CASE("a trace is one JSON object per event, and the same input gives the same hash", "[trace]") {
     const Lesson lesson = load_lesson(default_lesson_path());
     std::ostringstream first, second;
-    auto m1 = hsr::algo::clip_scene(hsr::algo::clip_job(lesson.scene), hsr::algo::ClipAlgorithm::cohen_sutherland);
-    auto m2 = hsr::algo::clip_scene(hsr::algo::clip_job(lesson.scene), hsr::algo::ClipAlgorithm::cohen_sutherland);
-    const TraceSummary a = write_trace(m1, hsr::algo::ClipSpace::homogeneous, &first);
-    const TraceSummary b = write_trace(m2, hsr::algo::ClipSpace::homogeneous, &second);
+    const TraceSummary a = trace_lesson(lesson, &first);
+    const TraceSummary b = trace_lesson(lesson, &second);
     CHECK(a.events > 20);
     CHECK(a.hash == b.hash);
     CHECK(first.str() == second.str());
@@ -73,6 +71,26 @@ TEST_CASE("a trace is one JSON object per event, and the same input gives the sa
     CHECK(step == a.events);
 
     // A different algorithm on the same scene is a different trace.
-    auto m3 = hsr::algo::clip_scene(hsr::algo::clip_job(lesson.scene), hsr::algo::ClipAlgorithm::liang_barsky);
-    CHECK(write_trace(m3, hsr::algo::ClipSpace::homogeneous, nullptr).hash != a.hash);
+    CHECK(trace_lesson(load_lesson(default_lesson_path(), "liang_barsky"), nullptr).hash != a.hash);
+}
+
+TEST_CASE("a BSP lesson traces BSP events, with split parts named as the window names them", "[trace][bsp]") {
+    std::ostringstream out;
+    const TraceSummary t = trace_lesson(load_lesson(data_dir() + "/lessons/04_bsp_build.toml"), &out);
+    CHECK(t.events > 20);
+    std::istringstream lines(out.str());
+    std::string line;
+    int splits = 0, drawn = 0;
+    while (std::getline(lines, line)) {
+        const auto j = nlohmann::json::parse(line);
+        if (j.at("kind") == "PolygonSplit") {
+            ++splits;
+            CHECK_THAT(j.at("text").get<std::string>(), Catch::Contains("f (front") && Catch::Contains("b (back"));
+            CHECK(j.at("front").size() == 2);  // a 2D wall's part: two vertices
+        }
+        drawn += j.at("kind") == "PolygonDrawn";
+        CHECK(j.at("kind") != "SegmentStarted");  // not a clipping machine
+    }
+    CHECK(splits == 2);
+    CHECK(drawn == 7);
 }

@@ -87,7 +87,7 @@ std::span<const std::string_view> BspSession::pseudocode() const {
     return display_lines;
 }
 
-std::string BspSession::describe_event(const BspEvent& e) const { return describe(e, labels(view())); }
+std::string BspSession::describe_event(const BspEvent& e) const { return describe(e, namer(view())); }
 
 int BspSession::line_of(const BspEvent& event) const {
     return std::visit(overloaded{

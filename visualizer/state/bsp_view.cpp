@@ -87,6 +87,12 @@ std::size_t approx_bytes(const BspView& v) {
     return b;
 }
 
+algo::PolygonNamer namer(const BspView& v) {
+    return [&v](BspPolygonId p) {
+        return p >= 0 && std::size_t(p) < v.polygons.size() ? v.polygons[std::size_t(p)].label : "#" + std::to_string(p);
+    };
+}
+
 std::vector<std::string> labels(const BspView& v) {
     std::vector<std::string> out;
     for (const auto& p : v.polygons) out.push_back(p.label);

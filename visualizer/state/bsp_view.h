@@ -44,5 +44,7 @@ BspView initial_view(const algo::BspJob& job);
 void reduce(BspView& view, const algo::BspEvent& event);
 std::size_t approx_bytes(const BspView& view);
 std::vector<std::string> labels(const BspView& view);
+// Names polygons by the view's labels, for describe(); the view must outlive it.
+algo::PolygonNamer namer(const BspView& view);
 
 }  // namespace hsr::viz

@@ -4,6 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bsp/bsp_scene.h"
+#include "clipping/clip_scene.h"
+#include "state/bsp_view.h"
+
 namespace glm {
 // Points are written as [x, y, z, w].
 inline void to_json(nlohmann::json& j, const dvec4& v) { j = nlohmann::json::array({v.x, v.y, v.z, v.w}); }
@@ -45,11 +49,43 @@ HSR_TO_JSON(StageFinished, plane, output_vertices)
 HSR_TO_JSON(PolygonFinished, id, outcome, vertices)
 HSR_TO_JSON(StepBoundReached, bound, limit)
 
+inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
+inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
+inline void to_json(nlohmann::json& j, SplitterRule r) { j = std::string(to_string(r)); }
+inline void to_json(nlohmann::json& j, BspBound b) { j = std::string(to_string(b)); }
+inline void to_json(nlohmann::json& j, Order o) { j = o == Order::back_to_front ? "back to front" : "front to back"; }
+inline void to_json(nlohmann::json& j, const Plane& p) { j = nlohmann::json::array({p.n.x, p.n.y, p.n.z, p.d}); }
+// A shared vertex list is written as its vertices (written by hand: ADL does not look in hsr::algo for a
+// std::shared_ptr, so the field macro cannot find a to_json for it).
+inline nlohmann::json vertices_json(const VertexList& v) {
+    nlohmann::json j = nlohmann::json::array();
+    if (v)
+        for (const Vec3& x : *v) j.push_back({x.x, x.y, x.z});
+    return j;
+}
+inline void to_json(nlohmann::json& j, const PolygonSplit& e) {
+    j = {{"node", e.node}, {"polygon", e.polygon}, {"front_part", e.front_part}, {"back_part", e.back_part},
+         {"front", vertices_json(e.front)}, {"back", vertices_json(e.back)}};
+}
+
+HSR_TO_JSON(BuildStarted, polygons, rule, tolerance)
+HSR_TO_JSON(CandidateScored, node, candidate, front, back, spanning, score)
+HSR_TO_JSON(SplitterChosen, node, parent, side, splitter, depth, candidates, score, plane)
+HSR_TO_JSON(PolygonClassified, node, polygon, side)
+HSR_TO_JSON(NodeFinished, node, coplanar, front, back)
+HSR_TO_JSON(BuildFinished, nodes, depth, polygons, splits)
+HSR_TO_JSON(EyeClassified, node, side, order, distance)
+HSR_TO_JSON(PolygonDrawn, node, polygon, order, eye_side, leaf)
+HSR_TO_JSON(TraversalFinished, drawn)
+HSR_TO_JSON(BspBoundReached, bound, limit)
+
 }  // namespace hsr::algo
 
 namespace hsr::viz {
+namespace {
 
-std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, algo::ClipSpace s) {
+template <class Event>
+std::string line_of(std::uint64_t step, const Event& e, const std::string& sentence) {
     nlohmann::ordered_json j;
     j["step"] = step;
     j["kind"] = algo::kind_of(e);
@@ -59,8 +95,17 @@ std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, algo::ClipS
             for (const auto& [key, value] : fields.items()) j[key] = value;
         },
         e);
-    j["text"] = algo::describe(e, s);
+    j["text"] = sentence;
     return j.dump();
+}
+
+}  // namespace
+
+std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
 }
 
 void hash_line(TraceSummary& t, const std::string& line) {
@@ -76,6 +121,33 @@ std::string hex(std::uint64_t hash) {
     char buf[17];
     std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(hash));
     return buf;
+}
+
+TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
+    switch (lesson.algorithm.family) {
+        case algo::Family::clipping: {
+            const algo::ClipJob job = algo::clip_job(lesson.scene);
+            auto machine = algo::clip_scene(job, algo::ClipAlgorithm(lesson.algorithm.variant));
+            return write_trace(machine, [&](const algo::ClipEvent& e) { return algo::describe(e, job.space); }, out);
+        }
+        case algo::Family::bsp: {
+            const auto rule = lesson.splitter == "balanced"        ? algo::SplitterRule::balanced
+                              : lesson.splitter == "fewest-splits" ? algo::SplitterRule::fewest_splits
+                              : lesson.splitter == "weighted"      ? algo::SplitterRule::weighted
+                                                                   : algo::SplitterRule::first;
+            const algo::BspJob job = algo::bsp_job(lesson.scene, rule);
+            BspView view = initial_view(job);  // folded alongside, so sentences name split parts as the window does
+            auto machine = algo::bsp_scene(job);
+            return write_trace(
+                machine,
+                [&](const algo::BspEvent& e) {
+                    reduce(view, e);
+                    return algo::describe(e, namer(view));
+                },
+                out);
+        }
+    }
+    return {};
 }
 
 }  // namespace hsr::viz

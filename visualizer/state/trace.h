@@ -7,8 +7,10 @@
 #include <ostream>
 #include <string>
 
+#include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
 #include "core/steps.h"
+#include "state/lesson.h"
 
 namespace hsr::viz {
 
@@ -17,28 +19,31 @@ struct TraceSummary {
     std::uint64_t hash = 14695981039346656037ull;  // FNV-1a offset basis: the hash of an empty trace
 };
 
-// One JSON line (without the newline).
-std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, algo::ClipSpace s);
-
-// Drains the machine, writing each event as a line. `out` may be null to only count and hash.
-template <class Result>
-TraceSummary write_trace(algo::Steps<algo::ClipEvent, Result>& machine, algo::ClipSpace s, std::ostream* out);
-
 std::string hex(std::uint64_t hash);
 
 // FNV-1a over the bytes of `line` and a newline.
 void hash_line(TraceSummary& t, const std::string& line);
 
-template <class Result>
-TraceSummary write_trace(algo::Steps<algo::ClipEvent, Result>& machine, algo::ClipSpace s, std::ostream* out) {
+// One JSON line (without the newline): step, kind, the event's fields, and its sentence.
+std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::string& sentence);
+
+// Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
+// to only count and hash.
+template <class Event, class Result, class Describe>
+TraceSummary write_trace(algo::Steps<Event, Result>& machine, Describe describe, std::ostream* out) {
     TraceSummary t;
-    while (const algo::ClipEvent* e = machine.next()) {
-        const std::string line = trace_line(t.events, *e, s);
+    while (const Event* e = machine.next()) {
+        const std::string line = trace_line(t.events, *e, describe(*e));
         if (out) *out << line << '\n';
         hash_line(t, line);
         ++t.events;
     }
     return t;
 }
+
+
+// Runs the lesson's machine (whatever its family) to completion, writing its trace to `out` (may be null).
+TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out);
 
 }  // namespace hsr::viz
