@@ -3,6 +3,7 @@
 #include <array>
 
 #include "clipping/clip_scene.h"
+#include "culling/backface.h"
 
 namespace hsr::algo {
 namespace {
@@ -16,6 +17,12 @@ constexpr std::array registry = {
                   int(ClipAlgorithm::sutherland_hodgman)},
     AlgorithmInfo{"bsp_build", "BSP tree: BuildBSP", 3, Family::bsp, 0},
     AlgorithmInfo{"bsp_traversal", "BSP tree: DisplayBSP, back to front", 3, Family::bsp, 1},
+    AlgorithmInfo{"backface_view_vector", "Back-face culling: the view vector", 1, Family::backface,
+                  int(BackfaceTest::view_vector)},
+    AlgorithmInfo{"backface_plane_equation", "Back-face culling: the plane equation", 1, Family::backface,
+                  int(BackfaceTest::plane_equation)},
+    AlgorithmInfo{"backface_screen_winding", "Back-face culling: the winding on screen", 2, Family::backface,
+                  int(BackfaceTest::screen_winding)},
 };
 
 }  // namespace

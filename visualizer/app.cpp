@@ -20,8 +20,10 @@
 
 #include "panels/bsp_panels.h"
 #include "panels/clip_panels.h"
+#include "panels/cull_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
+#include "render/cull_renderer.h"
 #include "render/gl.h"
 #include "render/orbit_camera.h"
 #include "render/palette.h"
@@ -31,6 +33,7 @@
 #include "scene/toml_reader.h"
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
+#include "state/cull_session.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -57,6 +60,8 @@ struct Lessonplay {
             float radius = 1;
             if (const auto* clip = dynamic_cast<const ClipSession*>(session.get()))
                 clip_view_bounds(clip->view(), clip->lesson().scene, centre, radius);
+            if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
+                cull_view_bounds(cull->view(), centre, radius);
             if (const auto* bsp = dynamic_cast<const BspSession*>(session.get())) {
                 bsp_view_bounds(bsp->view(), centre, radius);
                 const glm::dvec3 from = bsp->lesson().scene.camera.eye - glm::dvec3(centre);
@@ -192,6 +197,11 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     std::string detail;
     const auto* clip = dynamic_cast<const ClipSession*>(&s);
     const auto* bsp = dynamic_cast<const BspSession*>(&s);
+    const auto* cull = dynamic_cast<const CullSession*>(&s);
+    if (cull) {
+        draw_cull_view(cull->view(), s.lesson().scene, r.batches, r.labels);
+        detail = std::string(algo::to_string(cull->view().test)) + " test · eye at the scene camera";
+    }
     if (clip) {
         draw_clip_view(clip->view(), s.lesson().scene, r.batches, r.labels,
                        {lp.before ? &*lp.before : nullptr, float(lp.tween)});
@@ -218,6 +228,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
     if (bsp) bsp_state_panel(*bsp, layout);
+    if (cull) cull_state_panel(*cull, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

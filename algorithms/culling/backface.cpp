@@ -85,6 +85,16 @@ Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> fa
     return cull_machine(std::move(faces), camera, test, std::move(planes));
 }
 
+std::vector<Face> faces_of(const Scene& scene) {
+    std::vector<Face> faces;
+    for (const auto& p : scene.polygons) {
+        Face f{p.id, {}};
+        for (const auto& v : p.vertices) f.vertices.emplace_back(v);
+        faces.push_back(std::move(f));
+    }
+    return faces;
+}
+
 std::string_view to_string(BackfaceTest t) {
     switch (t) {
         case BackfaceTest::view_vector: return "view vector";

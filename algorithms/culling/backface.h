@@ -48,6 +48,9 @@ struct Face {
 // the projection). InvalidInput names a face with NaN, infinity, fewer than 3 vertices or no area.
 Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> faces, Camera camera, BackfaceTest test);
 
+// The scene's polygons as faces (its camera is the eye).
+std::vector<Face> faces_of(const Scene& scene);
+
 std::string describe(const CullEvent& e);
 std::string_view to_string(BackfaceTest t);
 std::string_view to_string(Facing f);

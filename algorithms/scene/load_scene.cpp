@@ -90,7 +90,24 @@ void for_each_table(const TomlReader& r, const toml::table& root, std::string_vi
 Expect read_expect(const TomlReader& r, const toml::table* t) {
     Expect e;
     if (!t) return e;
-    r.only_keys(*t, "expect", {"clip", "bsp"});
+    r.only_keys(*t, "expect", {"clip", "bsp", "cull"});
+    for_each_table(r, *t, "cull", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"test", "kept"});
+        ExpectCull x{std::nullopt, {}, int(c.source().begin.line)};
+        if (c.contains("test")) {
+            x.test = r.text(c, "test", f);
+            if (*x.test != "view_vector" && *x.test != "plane_equation" && *x.test != "screen_winding")
+                r.fail(c.get("test"), join(f, "test"), "expected view_vector, plane_equation or screen_winding");
+        }
+        const toml::array* kept = r.array(c, "kept", f, true);
+        for (std::size_t i = 0; i < kept->size(); ++i) {
+            const auto id = kept->get(i)->value_exact<std::int64_t>();
+            if (!id) r.fail(kept->get(i), index(join(f, "kept"), i), "expected a polygon id");
+            x.kept.push_back(SceneId(*id));
+        }
+        e.cull.push_back(std::move(x));
+    });
     for_each_table(r, *t, "bsp", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
         r.only_keys(c, f, {"splitter", "eye", "order", "splits"});

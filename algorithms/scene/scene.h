@@ -66,9 +66,16 @@ struct ExpectBsp {
     std::optional<int> splits;
     int line;
 };
+// [[expect.cull]]: the faces back-face culling keeps, seen from the scene's camera (every test form, or one).
+struct ExpectCull {
+    std::optional<std::string> test;  // "view_vector", "plane_equation" or "screen_winding"; all three if absent
+    std::vector<SceneId> kept;
+    int line;
+};
 struct Expect {
     std::vector<ExpectClip> clip;
     std::vector<ExpectBsp> bsp;
+    std::vector<ExpectCull> cull;
 };
 
 struct Scene {

@@ -8,6 +8,7 @@
 #include "catch.h"
 #include "core/numeric.h"
 #include "culling/backface.h"
+#include "state/cull_session.h"
 
 using namespace hsr::algo;
 
@@ -106,4 +107,23 @@ TEST_CASE("back-face culling refuses degenerate and NaN faces by name", "[cullin
                     InvalidInput);
     for (const auto& e : cull_back_faces(cube(Vec3(0), 1), c, BackfaceTest::screen_winding))
         CHECK_FALSE(describe(e).empty());
+}
+
+TEST_CASE("the back-face lesson's view folds to the faces the machine keeps", "[culling][backface][state]") {
+    for (const char* id : {"backface_view_vector", "backface_plane_equation", "backface_screen_winding"}) {
+        INFO(id);
+        hsr::viz::CullSession session(hsr::viz::load_lesson(hsr::viz::data_dir() + "/lessons/06_backface.toml", id));
+        session.seek_end();
+        const auto kept = cull_back_faces(faces_of(session.lesson().scene), session.lesson().scene.camera,
+                                          BackfaceTest(session.lesson().algorithm.variant))
+                              .run_to_end();
+        std::vector<std::int32_t> shown;
+        for (const auto& f : session.view().faces)
+            if (f.facing == Facing::front) shown.push_back(f.id);
+        CHECK(shown == kept);
+        CHECK(session.view().kept + session.view().culled == int(session.view().faces.size()));
+        session.seek(3);
+        CHECK(session.current_line() >= 3);
+        CHECK_FALSE(session.narration().empty());
+    }
 }

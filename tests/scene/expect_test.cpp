@@ -7,6 +7,7 @@
 #include "catch.h"
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
+#include "culling/backface.h"
 #include "scene/load_scene.h"
 
 using namespace hsr::algo;
@@ -61,6 +62,19 @@ TEST_CASE("every scene file loads and meets its expect table", "[scene][expect]"
             }
         }
         CHECK(checked >= int(scene.expect.clip.size()));  // every expectation was checked by some machine
+
+        for (const ExpectCull& x : scene.expect.cull) {
+            INFO("expect.cull at line " << x.line);
+            for (const BackfaceTest test :
+                 {BackfaceTest::view_vector, BackfaceTest::plane_equation, BackfaceTest::screen_winding}) {
+                const std::string name = test == BackfaceTest::view_vector      ? "view_vector"
+                                         : test == BackfaceTest::plane_equation ? "plane_equation"
+                                                                                : "screen_winding";
+                if (x.test && *x.test != name) continue;
+                INFO("test " << name);
+                CHECK(cull_back_faces(faces_of(scene), scene.camera, test).run_to_end() == x.kept);
+            }
+        }
 
         for (const ExpectBsp& x : scene.expect.bsp) {
             INFO("expect.bsp at line " << x.line << ", splitter " << x.splitter);

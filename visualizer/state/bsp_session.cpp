@@ -4,7 +4,6 @@
 #include <chrono>
 
 #include "core/overloaded.h"
-#include "state/clip_session.h"
 
 namespace hsr::viz {
 namespace {
@@ -121,14 +120,6 @@ bool BspSession::is_major(const BspEvent& event) const {
                           [](const BspBoundReached&) { return true; },
                       },
                       event);
-}
-
-std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
-    switch (lesson.algorithm.family) {
-        case algo::Family::clipping: return std::make_unique<ClipSession>(std::move(lesson), options);
-        case algo::Family::bsp: return std::make_unique<BspSession>(std::move(lesson), options);
-    }
-    return nullptr;
 }
 
 }  // namespace hsr::viz

@@ -6,6 +6,7 @@
 
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
+#include "culling/backface.h"
 #include "state/bsp_view.h"
 
 namespace glm {
@@ -68,6 +69,11 @@ inline void to_json(nlohmann::json& j, const PolygonSplit& e) {
          {"front", vertices_json(e.front)}, {"back", vertices_json(e.back)}};
 }
 
+inline void to_json(nlohmann::json& j, BackfaceTest t) { j = std::string(to_string(t)); }
+inline void to_json(nlohmann::json& j, Facing f) { j = std::string(to_string(f)); }
+HSR_TO_JSON(FaceTested, id, test, facing, value)
+HSR_TO_JSON(CullingFinished, tested, culled)
+
 HSR_TO_JSON(BuildStarted, polygons, rule, tolerance)
 HSR_TO_JSON(CandidateScored, node, candidate, front, back, spanning, score)
 HSR_TO_JSON(SplitterChosen, node, parent, side, splitter, depth, candidates, score, plane)
@@ -105,6 +111,9 @@ std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, const std::
     return line_of(step, e, sentence);
 }
 std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
 
@@ -145,6 +154,11 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
                     return algo::describe(e, namer(view));
                 },
                 out);
+        }
+        case algo::Family::backface: {
+            auto machine = algo::cull_back_faces(algo::faces_of(lesson.scene), lesson.scene.camera,
+                                                 algo::BackfaceTest(lesson.algorithm.variant));
+            return write_trace(machine, [](const algo::CullEvent& e) { return algo::describe(e); }, out);
         }
     }
     return {};

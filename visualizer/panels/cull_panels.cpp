@@ -1,0 +1,43 @@
+#include "panels/cull_panels.h"
+
+#include <imgui.h>
+
+#include "panels/panel_style.h"
+
+namespace hsr::viz {
+
+void cull_state_panel(const CullSession& s, const PanelLayout& l) {
+    place_in_column(l, 2);
+    const CullView& v = s.view();
+    ImGui::Begin("Faces", nullptr, fixed);
+    ImGui::TextColored(dim_text, "%d kept · %d culled · %d to test (%s)", v.kept, v.culled,
+                       int(v.faces.size()) - v.kept - v.culled, std::string(algo::to_string(v.test)).c_str());
+    if (ImGui::BeginTable("faces", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("face", ImGuiTableColumnFlags_WidthFixed, 50);
+        ImGui::TableSetupColumn(v.test == algo::BackfaceTest::view_vector      ? "v·n"
+                                : v.test == algo::BackfaceTest::plane_equation ? "N·eye + D"
+                                                                               : "screen area",
+                                ImGuiTableColumnFlags_WidthFixed, 110);
+        ImGui::TableSetupColumn("verdict");
+        ImGui::TableHeadersRow();
+        for (std::size_t i = 0; i < v.faces.size(); ++i) {
+            const FaceView& f = v.faces[i];
+            ImGui::TableNextRow();
+            if (int(i) == v.current) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", f.id);
+            ImGui::TableNextColumn();
+            if (f.facing) ImGui::Text("%.4g", f.value);
+            ImGui::TableNextColumn();
+            if (f.facing)
+                ImGui::TextColored(*f.facing == algo::Facing::front ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s",
+                                   std::string(algo::to_string(*f.facing)).c_str());
+            else
+                ImGui::TextColored(dim_text, "not tested yet");
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,17 @@
+// Draws a back-face culling view: faces kept in their colour, culled faces dark, untested faces faint; for the
+// face just tested, its normal and the view vector from the eye (or the eye-to-plane distance).
+#pragma once
+
+#include <vector>
+
+#include "render/label.h"
+#include "render/line_batch.h"
+#include "scene/scene.h"
+#include "state/cull_view.h"
+
+namespace hsr::viz {
+
+void draw_cull_view(const CullView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
+void cull_view_bounds(const CullView& view, glm::vec3& centre, float& radius);
+
+}  // namespace hsr::viz

@@ -1,0 +1,18 @@
+#include "state/session.h"
+
+#include "state/bsp_session.h"
+#include "state/clip_session.h"
+#include "state/cull_session.h"
+
+namespace hsr::viz {
+
+std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
+    switch (lesson.algorithm.family) {
+        case algo::Family::clipping: return std::make_unique<ClipSession>(std::move(lesson), options);
+        case algo::Family::bsp: return std::make_unique<BspSession>(std::move(lesson), options);
+        case algo::Family::backface: return std::make_unique<CullSession>(std::move(lesson), options);
+    }
+    return nullptr;
+}
+
+}  // namespace hsr::viz
