@@ -81,6 +81,12 @@ double measure(std::span<const Vec3> polygon) {
     return 0.5 * glm::length(twice);
 }
 
+Vec3 centroid(std::span<const Vec3> polygon) {
+    Vec3 c(0);
+    for (const Vec3& v : polygon) c += v;
+    return polygon.empty() ? c : c / double(polygon.size());
+}
+
 std::string_view to_string(Side s) {
     switch (s) {
         case Side::front: return "front";

@@ -51,6 +51,8 @@ bool plane_of(std::span<const Vec3> polygon, Plane& out);
 
 // Area of a planar polygon (length for a 2-vertex one).
 double measure(std::span<const Vec3> polygon);
+// The mean of the vertices (for labels and arrows; not the area centroid).
+Vec3 centroid(std::span<const Vec3> polygon);
 
 std::string_view to_string(Side s);
 std::string_view to_string(PolygonSide s);

@@ -5,19 +5,12 @@
 #include <glm/geometric.hpp>
 
 #include "render/palette.h"
+#include "render/scene_color.h"
 
 namespace hsr::viz {
 namespace {
 
 using algo::Vec3;
-
-glm::vec4 color_of(const algo::Scene& scene, std::int32_t id, float alpha) {
-    for (const auto& p : scene.polygons)
-        if (p.id == id) return {p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, alpha};
-    for (const auto& s : scene.segments)
-        if (s.id == id) return {s.color.r / 255.f, s.color.g / 255.f, s.color.b / 255.f, alpha};
-    return {0.8f, 0.8f, 0.8f, alpha};
-}
 
 void bounds(const BspView& v, Vec3& lo, Vec3& hi) {
     lo = Vec3(1e300), hi = Vec3(-1e300);
@@ -67,12 +60,6 @@ std::vector<Vec3> plane_quad(const algo::Plane& p, const Vec3& lo, const Vec3& h
     return {on - r * u - r * w, on + r * u - r * w, on + r * u + r * w, on - r * u + r * w};
 }
 
-glm::vec3 centroid(const std::vector<Vec3>& v) {
-    Vec3 c(0);
-    for (const Vec3& x : v) c += x;
-    return glm::vec3(c / double(v.size()));
-}
-
 }  // namespace
 
 void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
@@ -107,8 +94,8 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         if (p.replaced || !p.vertices) continue;
         const std::vector<Vec3>& vs = *p.vertices;
         const bool current = int(i) == v.current_polygon;
-        const glm::vec4 fill = color_of(scene, p.source, p.drawn > 0 ? 0.9f : 0.3f);
-        const glm::vec4 edge = current ? palette::current_edge : color_of(scene, p.source, 1.0f);
+        const glm::vec4 fill = scene_color(scene, p.source, p.drawn > 0 ? 0.9f : 0.3f);
+        const glm::vec4 edge = current ? palette::current_edge : scene_color(scene, p.source, 1.0f);
         if (vs.size() == 2) {
             (p.drawn > 0 || current ? out.bold : out.faint).line(glm::vec3(vs[0]), glm::vec3(vs[1]), edge);
         } else {
@@ -119,7 +106,7 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         }
         std::string text = p.label;
         if (p.drawn > 0) text += "  #" + std::to_string(p.drawn);
-        labels.push_back({centroid(vs), text, current ? palette::current_edge : color_of(scene, p.source, 1.0f)});
+        labels.push_back({glm::vec3(algo::centroid(vs)), text, current ? palette::current_edge : scene_color(scene, p.source, 1.0f)});
     }
     out.bold.point(glm::vec3(v.eye), palette::eye);
     labels.push_back({glm::vec3(v.eye), "eye", palette::eye});

@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "render/palette.h"
+#include "render/scene_color.h"
 
 namespace hsr::viz {
 namespace {
@@ -30,17 +31,6 @@ public:
 private:
     glm::dmat4 inverse_;
 };
-
-glm::vec4 color_of(const algo::Scene& scene, algo::PrimitiveId id, float alpha) {
-    auto rgb = [&](const algo::Color& c) { return glm::vec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha); };
-    for (const auto& p : scene.points)
-        if (p.id == id) return rgb(p.color);
-    for (const auto& s : scene.segments)
-        if (s.id == id) return rgb(s.color);
-    for (const auto& p : scene.polygons)
-        if (p.id == id) return rgb(p.color);
-    return {0.8f, 0.8f, 0.8f, alpha};
-}
 
 // The clip volume's corner for NDC signs (±1, ±1, ±1).
 Vec4 corner(int x, int y, int z) { return {double(x), double(y), double(z), 1.0}; }
@@ -138,7 +128,7 @@ void draw_active_segment(const ClipView& view, const PrimitiveState& p, const To
 void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const PrimitiveState& p, const ToWorld& world,
                          LineBatches& out) {
     polyline(out.faint, world, view.stage_input, true, palette::working);
-    polyline(out.bold, world, view.stage_output, false, color_of(scene, p.id, 1));
+    polyline(out.bold, world, view.stage_output, false, scene_color(scene, p.id, 1));
     if (view.edge >= 0 && !view.stage_input.empty()) {
         const std::size_t i = std::size_t(view.edge), n = view.stage_input.size();
         if (auto s = world(view.stage_input[i]), e = world(view.stage_input[(i + 1) % n]); s && e) {
@@ -160,11 +150,11 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches&
         const bool active = int(i) == view.active && p.status == PrimitiveStatus::clipping;
         const float input_alpha = p.status == PrimitiveStatus::waiting ? 0.7f : 0.3f;
         polyline(p.kind == PrimitiveKind::point ? out.bold : out.faint, world, p.input,
-                 p.kind == PrimitiveKind::polygon, color_of(scene, p.id, input_alpha));
+                 p.kind == PrimitiveKind::polygon, scene_color(scene, p.id, input_alpha));
         if (p.status == PrimitiveStatus::done)
-            polyline(out.bold, world, p.visible, p.kind == PrimitiveKind::polygon, color_of(scene, p.id, 1));
+            polyline(out.bold, world, p.visible, p.kind == PrimitiveKind::polygon, scene_color(scene, p.id, 1));
         if (!p.input.empty())
-            if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), color_of(scene, p.id, 0.9f)});
+            if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), scene_color(scene, p.id, 0.9f)});
         if (!active) continue;
         if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels, tween);
         if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, scene, p, world, out);

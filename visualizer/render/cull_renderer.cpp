@@ -5,25 +5,11 @@
 #include <glm/geometric.hpp>
 
 #include "render/palette.h"
+#include "render/scene_color.h"
 
 namespace hsr::viz {
-namespace {
 
 using algo::Vec3;
-
-glm::vec4 color_of(const algo::Scene& scene, std::int32_t id, float alpha) {
-    for (const auto& p : scene.polygons)
-        if (p.id == id) return {p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, alpha};
-    return {0.8f, 0.8f, 0.8f, alpha};
-}
-
-Vec3 centroid(const std::vector<Vec3>& v) {
-    Vec3 c(0);
-    for (const Vec3& x : v) c += x;
-    return c / double(v.size());
-}
-
-}  // namespace
 
 void draw_cull_view(const CullView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
@@ -31,18 +17,18 @@ void draw_cull_view(const CullView& v, const algo::Scene& scene, LineBatches& ou
         const std::vector<Vec3>& vs = *f.vertices;
         const bool current = int(i) == v.current;
         const bool kept = f.facing == algo::Facing::front;
-        const glm::vec4 fill = !f.facing ? color_of(scene, f.id, 0.25f)
-                               : kept    ? color_of(scene, f.id, 0.85f)
+        const glm::vec4 fill = !f.facing ? scene_color(scene, f.id, 0.25f)
+                               : kept    ? scene_color(scene, f.id, 0.85f)
                                          : glm::vec4(0.35f, 0.12f, 0.08f, 0.35f);
         for (std::size_t k = 1; k + 1 < vs.size(); ++k)
             out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
         const glm::vec4 edge = current ? palette::current_edge : f.facing && !kept ? palette::outside
-                                                                                   : color_of(scene, f.id, 1);
+                                                                                   : scene_color(scene, f.id, 1);
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
         if (!current) continue;
         // the test's vectors: the outward normal at the centroid, and the view vector from the eye to vertex 0
-        const Vec3 c = centroid(vs);
+        const Vec3 c = algo::centroid(vs);
         const double size = glm::length(vs[0] - c) + 0.2;
         out.bold.line(glm::vec3(c), glm::vec3(c + f.plane.n * size), palette::parameter);
         labels.push_back({glm::vec3(c + f.plane.n * size), "n", palette::parameter});
