@@ -1,5 +1,6 @@
 #include "zbuffer/depth_format.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -59,6 +60,26 @@ std::uint64_t code(DepthFormat f, double z, DepthRange r) {
     }
     return 0;
 }
+
+std::uint64_t code_of_window_depth(DepthFormat f, double d, DepthRange r, bool perspective) {
+    d = std::clamp(d, 0.0, 1.0);
+    switch (f) {
+        case DepthFormat::int16:
+        case DepthFormat::int24:
+        case DepthFormat::int32: return std::uint64_t(std::llround(levels(f) * d));
+        case DepthFormat::linear24: {
+            const double a = r.far / (r.far - r.near), b = r.far * r.near / (r.near - r.far);
+            const double linear = perspective ? (b / (d - a) - r.near) / (r.far - r.near) : d;
+            return std::uint64_t(std::llround(levels(f) * std::clamp(linear, 0.0, 1.0)));
+        }
+        case DepthFormat::float32: return std::bit_cast<std::uint32_t>(float(d));
+        case DepthFormat::float32_reversed:
+            return std::uint64_t(std::bit_cast<std::uint32_t>(1.0f)) - std::bit_cast<std::uint32_t>(float(1 - d));
+    }
+    return 0;
+}
+
+std::uint64_t far_code(DepthFormat f, DepthRange r) { return code_of_window_depth(f, 1.0, r, true); }
 
 std::uint64_t codes_between(DepthFormat f, double z0, double z1, DepthRange r) {
     return code(f, z1, r) - code(f, z0, r);

@@ -30,6 +30,12 @@ double window_depth(double z, DepthRange r);
 // like the values for non-negative floats).
 std::uint64_t code(DepthFormat f, double z, DepthRange r);
 
+// The code stored for a window depth d ∈ [0, 1] as a rasteriser interpolates it (d is affine on the screen).
+// With a perspective camera d = a + b/z; with an orthographic one d is already linear in z, which linear24 uses.
+std::uint64_t code_of_window_depth(DepthFormat f, double d, DepthRange r, bool perspective = true);
+// The code every depth buffer starts with: the far plane's.
+std::uint64_t far_code(DepthFormat f, DepthRange r);
+
 // How many codes lie between two eye distances: code(z1) − code(z0) for z0 ≤ z1.
 std::uint64_t codes_between(DepthFormat f, double z0, double z1, DepthRange r);
 

@@ -1,0 +1,145 @@
+#include "zbuffer/screen_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "clipping/sutherland_hodgman.h"
+#include "core/numeric.h"
+#include "core/plane.h"
+
+namespace hsr::algo {
+namespace {
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
+
+std::int64_t row_centre(int row) { return std::int64_t(row) * subpixels + subpixels / 2; }
+
+// The top-left rule as a threshold on E: on the edge (E = 0) counts only for top and left edges.
+std::int64_t threshold(std::int64_t dx, std::int64_t dy) { return (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1; }
+
+// Twice the signed area in sub-pixel units²; positive when clockwise on the screen (y down).
+std::int64_t twice_area(const std::vector<ScreenVertex>& v) {
+    std::int64_t sum = 0;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) sum += v[j].x * v[i].y - v[i].x * v[j].y;
+    return sum;
+}
+
+// Newell's normal of the polygon in (x, y, d) screen space gives the depth plane d = c0 − (a/c)x − (b/c)y.
+DepthPlane depth_plane(const std::vector<glm::dvec3>& v) {
+    glm::dvec3 n(0), centre(0);
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+        n.x += (v[j].y - v[i].y) * (v[j].z + v[i].z);
+        n.y += (v[j].z - v[i].z) * (v[j].x + v[i].x);
+        n.z += (v[j].x - v[i].x) * (v[j].y + v[i].y);
+        centre += v[i];
+    }
+    centre /= double(v.size());
+    if (n.z == 0) return {centre.z, 0, 0};
+    return {centre.z + (n.x * centre.x + n.y * centre.y) / n.z, -n.x / n.z, -n.y / n.z};
+}
+
+void require_convex(const ScenePolygon& p) {
+    std::vector<Vec3> v;
+    for (const auto& q : p.vertices) v.emplace_back(q);
+    Plane plane;
+    if (!plane_of(v, plane)) return;  // no area: the projection reports it as zero-area
+    const Vec3 n = plane.n;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Vec3 &a = v[i], &b = v[(i + 1) % v.size()], &c = v[(i + 2) % v.size()];
+        if (glm::dot(glm::cross(b - a, c - b), n) < -1e-9 * glm::length(b - a) * glm::length(c - b))
+            throw InvalidInput("polygon " + std::to_string(p.id) +
+                               " is not convex; the z-buffer and scan-line fills take convex polygons "
+                               "(split it into triangles in the scene)");
+    }
+}
+
+}  // namespace
+
+ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport) {
+    ScreenPolygon out{.id = id, .color = color};
+    // Clip in homogeneous clip space before the divide (near plane included)
+    const PolygonClip visible =
+        sutherland_hodgman(ClipPolygon{id, std::move(clip_vertices)}, {.space = ClipSpace::homogeneous}).run_to_end();
+    if (visible.vertices.size() < 3) {
+        out.status = ScreenStatus::outside_view;
+        return out;
+    }
+    // Divide by w, map to the viewport, snap to sub-pixels
+    std::vector<glm::dvec3> exact;
+    for (const Vec4& c : visible.vertices) {
+        const glm::dvec3 ndc = glm::dvec3(c) / c.w;
+        const glm::dvec3 s((ndc.x + 1) * 0.5 * viewport.width, (1 - ndc.y) * 0.5 * viewport.height, (ndc.z + 1) * 0.5);
+        const ScreenVertex v{std::llround(s.x * subpixels), std::llround(s.y * subpixels), std::clamp(s.z, 0.0, 1.0)};
+        if (out.vertices.empty() || v.x != out.vertices.back().x || v.y != out.vertices.back().y) {
+            out.vertices.push_back(v);
+            exact.push_back(s);
+        }
+    }
+    while (out.vertices.size() > 1 && out.vertices.front().x == out.vertices.back().x &&
+           out.vertices.front().y == out.vertices.back().y) {
+        out.vertices.pop_back();
+        exact.pop_back();
+    }
+    const std::int64_t area = out.vertices.size() < 3 ? 0 : twice_area(out.vertices);
+    if (area == 0) {
+        out.status = ScreenStatus::zero_area;
+        return out;
+    }
+    if (area < 0) {  // counter-clockwise on screen: walk it the other way
+        std::reverse(out.vertices.begin(), out.vertices.end());
+        std::reverse(exact.begin(), exact.end());
+    }
+    out.plane = depth_plane(exact);
+    std::int64_t y0 = out.vertices[0].y, y1 = y0;
+    for (const auto& v : out.vertices) y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+    out.row_begin = int(std::clamp<std::int64_t>(ceil_div(y0 - subpixels / 2, subpixels), 0, viewport.height));
+    out.row_end = int(std::clamp<std::int64_t>(floor_div(y1 - subpixels / 2, subpixels) + 1, 0, viewport.height));
+    return out;
+}
+
+std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewport) {
+    std::vector<ScreenPolygon> out;
+    for (const ScenePolygon& p : scene.polygons) {
+        for (std::size_t k = 0; k < p.vertices.size(); ++k)
+            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
+        if (p.vertices.size() < 3) continue;  // a 2D segment: nothing to fill
+        std::vector<glm::dvec4> clip;
+        if (scene.coordinates == Coordinates::world) require_convex(p);
+        for (const auto& v : p.vertices) clip.push_back(to_clip(scene, v));
+        out.push_back(project_polygon(p.id, p.color, std::move(clip), viewport));
+    }
+    return out;
+}
+
+int edge_bound_on_row(const ScreenVertex& a, const ScreenVertex& b, int row) {
+    // E(p) = dx·(p.y − a.y) − dy·(p.x − a.x) ≥ t, with p.x = 256·i + 128 the centre of pixel i
+    const std::int64_t dx = b.x - a.x, dy = b.y - a.y, t = threshold(dx, dy);
+    const std::int64_t k = dx * (row_centre(row) - a.y) + dy * a.x;  // E = −dy·p.x + k
+    const std::int64_t half = subpixels / 2;
+    if (dy < 0) return int(std::clamp<std::int64_t>(ceil_div(t - k + half * dy, -subpixels * dy), -1, 1 << 30));
+    return int(std::clamp<std::int64_t>(floor_div(k - half * dy - t, subpixels * dy) + 1, -1, 1 << 30));
+}
+
+double edge_x_at_row(const ScreenVertex& a, const ScreenVertex& b, int row) {
+    const double y = double(row_centre(row));
+    return (double(a.x) + double(b.x - a.x) * (y - double(a.y)) / double(b.y - a.y)) / double(subpixels);
+}
+
+Span span_on_row(const ScreenPolygon& p, int row, Viewport viewport) {
+    Span s{0, viewport.width};
+    if (p.status != ScreenStatus::drawn || row < p.row_begin || row >= p.row_end) return {0, 0};
+    for (std::size_t i = 0, j = p.vertices.size() - 1; i < p.vertices.size(); j = i++) {
+        const ScreenVertex &a = p.vertices[j], &b = p.vertices[i];
+        const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+        if (dy < 0) s.begin = std::max(s.begin, edge_bound_on_row(a, b, row));
+        else if (dy > 0) s.end = std::min(s.end, edge_bound_on_row(a, b, row));
+        else if (dx * (row_centre(row) - a.y) < threshold(dx, dy)) return {0, 0};  // outside a horizontal edge
+    }
+    return s;
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,86 @@
+#include "zbuffer/zbuffer_fill.h"
+
+#include <stdexcept>
+
+namespace hsr::algo {
+
+Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons, ZBufferOptions o) {
+    const bool per_pixel = o.detail == EventDetail::pixel;
+    const int w = o.viewport.width, h = o.viewport.height;
+    // Initialise: every depth at the far plane, every colour the background
+    FrameDepth out{Image(w, h, o.background), {}, {}};
+    const auto far = far_code(o.format, o.range);
+    out.depth.assign(std::size_t(w) * std::size_t(h), std::uint32_t(far));
+    out.polygon.assign(out.depth.size(), -1);
+    co_yield BufferCleared{w, h, far};
+
+    for (std::uint32_t index = 0; index < polygons.size(); ++index) {
+        const ScreenPolygon& p = polygons[index];
+        if (p.status != ScreenStatus::drawn) {
+            co_yield PolygonSkipped{index, p.id, p.status};
+            continue;
+        }
+        co_yield PolygonStarted{index, p.id, p.plane.per_x};
+        std::uint64_t tested = 0, written = 0;
+        // For each scan line the polygon covers: its span, and the depth at the span's first pixel
+        double row_depth = p.plane.at(0, pixel_centre(p.row_begin));  // d at x = 0, stepped by −b/c per row
+        for (int y = p.row_begin; y < p.row_end; ++y, row_depth += p.plane.per_y) {
+            const Span span = span_on_row(p, y, o.viewport);
+            if (span.end <= span.begin) continue;
+            double z = row_depth + p.plane.per_x * pixel_centre(span.begin);
+            if (o.detail != EventDetail::polygon) co_yield SpanStarted{index, y, span.begin, span.end, z};
+            for (int x = span.begin; x < span.end; ++x, z += p.plane.per_x) {
+                if (out.tested == o.max_pixel_tests) {
+                    out.bounded = true;
+                    co_yield FillStepBoundReached{o.max_pixel_tests};
+                    co_return out;
+                }
+                const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                const std::uint64_t incoming = code_of_window_depth(o.format, z, o.range, o.perspective);
+                const std::uint64_t stored = out.depth[k];
+                ++tested, ++out.tested;
+                if (per_pixel) co_yield PixelTested{x, y, z, incoming, stored};
+                // The depth test: nearer than what the buffer holds?
+                if (incoming < stored) {
+                    if (per_pixel) co_yield DepthWritten{x, y, index, out.polygon[k], stored, incoming};
+                    out.depth[k] = std::uint32_t(incoming);
+                    out.polygon[k] = std::int32_t(index);
+                    out.image.ids[k] = std::uint16_t(p.id);
+                    out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g;
+                    out.image.rgb[3 * k + 2] = p.color.b;
+                    ++written, ++out.written;
+                } else if (per_pixel) {
+                    co_yield DepthTestFailed{x, y, incoming, stored};
+                }
+            }
+        }
+        co_yield PolygonFinished{index, tested, written};
+    }
+    co_yield FillFinished{polygons.size(), out.tested, out.written};
+    co_return out;
+}
+
+ZBufferOptions zbuffer_options(const Scene& scene, Viewport viewport, DepthFormat format, EventDetail detail) {
+    return {.viewport = viewport,
+            .format = format,
+            .range = {scene.camera.near, scene.camera.far},
+            .perspective = scene.camera.projection == Projection::perspective,
+            .detail = detail};
+}
+
+FrameDepth z_merge(const FrameDepth& a, const FrameDepth& b) {
+    if (a.image.width != b.image.width || a.image.height != b.image.height)
+        throw std::invalid_argument("z_merge: the two buffers differ in size");
+    FrameDepth c = b;
+    for (std::size_t k = 0; k < c.depth.size(); ++k)
+        if (a.depth[k] < b.depth[k]) {  // a is nearer
+            c.depth[k] = a.depth[k];
+            c.polygon[k] = a.polygon[k];
+            c.image.ids[k] = a.image.ids[k];
+            for (int ch = 0; ch < 3; ++ch) c.image.rgb[3 * k + std::size_t(ch)] = a.image.rgb[3 * k + std::size_t(ch)];
+        }
+    c.tested = a.tested + b.tested, c.written = a.written + b.written;
+    return c;
+}
+
+}  // namespace hsr::algo
