@@ -1,0 +1,55 @@
+// Ray casting, the lecture's RayCasting, for each pixel the nearest intersection over all primitives, in double
+// precision: the reference the other hidden-surface algorithms are checked against.
+//
+//   for each pixel p
+//     nearest = none
+//     for each primitive R (all of them, or those in the cells the ray walks)
+//       I = intersect(ray(p), R)
+//       if I is nearer than nearest: nearest = R at I
+//     p sees nearest
+//
+// Each ray runs from the pixel centre's point on the near plane (t = 0) to its point on the far plane (t = 1), so
+// what it sees is exactly what lies in the view volume. Ties at the same t go to the lower primitive index, so the
+// accelerated walks give the same answer as brute force.
+//   grid    3D DDA (Amanatides–Woo): start in the cell where the ray enters (the eye's, when inside), skip empty
+//           cells, stop in the first cell whose exit lies beyond the nearest hit found.
+//   octree  children front to back; a node starting beyond the nearest hit is not entered.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/image.h"
+#include "core/steps.h"
+#include "raycast/raycast_events.h"
+#include "raycast/spatial.h"
+#include "zbuffer/screen_polygon.h"
+
+namespace hsr::algo {
+
+struct RayCastOptions {
+    Viewport viewport;
+    Acceleration acceleration = Acceleration::none;
+    RayDetail detail = RayDetail::test;
+    int grid_cells = 0;  // per axis; 0 picks from the primitive count
+    OctreeOptions octree;
+    std::uint64_t max_tests = std::uint64_t(1) << 40;  // step bound on primitive tests
+    Color background{26, 28, 33};
+};
+
+struct RayCastResult {
+    Image image;                          // colours and scene ids seen (0 for background)
+    std::vector<std::int32_t> polygon;    // index of the polygon seen per pixel, −1 for none
+    std::vector<double> t;                // the hit's ray parameter, 2 where nothing is hit
+    std::uint64_t tests = 0;
+    bool bounded = false;
+};
+
+// The primitives are the scene's polygons (3 or more vertices, world space); its camera casts the rays.
+// InvalidInput names a polygon with NaN or infinite coordinates.
+Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions options);
+
+// The ray through the centre of pixel (x, y): origin on the near plane, origin + direction on the far plane.
+Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y);
+
+}  // namespace hsr::algo

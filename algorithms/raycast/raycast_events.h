@@ -1,0 +1,83 @@
+// What the ray caster tells as it runs: each ray, the grid cells or octree nodes it walks, each primitive it tests,
+// each nearer hit, and the answer per pixel. t is the ray parameter: 0 on the near plane, 1 on the far plane.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include <glm/vec3.hpp>
+
+#include "scene/scene.h"
+
+namespace hsr::algo {
+
+enum class Acceleration : std::uint8_t { none, grid, octree };
+// How much a cast tells: each ray's answer only, also its cells or nodes, or every primitive test too.
+enum class RayDetail : std::uint8_t { ray, cell, test };
+
+struct RayStarted {
+    static constexpr std::string_view kind = "RayStarted";
+    int x, y;              // the pixel
+    glm::dvec3 origin;     // on the near plane, world space
+    glm::dvec3 direction;  // to the far plane (t = 1), world space
+    bool operator==(const RayStarted&) const = default;
+};
+struct CellEntered {
+    static constexpr std::string_view kind = "CellEntered";
+    glm::ivec3 cell;        // grid indices
+    double t_enter, t_exit;  // where the ray is inside it
+    std::uint32_t primitives;  // how many primitives the cell lists
+    bool operator==(const CellEntered&) const = default;
+};
+struct NodeEntered {
+    static constexpr std::string_view kind = "NodeEntered";
+    std::uint32_t node;      // index into the octree's nodes
+    int depth;               // 0 for the root
+    double t_enter, t_exit;
+    bool leaf;
+    bool operator==(const NodeEntered&) const = default;
+};
+struct PrimitiveTested {
+    static constexpr std::string_view kind = "PrimitiveTested";
+    std::uint32_t index;  // into the scene's polygons
+    SceneId id;
+    bool hit;
+    double t;             // where, when hit
+    bool operator==(const PrimitiveTested&) const = default;
+};
+struct NearerHitFound {
+    static constexpr std::string_view kind = "NearerHitFound";
+    std::uint32_t index;
+    SceneId id;
+    double t;
+    bool operator==(const NearerHitFound&) const = default;
+};
+struct RayFinished {
+    static constexpr std::string_view kind = "RayFinished";
+    int x, y;
+    std::int32_t index;  // the nearest primitive, −1 for none
+    SceneId id;          // its scene id, 0 for background
+    double t;
+    std::uint32_t tests;  // primitives this ray tested
+    bool operator==(const RayFinished&) const = default;
+};
+struct CastFinished {
+    static constexpr std::string_view kind = "CastFinished";
+    std::uint64_t rays, tests;
+    bool operator==(const CastFinished&) const = default;
+};
+struct CastStepBoundReached {
+    static constexpr std::string_view kind = "CastStepBoundReached";
+    std::uint64_t max_tests;
+    bool operator==(const CastStepBoundReached&) const = default;
+};
+
+using RayCastEvent = std::variant<RayStarted, CellEntered, NodeEntered, PrimitiveTested, NearerHitFound, RayFinished,
+                                  CastFinished, CastStepBoundReached>;
+
+std::string describe(const RayCastEvent& e);
+std::string_view to_string(Acceleration a);
+
+}  // namespace hsr::algo

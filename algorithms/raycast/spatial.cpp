@@ -1,0 +1,118 @@
+#include "raycast/spatial.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/common.hpp>
+
+namespace hsr::algo {
+namespace {
+
+Box box_of(const std::vector<Vec3>& polygon, double pad) {
+    Box b{polygon[0], polygon[0]};
+    for (const Vec3& v : polygon) b.lo = glm::min(b.lo, v), b.hi = glm::max(b.hi, v);
+    return {b.lo - pad, b.hi + pad};
+}
+
+bool overlap(const Box& a, const Box& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y && a.lo.z <= b.hi.z &&
+           b.lo.z <= a.hi.z;
+}
+
+double extent(const Box& b) { return std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z}); }
+
+void split(Octree& tree, std::size_t n, const std::vector<Box>& boxes, const OctreeOptions& o) {
+    if (tree.nodes[n].primitives.size() <= o.max_per_leaf || tree.nodes[n].depth >= o.max_depth ||
+        tree.nodes.size() + 8 > o.max_nodes)
+        return;
+    const Box box = tree.nodes[n].box;
+    const Vec3 mid = (box.lo + box.hi) * 0.5;
+    std::vector<OctreeNode> children(8);
+    std::size_t listed = 0;  // primitives over all children, counting each as often as it is listed
+    for (int c = 0; c < 8; ++c) {
+        OctreeNode& child = children[std::size_t(c)];
+        child.depth = tree.nodes[n].depth + 1;
+        child.box.lo = {c & 1 ? mid.x : box.lo.x, c & 2 ? mid.y : box.lo.y, c & 4 ? mid.z : box.lo.z};
+        child.box.hi = {c & 1 ? box.hi.x : mid.x, c & 2 ? box.hi.y : mid.y, c & 4 ? box.hi.z : mid.z};
+        for (std::uint32_t p : tree.nodes[n].primitives)
+            if (overlap(boxes[p], child.box)) child.primitives.push_back(p);
+        listed += child.primitives.size();
+    }
+    // Big primitives listed in most children would multiply, not separate: stay a leaf
+    if (listed > 3 * tree.nodes[n].primitives.size()) return;
+    const auto first = std::int32_t(tree.nodes.size());
+    tree.nodes[n].first_child = first;
+    tree.nodes[n].primitives.clear();
+    for (auto& child : children) tree.nodes.push_back(std::move(child));
+    for (int c = 0; c < 8; ++c) split(tree, std::size_t(first + c), boxes, o);
+}
+
+}  // namespace
+
+Box bounds_of(const std::vector<std::vector<Vec3>>& polygons) {
+    if (polygons.empty()) return {Vec3(-1), Vec3(1)};
+    Box b = box_of(polygons[0], 0);
+    for (const auto& p : polygons) {
+        const Box q = box_of(p, 0);
+        b.lo = glm::min(b.lo, q.lo), b.hi = glm::max(b.hi, q.hi);
+    }
+    // Never flat along an axis (a scene in one plane still has cells of some thickness)
+    const double size = std::max(extent(b), 1e-6), pad = 1e-6 * size;
+    for (int a = 0; a < 3; ++a) b.lo[a] -= pad, b.hi[a] += pad;
+    return b;
+}
+
+std::optional<Interval> ray_box(const Ray& ray, const Box& box, double t0, double t1) {
+    for (int a = 0; a < 3; ++a) {
+        const double o = ray.origin[a], d = ray.direction[a];
+        if (d == 0) {  // parallel to this slab: inside it or never
+            if (o < box.lo[a] || o > box.hi[a]) return std::nullopt;
+            continue;
+        }
+        double near = (box.lo[a] - o) / d, far = (box.hi[a] - o) / d;
+        if (near > far) std::swap(near, far);
+        t0 = std::max(t0, near), t1 = std::min(t1, far);
+        if (t0 > t1) return std::nullopt;
+    }
+    return Interval{t0, t1};
+}
+
+Grid build_grid(const std::vector<std::vector<Vec3>>& polygons, int per_axis) {
+    Grid g;
+    g.box = bounds_of(polygons);
+    if (per_axis <= 0) per_axis = std::clamp(int(std::lround(2 * std::cbrt(double(polygons.size())))), 1, 64);
+    g.cells = glm::ivec3(per_axis);
+    g.size = (g.box.hi - g.box.lo) / Vec3(g.cells);
+    g.lists.resize(std::size_t(per_axis) * std::size_t(per_axis) * std::size_t(per_axis));
+    const double pad = 1e-9 * extent(g.box);
+    for (std::uint32_t p = 0; p < polygons.size(); ++p) {
+        const Box b = box_of(polygons[p], pad);
+        glm::ivec3 lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::clamp(int(std::floor((b.lo[a] - g.box.lo[a]) / g.size[a])), 0, g.cells[a] - 1);
+            hi[a] = std::clamp(int(std::floor((b.hi[a] - g.box.lo[a]) / g.size[a])), 0, g.cells[a] - 1);
+        }
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x)
+                    g.lists[std::size_t((z * g.cells.y + y) * g.cells.x + x)].push_back(p);
+    }
+    return g;
+}
+
+Octree build_octree(const std::vector<std::vector<Vec3>>& polygons, OctreeOptions options) {
+    Octree tree;
+    OctreeNode root{bounds_of(polygons), 0, -1, {}};
+    const double pad = 1e-9 * extent(root.box);
+    std::vector<Box> boxes;
+    for (std::uint32_t p = 0; p < polygons.size(); ++p) {
+        boxes.push_back(box_of(polygons[p], pad));
+        root.primitives.push_back(p);
+    }
+    tree.nodes.push_back(std::move(root));
+    split(tree, 0, boxes, options);
+    return tree;
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,56 @@
+// The lectures' spatial subdivision for ray casting: a regular grid walked cell by cell (3D DDA) and an octree.
+// Both list, for each cell or leaf, the primitives whose bounding box (padded by 1e-9 of the scene's extent, so
+// that a hit on a cell face is listed on both sides) overlaps it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/plane.h"
+#include "raycast/nearest_hit.h"
+
+namespace hsr::algo {
+
+struct Box {
+    Vec3 lo{0}, hi{0};
+};
+Box bounds_of(const std::vector<std::vector<Vec3>>& polygons);  // padded, never flat along an axis
+
+// Where the ray is inside the box, within [t0, t1]; axis-parallel rays divide by nothing.
+struct Interval {
+    double enter, exit;
+};
+std::optional<Interval> ray_box(const Ray& ray, const Box& box, double t0, double t1);
+
+struct Grid {
+    Box box;
+    glm::ivec3 cells{1};  // per axis
+    Vec3 size{1};         // of one cell, world units
+    std::vector<std::vector<std::uint32_t>> lists;  // primitive indices per cell, x fastest
+    const std::vector<std::uint32_t>& at(glm::ivec3 c) const {
+        return lists[std::size_t((c.z * cells.y + c.y) * cells.x + c.x)];
+    }
+};
+// per_axis = 0 picks about 2·∛n cells per axis (at most 64).
+Grid build_grid(const std::vector<std::vector<Vec3>>& polygons, int per_axis = 0);
+
+struct OctreeNode {
+    Box box;
+    int depth = 0;
+    std::int32_t first_child = -1;  // the 8 children are nodes first_child … first_child + 7; −1 for a leaf
+    std::vector<std::uint32_t> primitives;  // leaves only
+};
+struct Octree {
+    std::vector<OctreeNode> nodes;  // nodes[0] is the root
+};
+struct OctreeOptions {
+    std::size_t max_per_leaf = 8;  // split a node holding more
+    int max_depth = 8;
+    std::size_t max_nodes = 1 << 20;
+};
+Octree build_octree(const std::vector<std::vector<Vec3>>& polygons, OctreeOptions options = {});
+
+}  // namespace hsr::algo
