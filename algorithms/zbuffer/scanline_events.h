@@ -1,0 +1,69 @@
+// What the scan-line algorithm tells: the edge table, each scan line, edges entering and leaving the active edge
+// table, each edge crossed on the line (the polygon's in/out flag flips), and the spans coloured.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "scene/scene.h"
+
+namespace hsr::algo {
+
+struct EdgeTableBuilt {
+    static constexpr std::string_view kind = "EdgeTableBuilt";
+    std::uint32_t edges, polygons;  // non-horizontal edges; polygons with area on the screen
+    bool operator==(const EdgeTableBuilt&) const = default;
+};
+struct ScanLineStarted {
+    static constexpr std::string_view kind = "ScanLineStarted";
+    int y;
+    bool operator==(const ScanLineStarted&) const = default;
+};
+struct EdgeEntered {
+    static constexpr std::string_view kind = "EdgeEntered";
+    std::uint32_t edge, polygon;  // into the edge table; into the polygons
+    int y;
+    double x;  // where it crosses the line's centre, pixels
+    bool operator==(const EdgeEntered&) const = default;
+};
+struct EdgeLeft {
+    static constexpr std::string_view kind = "EdgeLeft";
+    std::uint32_t edge, polygon;
+    int y;
+    bool operator==(const EdgeLeft&) const = default;
+};
+struct EdgeCrossed {
+    static constexpr std::string_view kind = "EdgeCrossed";
+    std::uint32_t edge, polygon;
+    int y;
+    double x;
+    bool entering;  // the polygon's in/out flag after the crossing
+    bool operator==(const EdgeCrossed&) const = default;
+};
+struct SpanColored {
+    static constexpr std::string_view kind = "SpanColored";
+    int y, x_begin, x_end;   // pixels [x_begin, x_end) of line y
+    std::int32_t polygon;    // the one the line's z-buffer kept there, −1 for background
+    SceneId id;
+    bool operator==(const SpanColored&) const = default;
+};
+struct ScanFinished {
+    static constexpr std::string_view kind = "ScanFinished";
+    std::uint32_t lines;
+    std::uint64_t spans;
+    bool operator==(const ScanFinished&) const = default;
+};
+struct ScanStepBoundReached {
+    static constexpr std::string_view kind = "ScanStepBoundReached";
+    std::uint64_t max_crossings;
+    bool operator==(const ScanStepBoundReached&) const = default;
+};
+
+using ScanLineEvent = std::variant<EdgeTableBuilt, ScanLineStarted, EdgeEntered, EdgeLeft, EdgeCrossed, SpanColored,
+                                   ScanFinished, ScanStepBoundReached>;
+
+std::string describe(const ScanLineEvent& e);
+
+}  // namespace hsr::algo
