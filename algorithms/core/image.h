@@ -1,7 +1,7 @@
 // An image of colours and of visible primitive ids (0 is background), and the painter's fill: a polygon painted
 // over whatever is there, as the hidden-surface algorithms that produce an order (BSP, depth sort) draw.
-// A pixel is covered when its centre is inside the polygon's projection (after clipping in homogeneous clip space,
-// so polygons reaching behind the eye are cut, not wrapped).
+// Pixels are covered as the z-buffer covers them (core/screen_polygon.h: clipped in homogeneous clip space first,
+// pixel centres, top-left rule), so a painter's image and a z-buffer image of the same scene agree pixel for pixel.
 #pragma once
 
 #include <cstdint>

@@ -23,7 +23,7 @@
 #include "core/steps.h"
 #include "raycast/raycast_events.h"
 #include "raycast/spatial.h"
-#include "zbuffer/screen_polygon.h"
+#include "core/screen_polygon.h"
 
 namespace hsr::algo {
 

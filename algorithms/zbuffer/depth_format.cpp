@@ -42,6 +42,18 @@ std::string_view to_string(DepthFormat f) {
     return "?";
 }
 
+std::string_view format_id(DepthFormat f) {
+    switch (f) {
+        case DepthFormat::int16: return "int16";
+        case DepthFormat::int24: return "int24";
+        case DepthFormat::int32: return "int32";
+        case DepthFormat::float32: return "float32";
+        case DepthFormat::float32_reversed: return "float32-reversed";
+        case DepthFormat::linear24: return "linear24";
+    }
+    return "?";
+}
+
 double window_depth(double z, DepthRange r) {
     const double a = r.far / (r.far - r.near), b = r.far * r.near / (r.near - r.far);
     return a + b / z;

@@ -22,6 +22,7 @@ struct DepthRange {
 
 bool smaller_is_nearer(DepthFormat f);
 std::string_view to_string(DepthFormat f);
+std::string_view format_id(DepthFormat f);  // as the command line and lessons name it: int16, …, float32-reversed, linear24
 
 // d = a + b/z, in [0, 1] for z in [near, far].
 double window_depth(double z, DepthRange r);

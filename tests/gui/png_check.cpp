@@ -31,7 +31,25 @@ int check_ids(int argc, char** argv) {
     return seen == want ? 0 : 1;
 }
 
+// png_check --same-ids A B MAX: two 16-bit id images of one size differ in at most MAX pixels
+int same_ids(char** argv) {
+    int wa = 0, ha = 0, na = 0, wb = 0, hb = 0, nb = 0;
+    stbi_us* a = stbi_load_16(argv[2], &wa, &ha, &na, 1);
+    stbi_us* b = stbi_load_16(argv[3], &wb, &hb, &nb, 1);
+    if (!a || !b || wa != wb || ha != hb) {
+        std::fprintf(stderr, "png_check: %s and %s cannot be compared\n", argv[2], argv[3]);
+        return 1;
+    }
+    long differ = 0;
+    for (long k = 0; k < long(wa) * ha; ++k) differ += a[k] != b[k];
+    stbi_image_free(a);
+    stbi_image_free(b);
+    std::printf("png_check: %s and %s differ in %ld of %d pixels\n", argv[2], argv[3], differ, wa * ha);
+    return differ <= std::atol(argv[4]) ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
+    if (argc == 5 && std::string(argv[1]) == "--same-ids") return same_ids(argv);
     if (argc >= 5 && std::string(argv[1]) == "--ids") return check_ids(argc, argv);
     if (argc != 4) {
         std::fprintf(stderr, "usage: png_check FILE WIDTH HEIGHT\n");

@@ -2,21 +2,105 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
+#include <map>
+#include <stdexcept>
 
 #include "bsp/bsp_tree.h"
 #include "cli/png_io.h"
 #include "core/image.h"
+#include "raycast/ray_cast.h"
 #include "scene/load_scene.h"
+#include "zbuffer/scanline.h"
+#include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::viz {
 namespace {
 
-std::optional<algo::SplitterRule> splitter_named(const std::string& s) {
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+algo::SplitterRule splitter_named(const std::string& s) {
     if (s == "first") return algo::SplitterRule::first;
     if (s == "balanced") return algo::SplitterRule::balanced;
     if (s == "fewest-splits") return algo::SplitterRule::fewest_splits;
     if (s == "weighted") return algo::SplitterRule::weighted;
-    return std::nullopt;
+    throw std::runtime_error("unknown splitter \"" + s + "\"; expected first, balanced, fewest-splits or weighted");
+}
+
+algo::DepthFormat format_named(const std::string& s) {
+    using F = algo::DepthFormat;
+    for (F f : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24})
+        if (s == format_id(f)) return f;
+    throw std::runtime_error("unknown depth format \"" + s + "\"; expected int16, int24, int32, float32, float32-reversed or linear24");
+}
+
+algo::Acceleration acceleration_named(const std::string& s) {
+    if (s == "none") return algo::Acceleration::none;
+    if (s == "grid") return algo::Acceleration::grid;
+    if (s == "octree") return algo::Acceleration::octree;
+    throw std::runtime_error("unknown acceleration \"" + s + "\"; expected none, grid or octree");
+}
+
+algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    std::vector<algo::BspInput> inputs;
+    for (const auto& p : scene.polygons) {
+        algo::BspInput in{p.id, {}};
+        for (const auto& v : p.vertices) in.vertices.emplace_back(v);
+        inputs.push_back(std::move(in));
+    }
+    const auto start = Clock::now();
+    const algo::BspTree tree = algo::build_bsp(std::move(inputs), {.splitter = splitter_named(o.splitter)}).run_to_end();
+    const double build_ms = ms_since(start);
+    const auto order = algo::traverse_bsp(&tree, scene.camera.eye).run_to_end();
+    algo::Image image(vp.width, vp.height, {26, 28, 33});
+    const glm::dmat4 view_projection = algo::view_projection(scene.camera);
+    for (algo::BspPolygonId p : order) {  // the painter's order: back to front
+        const algo::BspPolygon& poly = tree.polygons[std::size_t(p)];
+        algo::Color color{200, 200, 200};
+        for (const auto& sp : scene.polygons)
+            if (sp.id == poly.source) color = sp.color;
+        algo::paint_polygon(image, view_projection, poly.vertices, std::uint16_t(poly.source), color);
+    }
+    std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
+                o.splitter.c_str(), scene.polygons.size(), tree.polygons.size(), tree.splits, tree.nodes.size(),
+                tree.depth, build_ms);
+    return image;
+}
+
+algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    const algo::DepthFormat format = format_named(o.format);
+    const auto start = Clock::now();
+    algo::FrameDepth f =
+        algo::zbuffer_fill(algo::project_polygons(scene, vp), algo::zbuffer_options(scene, vp, format, algo::EventDetail::polygon))
+            .run_to_end();
+    std::printf("zbuffer (%s): %zu polygons, %llu depth tests, %llu writes in %.3f ms\n", std::string(to_string(format)).c_str(),
+                scene.polygons.size(), (unsigned long long)f.tested, (unsigned long long)f.written, ms_since(start));
+    return std::move(f.image);
+}
+
+algo::Image render_scanline(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    const algo::DepthFormat format = format_named(o.format);
+    const auto start = Clock::now();
+    algo::ScanLineOptions options = algo::scan_line_options(scene, vp, format);
+    options.tell_crossings = false;
+    auto machine = algo::scan_line(algo::project_polygons(scene, vp), options);
+    std::uint64_t spans = 0;
+    for (const auto& e : machine) spans += std::holds_alternative<algo::SpanColored>(e);
+    algo::FrameDepth f = std::move(machine).result();
+    std::printf("scanline (%s): %zu polygons, %llu spans in %.3f ms\n", std::string(to_string(format)).c_str(),
+                scene.polygons.size(), (unsigned long long)spans, ms_since(start));
+    return std::move(f.image);
+}
+
+algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    const algo::Acceleration a = acceleration_named(o.acceleration);
+    const auto start = Clock::now();
+    algo::RayCastResult r =
+        algo::ray_cast(scene, {.viewport = vp, .acceleration = a, .detail = algo::RayDetail::ray}).run_to_end();
+    std::printf("raycast (%s): %zu polygons, %llu primitive tests in %.3f ms\n", std::string(to_string(a)).c_str(),
+                scene.polygons.size(), (unsigned long long)r.tests, ms_since(start));
+    return std::move(r.image);
 }
 
 }  // namespace
@@ -26,10 +110,6 @@ int run_render(const RenderOptions& o) {
         algo::Scene scene = algo::load_scene(o.scene);
         if (scene.coordinates != algo::Coordinates::world)
             throw std::runtime_error(o.scene + ": render needs world coordinates");
-        if (o.algorithm != "bsp")
-            throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected: bsp");
-        const auto rule = splitter_named(o.splitter);
-        if (!rule) throw std::runtime_error("unknown splitter \"" + o.splitter + "\"; expected first, balanced, fewest-splits or weighted");
         int w = 0, h = 0;
         if (std::sscanf(o.size.c_str(), "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
             throw std::runtime_error("--size: expected WxH from 1x1 to 16384x16384, got " + o.size);
@@ -40,32 +120,21 @@ int run_render(const RenderOptions& o) {
             scene.camera.eye = e;
         }
         scene.camera.aspect = double(w) / double(h);
+        if (o.ids)
+            for (const auto& p : scene.polygons)
+                if (p.id < 1 || p.id > 65535)
+                    throw std::runtime_error(o.scene + ": polygon id " + std::to_string(p.id) +
+                                             " does not fit the 16-bit id image (ids 1 to 65535)");
 
-        std::vector<algo::BspInput> inputs;
-        for (const auto& p : scene.polygons) {
-            algo::BspInput in{p.id, {}};
-            for (const auto& v : p.vertices) in.vertices.emplace_back(v);
-            inputs.push_back(std::move(in));
-        }
-        const auto start = std::chrono::steady_clock::now();
-        const algo::BspTree tree = algo::build_bsp(std::move(inputs), {.splitter = *rule}).run_to_end();
-        const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const auto order = algo::traverse_bsp(&tree, scene.camera.eye).run_to_end();
-
-        algo::Image image(w, h, {26, 28, 33});
-        const glm::dmat4 vp = algo::view_projection(scene.camera);
-        for (algo::BspPolygonId p : order) {  // the painter's order: back to front
-            const algo::BspPolygon& poly = tree.polygons[std::size_t(p)];
-            algo::Color color{200, 200, 200};
-            for (const auto& sp : scene.polygons)
-                if (sp.id == poly.source) color = sp.color;
-            algo::paint_polygon(image, vp, poly.vertices, std::uint16_t(poly.source), color);
-        }
+        const std::map<std::string, std::function<algo::Image(const algo::Scene&, const RenderOptions&, algo::Viewport)>>
+            renderers{{"bsp", render_bsp}, {"zbuffer", render_zbuffer}, {"scanline", render_scanline}, {"raycast", render_raycast}};
+        const auto renderer = renderers.find(o.algorithm);
+        if (renderer == renderers.end())
+            throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected bsp, zbuffer, scanline or raycast");
+        const algo::Image image = renderer->second(scene, o, {w, h});
         if (!write_rgb_png(o.out, image)) throw std::runtime_error("cannot write " + o.out);
         if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + *o.ids);
-        std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms; wrote %s%s%s\n",
-                    o.splitter.c_str(), scene.polygons.size(), tree.polygons.size(), tree.splits, tree.nodes.size(),
-                    tree.depth, build_ms, o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
+        std::printf("wrote %s%s%s\n", o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
         return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hsrviz: %s\n", e.what());

@@ -1,4 +1,4 @@
-// hsrviz render SCENE --algorithm bsp [--splitter RULE] [--eye X,Y,Z] [--size WxH] --out IMAGE.png [--ids IDS.png]
+// hsrviz render SCENE --algorithm bsp|zbuffer|raycast|scanline [options] --out IMAGE.png [--ids IDS.png]
 // Renders a scene's polygons headless with a hidden-surface algorithm and writes the colour image and, with --ids,
 // the visible primitive id of every pixel (16-bit grey PNG, 0 for background, ids as the scene numbers them).
 #pragma once
@@ -11,7 +11,9 @@ namespace hsr::viz {
 struct RenderOptions {
     std::string scene;
     std::string algorithm = "bsp";
-    std::string splitter = "first";
+    std::string splitter = "first";       // bsp
+    std::string format = "int24";         // zbuffer and scanline: the depth format
+    std::string acceleration = "grid";    // raycast: none, grid or octree
     std::optional<std::string> eye;  // "x,y,z": replaces the scene camera's eye (the target stays)
     std::string size = "512x512";
     std::string out;

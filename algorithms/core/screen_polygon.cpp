@@ -1,4 +1,4 @@
-#include "zbuffer/screen_polygon.h"
+#include "core/screen_polygon.h"
 
 #include <algorithm>
 #include <cmath>
