@@ -23,6 +23,7 @@ constexpr std::array registry = {
                   int(BackfaceTest::plane_equation)},
     AlgorithmInfo{"backface_screen_winding", "Back-face culling: the winding on screen", 2, Family::backface,
                   int(BackfaceTest::screen_winding)},
+    AlgorithmInfo{"zbuffer_fill", "Z-buffer fill", 2, Family::zbuffer, 0},
 };
 
 }  // namespace

@@ -29,7 +29,7 @@ std::string describe(const ZBufferEvent& event, DepthFormat format) {
                        " pixels take the background colour and the far depth (code " + num(e.far_code) + ", " +
                        std::string(to_string(format)) + ").";
             },
-            [](const PolygonStarted& e) {
+            [](const PolygonFillStarted& e) {
                 return "Polygon " + std::to_string(e.id) + ": its depth changes by −a/c = " + format_number(e.per_x) +
                        " per pixel along x.";
             },
@@ -53,7 +53,7 @@ std::string describe(const ZBufferEvent& event, DepthFormat format) {
                 return "Farther or equal: pixel " + at(e.x, e.y) + " keeps what it has (" + num(e.incoming) +
                        " is not nearer than " + num(e.stored) + "; " + nearer + " stored values are nearer).";
             },
-            [](const PolygonFinished& e) {
+            [](const PolygonFillFinished& e) {
                 return "Polygon done: " + num(e.tested) + " pixels tested, " + num(e.written) + " written.";
             },
             [](const FillFinished& e) {

@@ -22,12 +22,12 @@ struct BufferCleared {
     std::uint64_t far_code;  // every depth starts here; every colour is the background
     bool operator==(const BufferCleared&) const = default;
 };
-struct PolygonStarted {
-    static constexpr std::string_view kind = "PolygonStarted";
+struct PolygonFillStarted {
+    static constexpr std::string_view kind = "PolygonFillStarted";
     std::uint32_t index;  // into the projected polygons
     SceneId id;
     double per_x;  // −a/c: the forward difference of depth along x
-    bool operator==(const PolygonStarted&) const = default;
+    bool operator==(const PolygonFillStarted&) const = default;
 };
 struct PolygonSkipped {
     static constexpr std::string_view kind = "PolygonSkipped";
@@ -65,11 +65,11 @@ struct DepthTestFailed {
     std::uint64_t incoming, stored;
     bool operator==(const DepthTestFailed&) const = default;
 };
-struct PolygonFinished {
-    static constexpr std::string_view kind = "PolygonFinished";
+struct PolygonFillFinished {
+    static constexpr std::string_view kind = "PolygonFillFinished";
     std::uint32_t index;
     std::uint64_t tested, written;
-    bool operator==(const PolygonFinished&) const = default;
+    bool operator==(const PolygonFillFinished&) const = default;
 };
 struct FillFinished {
     static constexpr std::string_view kind = "FillFinished";
@@ -82,8 +82,8 @@ struct FillStepBoundReached {
     bool operator==(const FillStepBoundReached&) const = default;
 };
 
-using ZBufferEvent = std::variant<BufferCleared, PolygonStarted, PolygonSkipped, SpanStarted, PixelTested,
-                                  DepthWritten, DepthTestFailed, PolygonFinished, FillFinished, FillStepBoundReached>;
+using ZBufferEvent = std::variant<BufferCleared, PolygonFillStarted, PolygonSkipped, SpanStarted, PixelTested,
+                                  DepthWritten, DepthTestFailed, PolygonFillFinished, FillFinished, FillStepBoundReached>;
 
 // One sentence with the live numbers; `format` says how to read the codes.
 std::string describe(const ZBufferEvent& e, DepthFormat format);

@@ -20,7 +20,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
             co_yield PolygonSkipped{index, p.id, p.status};
             continue;
         }
-        co_yield PolygonStarted{index, p.id, p.plane.per_x};
+        co_yield PolygonFillStarted{index, p.id, p.plane.per_x};
         std::uint64_t tested = 0, written = 0;
         // For each scan line the polygon covers: its span, and the depth at the span's first pixel
         double row_depth = p.plane.at(0, pixel_centre(p.row_begin));  // d at x = 0, stepped by −b/c per row
@@ -54,7 +54,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                 }
             }
         }
-        co_yield PolygonFinished{index, tested, written};
+        co_yield PolygonFillFinished{index, tested, written};
     }
     co_yield FillFinished{polygons.size(), out.tested, out.written};
     co_return out;

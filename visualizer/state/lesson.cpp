@@ -1,5 +1,6 @@
 #include "state/lesson.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -38,7 +39,7 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid"});
     lesson.title = r.text(root, "title", "");
     lesson.summary = r.text(root, "summary", "", "");
     lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);
@@ -50,6 +51,19 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
     if (lesson.splitter != "first" && lesson.splitter != "balanced" && lesson.splitter != "fewest-splits" &&
         lesson.splitter != "weighted")
         r.fail(root.get("splitter"), "splitter", "expected first, balanced, fewest-splits or weighted");
+    const std::string format = r.text(root, "format", "", "int24");
+    bool known_format = false;
+    for (auto f : {algo::DepthFormat::int16, algo::DepthFormat::int24, algo::DepthFormat::int32, algo::DepthFormat::float32,
+                   algo::DepthFormat::float32_reversed, algo::DepthFormat::linear24})
+        if (format == algo::format_id(f)) lesson.depth_format = f, known_format = true;
+    if (!known_format)
+        r.fail(root.get("format"), "format", "expected int16, int24, int32, float32, float32-reversed or linear24");
+    if (root.contains("grid")) {
+        const glm::dvec4 g = r.vector(*root.get("grid"), "grid", 2, 2);
+        if (g.x < 1 || g.y < 1 || g.x > 256 || g.y > 256 || g.x != std::floor(g.x) || g.y != std::floor(g.y))
+            r.fail(root.get("grid"), "grid", "expected [width, height], whole numbers from 1 to 256");
+        lesson.grid = {int(g.x), int(g.y)};
+    }
     const std::string scene = r.text(root, "scene", "");
     const auto scene_path = std::filesystem::path(path).parent_path() / scene;
     if (!std::filesystem::exists(scene_path))

@@ -7,6 +7,8 @@
 //   prerequisites = []                       # lesson file names
 //   summary = "…"
 //   splitter = "balanced"                  # BSP lessons only
+//   format = "int16"                       # z-buffer lessons: the depth format (depth_format.h's format_id)
+//   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
 //
 // A scene file given where a lesson is expected plays as a lesson of its own, with the algorithm the caller names
 // (or the one that fits its geometry: Sutherland–Hodgman for polygons, Cohen–Sutherland otherwise).
@@ -17,7 +19,9 @@
 #include <vector>
 
 #include "registry.h"
+#include "core/screen_polygon.h"
 #include "scene/scene.h"
+#include "zbuffer/depth_format.h"
 
 namespace hsr::viz {
 
@@ -29,6 +33,8 @@ struct Lesson {
     int difficulty = 1;
     std::vector<std::string> prerequisites;
     std::string splitter = "first";  // BSP lessons: first, balanced, fewest-splits or weighted
+    algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
+    algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     algo::Scene scene;
 };
 

@@ -7,6 +7,7 @@
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
 #include "culling/backface.h"
+#include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
 
 namespace glm {
@@ -49,6 +50,20 @@ HSR_TO_JSON(EdgeClassified, plane, edge_case, closes, from, bc_from, bc_to, inte
 HSR_TO_JSON(StageFinished, plane, output_vertices)
 HSR_TO_JSON(PolygonFinished, id, outcome, vertices)
 HSR_TO_JSON(StepBoundReached, bound, limit)
+
+inline void to_json(nlohmann::json& j, ScreenStatus s) {
+    j = s == ScreenStatus::drawn ? "drawn" : s == ScreenStatus::outside_view ? "outside view" : "zero area";
+}
+HSR_TO_JSON(BufferCleared, width, height, far_code)
+HSR_TO_JSON(PolygonFillStarted, index, id, per_x)
+HSR_TO_JSON(PolygonSkipped, index, id, why)
+HSR_TO_JSON(SpanStarted, index, y, x_begin, x_end, depth)
+HSR_TO_JSON(PixelTested, x, y, depth, incoming, stored)
+HSR_TO_JSON(DepthWritten, x, y, index, old_index, old_code, new_code)
+HSR_TO_JSON(DepthTestFailed, x, y, incoming, stored)
+HSR_TO_JSON(PolygonFillFinished, index, tested, written)
+HSR_TO_JSON(FillFinished, polygons, tested, written)
+HSR_TO_JSON(FillStepBoundReached, max_pixel_tests)
 
 inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
 inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
@@ -116,6 +131,9 @@ std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::s
 std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 
 void hash_line(TraceSummary& t, const std::string& line) {
     auto mix = [&](unsigned char c) {
@@ -159,6 +177,13 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             auto machine = algo::cull_back_faces(algo::faces_of(lesson.scene), lesson.scene.camera,
                                                  algo::BackfaceTest(lesson.algorithm.variant));
             return write_trace(machine, [](const algo::CullEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::zbuffer: {
+            algo::Scene scene = lesson.scene;
+            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            auto machine = algo::zbuffer_fill(algo::project_polygons(scene, lesson.grid),
+                                              algo::zbuffer_options(scene, lesson.grid, lesson.depth_format));
+            return write_trace(machine, [&](const algo::ZBufferEvent& e) { return algo::describe(e, lesson.depth_format); }, out);
         }
     }
     return {};
