@@ -21,6 +21,7 @@
 #include "panels/bsp_panels.h"
 #include "panels/clip_panels.h"
 #include "panels/cull_panels.h"
+#include "panels/zbuffer_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
@@ -34,6 +35,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/zbuffer_session.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -87,6 +89,10 @@ struct Lessonplay {
         if (!session) return;
         if (a.move_eye)
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
+        if (auto* zb = dynamic_cast<ZBufferSession*>(session.get())) {
+            if (a.depth_format) zb->set_format(*a.depth_format);
+            if (a.depth_range) zb->set_range(*a.depth_range);
+        }
         Session& p = *session;
         const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
                               a.to_start || a.to_end || a.seek || playback.playing;
@@ -198,6 +204,10 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* clip = dynamic_cast<const ClipSession*>(&s);
     const auto* bsp = dynamic_cast<const BspSession*>(&s);
     const auto* cull = dynamic_cast<const CullSession*>(&s);
+    const auto* zb = dynamic_cast<const ZBufferSession*>(&s);
+    if (zb)
+        detail = std::to_string(zb->lesson().grid.width) + "×" + std::to_string(zb->lesson().grid.height) +
+                 " pixels · " + std::string(algo::to_string(zb->format())) + " · top-left rule";
     if (cull) {
         draw_cull_view(cull->view(), s.lesson().scene, r.batches, r.labels);
         detail = std::string(algo::to_string(cull->view().test)) + " test · eye at the scene camera";
@@ -224,11 +234,13 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     glViewport(0, 0, px(layout.width), px(layout.height));
 
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
+    if (zb) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
     if (bsp) bsp_state_panel(*bsp, layout);
     if (cull) cull_state_panel(*cull, layout);
+    if (zb) zbuffer_state_panel(*zb, layout, actions);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "zbuffer/depth_format.h"
+
 namespace hsr::viz {
 
 struct UiActions {
@@ -18,6 +20,8 @@ struct UiActions {
     std::optional<float> speed;  // steps per second while playing
     bool reload = false;
     std::optional<glm::dvec3> move_eye;  // the eye dragged to here (world space)
+    std::optional<algo::DepthFormat> depth_format;  // z-buffer lessons: rerun with this format
+    std::optional<algo::DepthRange> depth_range;    // z-buffer lessons: rerun with this near and far
 };
 
 struct PlaybackState {

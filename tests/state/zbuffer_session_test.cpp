@@ -1,0 +1,84 @@
+// Z-buffer lessons: the view folds to the machine's buffers, seeking equals folding, and changing the format or
+// near and far reruns the fill and moves the z-fighting the lesson is about.
+#include <filesystem>
+#include <fstream>
+
+#include "catch.h"
+#include "state/zbuffer_session.h"
+
+using namespace hsr::viz;
+using namespace hsr::algo;
+
+namespace {
+
+std::unique_ptr<ZBufferSession> open(const char* lesson) {
+    return std::make_unique<ZBufferSession>(load_lesson(HSR_SOURCE_DIR "/lessons/" + std::string(lesson)));
+}
+
+}  // namespace
+
+TEST_CASE("the z-buffer view folded to the end holds the fill's frame and depth buffers", "[state][zbuffer]") {
+    auto s = open("07_zbuffer_fill.toml");
+    s->seek_end();
+    Scene scene = s->lesson().scene;
+    const Viewport grid = s->lesson().grid;
+    scene.camera.aspect = double(grid.width) / grid.height;
+    const FrameDepth f = zbuffer_fill(project_polygons(scene, grid), zbuffer_options(scene, grid, s->format())).run_to_end();
+    CHECK(s->view().owner == f.polygon);
+    CHECK(std::vector<std::uint32_t>(s->view().depth.begin(), s->view().depth.end()) == f.depth);
+    CHECK(s->view().done);
+    CHECK(s->view().written == f.written);
+    std::size_t covered = 0;
+    for (auto o : f.polygon) covered += o >= 0;
+    CHECK(covered > 100);  // all three triangles show
+    CHECK(s->pixels_unlike_ray_cast() < 10);  // only edge pixels, no z-fighting at 24 bits
+}
+
+TEST_CASE("seeking any step of a z-buffer lesson equals folding its events from the start", "[state][zbuffer]") {
+    auto s = open("07_zbuffer_fill.toml");
+    s->seek_end();
+    const std::size_t n = s->cursor();
+    auto fresh = open("07_zbuffer_fill.toml");
+    for (std::size_t k = 0; k <= n; k += 37) {
+        s->seek(k);
+        fresh->seek(0);
+        for (std::size_t i = 0; i < k; ++i) fresh->micro_step();
+        INFO("step " << k);
+        REQUIRE(s->view().owner == fresh->view().owner);
+        REQUIRE(s->view().depth == fresh->view().depth);
+        REQUIRE(s->view().pixel_x == fresh->view().pixel_x);
+        REQUIRE(s->view().span_y == fresh->view().span_y);
+    }
+}
+
+TEST_CASE("z-fighting comes and goes with the depth format and near", "[state][zbuffer][z-fighting]") {
+    auto s = open("08_depth_precision.toml");
+    REQUIRE(s->format() == DepthFormat::int16);
+    const std::size_t fighting = s->pixels_unlike_ray_cast();
+    CHECK(fighting > 50);  // the far square shows through in stripes
+    s->seek(500);
+    s->set_format(DepthFormat::int24);
+    CHECK(s->cursor() == 500);  // the rerun keeps the step
+    CHECK(s->pixels_unlike_ray_cast() < 5);
+    s->set_format(DepthFormat::int16);
+    s->set_range({5, 500});  // move near out: the codes spread over the far distances
+    CHECK(s->pixels_unlike_ray_cast() < 5);
+    s->set_range({0.05, 500});  // move it in: the squares share every code
+    CHECK(s->pixels_unlike_ray_cast() > fighting);
+    s->set_range({10, 1});  // not a range: ignored
+    CHECK(s->range().near == 0.05);
+}
+
+TEST_CASE("a z-buffer lesson with a bad format or grid names the field and line", "[lesson][errors][zbuffer]") {
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_zbuffer_lesson_test";
+    std::filesystem::create_directories(dir);
+    const std::string scene = HSR_SOURCE_DIR "/assets/scenes/zbuffer_triangles.toml";
+    const auto write = [&](const char* name, const std::string& extra) {
+        const auto p = dir / name;
+        std::ofstream(p) << "title = \"t\"\nalgorithm = \"zbuffer_fill\"\nscene = \"" << scene << "\"\n" << extra;
+        return p.string();
+    };
+    CHECK_THROWS_WITH(load_lesson(write("f.toml", "format = \"int8\"\n")), Catch::Contains("f.toml:4:") && Catch::Contains("'format'"));
+    CHECK_THROWS_WITH(load_lesson(write("g.toml", "grid = [0, 24]\n")), Catch::Contains("g.toml:4:") && Catch::Contains("'grid'"));
+    CHECK_THROWS_WITH(load_lesson(write("h.toml", "grid = [32]\n")), Catch::Contains("h.toml:4:") && Catch::Contains("grid"));
+}

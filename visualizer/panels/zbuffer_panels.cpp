@@ -1,0 +1,166 @@
+#include "panels/zbuffer_panels.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "core/events.h"
+#include "panels/panel_style.h"
+
+namespace hsr::viz {
+namespace {
+
+using algo::DepthFormat;
+
+constexpr std::array formats = {DepthFormat::int16, DepthFormat::int24, DepthFormat::int32,
+                                DepthFormat::float32, DepthFormat::float32_reversed, DepthFormat::linear24};
+
+ImU32 rgb(algo::Color c, float alpha = 1) { return ImGui::GetColorU32(ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha)); }
+
+// The eye distance a window depth d stands for (perspective: d = a + b/z).
+double eye_distance(double d, algo::DepthRange r) {
+    const double a = r.far / (r.far - r.near), b = r.far * r.near / (r.near - r.far);
+    return b / (d - a);
+}
+
+// The eye distance whose code is `target`, by bisection (codes grow with distance in every format).
+double distance_of_code(DepthFormat f, std::uint64_t target, algo::DepthRange r) {
+    double lo = r.near, hi = r.far;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (algo::code(f, mid, r) < target ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+// One buffer as a grid of fat pixels; `fill` gives each pixel's colour.
+template <class Fill>
+void pixel_grid(ImDrawList* d, ImVec2 origin, float cell, const ZView& v, Fill fill) {
+    const int w = v.viewport.width, h = v.viewport.height;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            d->AddRectFilled(ImVec2(origin.x + float(x) * cell, origin.y + float(y) * cell),
+                             ImVec2(origin.x + float(x + 1) * cell - 1, origin.y + float(y + 1) * cell - 1), fill(x, y));
+}
+
+void outline(ImDrawList* d, ImVec2 origin, float cell, const algo::ScreenPolygon& p, ImU32 colour, float thickness) {
+    if (p.status != algo::ScreenStatus::drawn) return;
+    std::vector<ImVec2> points;
+    for (const auto& q : p.vertices)
+        points.emplace_back(origin.x + float(q.x) / algo::subpixels * cell, origin.y + float(q.y) / algo::subpixels * cell);
+    d->AddPolyline(points.data(), int(points.size()), colour, ImDrawFlags_Closed, thickness);
+}
+
+// What the fill has under way: the polygon, its span and the pixel under test.
+void under_way(ImDrawList* d, ImVec2 origin, float cell, const ZView& v) {
+    for (const auto& p : *v.polygons) outline(d, origin, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.25f)), 1);
+    if (v.polygon >= 0) outline(d, origin, cell, (*v.polygons)[std::size_t(v.polygon)], IM_COL32(255, 255, 255, 255), 2.5f);
+    if (v.span_y >= 0)
+        d->AddRect(ImVec2(origin.x + float(v.span_begin) * cell - 1, origin.y + float(v.span_y) * cell - 1),
+                   ImVec2(origin.x + float(v.span_end) * cell, origin.y + float(v.span_y + 1) * cell), IM_COL32(255, 230, 90, 255), 0, 0, 2);
+    if (v.pixel_x >= 0) {
+        const ImU32 c = v.outcome == PixelOutcome::written  ? IM_COL32(90, 220, 130, 255)
+                        : v.outcome == PixelOutcome::failed ? IM_COL32(240, 80, 60, 255)
+                                                            : IM_COL32(255, 230, 90, 255);
+        d->AddRect(ImVec2(origin.x + float(v.pixel_x) * cell - 2, origin.y + float(v.pixel_y) * cell - 2),
+                   ImVec2(origin.x + float(v.pixel_x + 1) * cell + 1, origin.y + float(v.pixel_y + 1) * cell + 1), c, 0, 0, 3);
+    }
+}
+
+// Stored codes against eye distance: a tick at every 1/64 of the codes between near and far.
+void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
+    const algo::DepthRange r = v.range;
+    const float x0 = at.x + 10, x1 = at.x + width - 10, y = at.y + 26;
+    const auto x_of = [&](double z) { return x0 + float((z - r.near) / (r.far - r.near)) * (x1 - x0); };
+    d->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(200, 200, 200, 255), 1.5f);
+    const std::uint64_t c0 = algo::code(v.format, r.near, r), c1 = algo::code(v.format, r.far, r);
+    constexpr int ticks = 64;
+    for (int i = 0; i <= ticks; ++i) {
+        const std::uint64_t c = c0 + (c1 - c0) * std::uint64_t(i) / ticks;
+        const float x = x_of(distance_of_code(v.format, c, r));
+        d->AddLine(ImVec2(x, y - 8), ImVec2(x, y + 8), IM_COL32(120, 190, 255, 255), 1);
+    }
+    d->AddText(ImVec2(x0, y + 10), IM_COL32(200, 200, 200, 255), ("near " + algo::format_number(r.near)).c_str());
+    const std::string far_text = "far " + algo::format_number(r.far);
+    d->AddText(ImVec2(x1 - ImGui::CalcTextSize(far_text.c_str()).x, y + 10), IM_COL32(200, 200, 200, 255), far_text.c_str());
+    d->AddText(ImVec2(x0, at.y), IM_COL32(200, 200, 200, 255),
+               "stored depth codes against eye distance: a tick every 1/64 of the codes");
+    if (v.pixel_x >= 0) {  // the pixel under test on the same axis
+        const float x = x_of(std::clamp(eye_distance(v.pixel_depth, r), r.near, r.far));
+        d->AddTriangleFilled(ImVec2(x, y - 10), ImVec2(x - 6, y - 20), ImVec2(x + 6, y - 20), IM_COL32(255, 230, 90, 255));
+    }
+}
+
+}  // namespace
+
+void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h) {
+    const ZView& v = s.view();
+    place(x, y, w, h);
+    ImGui::Begin("##zbuffer canvas", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
+                                                  ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    const float margin = 24, diagram = 70;
+    const float cell = std::max(2.0f, std::min((w - 3 * margin) / (2.0f * float(v.viewport.width)),
+                                               (h - 2 * margin - diagram - 24) / float(v.viewport.height)));
+    const ImVec2 frame(x + margin, y + margin + 20), depth(frame.x + cell * float(v.viewport.width) + margin, frame.y);
+    d->AddText(ImVec2(frame.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "frame buffer");
+    d->AddText(ImVec2(depth.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "depth buffer (bright = near)");
+    const algo::Color background{26, 28, 33};
+    const auto at = [&](int px, int py) { return std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px); };
+    pixel_grid(d, frame, cell, v, [&](int px, int py) {
+        const std::int32_t o = v.owner[at(px, py)];
+        return o < 0 ? rgb({40, 43, 50}) : rgb((*v.polygons)[std::size_t(o)].color);
+    });
+    // heat: stretched over the codes the buffer holds now (perspective codes bunch up near the far end)
+    std::uint64_t lo = v.far_code, hi = 0;
+    for (std::uint64_t c : v.depth)
+        if (c < v.far_code) lo = std::min(lo, c), hi = std::max(hi, c);
+    pixel_grid(d, depth, cell, v, [&](int px, int py) {
+        const std::uint64_t c = v.depth[at(px, py)];
+        if (c >= v.far_code) return rgb(background);
+        const float g = hi > lo ? 0.25f + 0.75f * float(double(hi - c) / double(hi - lo)) : 1.0f;
+        return ImGui::GetColorU32(ImVec4(0.15f + 0.85f * g, 0.12f + 0.6f * g, 0.25f * (1 - g) + 0.1f, 1));
+    });
+    under_way(d, frame, cell, v);
+    under_way(d, depth, cell, v);
+    precision_diagram(d, ImVec2(x + margin, frame.y + cell * float(v.viewport.height) + 16), w - 2 * margin, v);
+    ImGui::End();
+}
+
+void zbuffer_state_panel(const ZBufferSession& s, const PanelLayout& l, UiActions& out) {
+    place_in_column(l, 2);
+    const ZView& v = s.view();
+    ImGui::Begin("Depth buffer", nullptr, fixed);
+    int current = 0;
+    for (std::size_t i = 0; i < formats.size(); ++i)
+        if (formats[i] == v.format) current = int(i);
+    ImGui::SetNextItemWidth(220);
+    if (ImGui::BeginCombo("format", std::string(algo::to_string(v.format)).c_str())) {
+        for (std::size_t i = 0; i < formats.size(); ++i)
+            if (ImGui::Selectable(std::string(algo::to_string(formats[i])).c_str(), int(i) == current))
+                out.depth_format = formats[i];
+        ImGui::EndCombo();
+    }
+    float near = float(v.range.near), far = float(v.range.far);
+    ImGui::SetNextItemWidth(150);
+    const bool near_moved = ImGui::SliderFloat("near", &near, 1e-3f, 10.0f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150);
+    const bool far_moved = ImGui::SliderFloat("far", &far, 1.0f, 1e5f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    if ((near_moved || far_moved) && near < far) out.depth_range = algo::DepthRange{near, far};
+    const double z = v.pixel_x >= 0 ? eye_distance(v.pixel_depth, v.range) : v.range.far;
+    ImGui::TextColored(dim_text, "%s stored values are nearer · far code %llu", algo::smaller_is_nearer(v.format) ? "smaller" : "larger",
+                       (unsigned long long)v.far_code);
+    ImGui::Text("smallest resolvable step at z = %.4g: %.4g", z, algo::resolvable_step(v.format, z, v.range));
+    if (v.pixel_x >= 0)
+        ImGui::Text("pixel (%d, %d): new %llu %s stored %llu", v.pixel_x, v.pixel_y, (unsigned long long)v.incoming,
+                    v.incoming < v.stored ? "<" : "≥", (unsigned long long)v.stored);
+    ImGui::TextColored(dim_text, "%llu tested · %llu written · %zu pixels unlike the ray cast", (unsigned long long)v.tested,
+                       (unsigned long long)v.written, s.pixels_unlike_ray_cast());
+    ImGui::End();
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,14 @@
+// The panels of a z-buffer lesson: the fat-pixel frame buffer beside the depth buffer as a heat map, with the
+// polygon, span and pixel under way; the depth-precision diagram; and the format, near and far controls.
+#pragma once
+
+#include "panels/lesson_panels.h"
+#include "state/zbuffer_session.h"
+
+namespace hsr::viz {
+
+// Fills the view area (x, y, w, h in window points, top-left origin).
+void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h);
+void zbuffer_state_panel(const ZBufferSession& s, const PanelLayout& layout, UiActions& out);
+
+}  // namespace hsr::viz
