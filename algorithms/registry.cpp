@@ -4,6 +4,7 @@
 
 #include "clipping/clip_scene.h"
 #include "culling/backface.h"
+#include "raycast/raycast_events.h"
 
 namespace hsr::algo {
 namespace {
@@ -24,6 +25,9 @@ constexpr std::array registry = {
     AlgorithmInfo{"backface_screen_winding", "Back-face culling: the winding on screen", 2, Family::backface,
                   int(BackfaceTest::screen_winding)},
     AlgorithmInfo{"zbuffer_fill", "Z-buffer fill", 2, Family::zbuffer, 0},
+    AlgorithmInfo{"raycast_brute", "Ray casting: every primitive", 1, Family::raycast, int(Acceleration::none)},
+    AlgorithmInfo{"raycast_grid", "Ray casting through a regular grid", 3, Family::raycast, int(Acceleration::grid)},
+    AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Family::raycast, int(Acceleration::octree)},
 };
 
 }  // namespace

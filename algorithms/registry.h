@@ -7,14 +7,14 @@
 
 namespace hsr::algo {
 
-enum class Family : unsigned char { clipping, bsp, backface, zbuffer };
+enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast };
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it
     std::string_view title;
     int difficulty;               // 1 (first week) … 5
     Family family;
-    int variant;                  // the family's own enum value (ClipAlgorithm, BspLesson, BackfaceTest)
+    int variant;                  // the family's own enum value (ClipAlgorithm, BspLesson, BackfaceTest, Acceleration)
 };
 
 std::span<const AlgorithmInfo> algorithms();

@@ -21,10 +21,12 @@
 #include "panels/bsp_panels.h"
 #include "panels/clip_panels.h"
 #include "panels/cull_panels.h"
+#include "panels/raycast_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
+#include "render/raycast_renderer.h"
 #include "render/gl.h"
 #include "render/orbit_camera.h"
 #include "render/palette.h"
@@ -35,6 +37,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/raycast_session.h"
 #include "state/zbuffer_session.h"
 #include "state/trace.h"
 
@@ -64,6 +67,10 @@ struct Lessonplay {
                 clip_view_bounds(clip->view(), clip->lesson().scene, centre, radius);
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
+            if (const auto* ray = dynamic_cast<const RayCastSession*>(session.get())) {
+                raycast_view_bounds(ray->scene(), centre, radius);
+                camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
+            }
             if (const auto* bsp = dynamic_cast<const BspSession*>(session.get())) {
                 bsp_view_bounds(bsp->view(), centre, radius);
                 const glm::dvec3 from = bsp->lesson().scene.camera.eye - glm::dvec3(centre);
@@ -205,6 +212,12 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* bsp = dynamic_cast<const BspSession*>(&s);
     const auto* cull = dynamic_cast<const CullSession*>(&s);
     const auto* zb = dynamic_cast<const ZBufferSession*>(&s);
+    const auto* ray = dynamic_cast<const RayCastSession*>(&s);
+    if (ray) {
+        draw_raycast_view(ray->view(), ray->scene(), r.batches, r.labels);
+        detail = std::to_string(ray->lesson().grid.width) + "×" + std::to_string(ray->lesson().grid.height) +
+                 " rays · double precision · " + std::string(algo::to_string(ray->view().acceleration));
+    }
     if (zb)
         detail = std::to_string(zb->lesson().grid.width) + "×" + std::to_string(zb->lesson().grid.height) +
                  " pixels · " + std::string(algo::to_string(zb->format())) + " · top-left rule";
@@ -235,12 +248,14 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
 
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
     if (zb) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
+    if (ray) raycast_image(*ray, 0, 0, view_w, view_h);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
     if (bsp) bsp_state_panel(*bsp, layout);
     if (cull) cull_state_panel(*cull, layout);
     if (zb) zbuffer_state_panel(*zb, layout, actions);
+    if (ray) raycast_state_panel(*ray, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

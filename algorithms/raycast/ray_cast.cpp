@@ -27,7 +27,15 @@ struct Hit {
 
 struct Tally {
     std::uint64_t tests = 0, max_tests = 0;
+    std::vector<std::uint64_t> mailbox;  // the ray that last tested each primitive (1, 2, …)
+    std::uint64_t ray = 0;
     bool full() const { return tests >= max_tests; }
+    // A primitive listed in several cells or leaves is tested once per ray (mailboxing)
+    bool tested_before(std::uint32_t i) {
+        if (mailbox[i] == ray) return true;
+        mailbox[i] = ray;
+        return false;
+    }
 };
 
 // Intersect one primitive; `best` becomes it when it is hit nearer (ties to the lower index).
@@ -84,6 +92,7 @@ Steps<RayCastEvent, Hit> walk_grid(const Grid* grid, const Primitives* prims, co
         const auto& list = grid->at(cell);
         if (detail != RayDetail::ray) co_yield CellEntered{cell, t_enter, t_exit, std::uint32_t(list.size())};
         for (std::uint32_t i : list) {
+            if (tally->tested_before(i)) continue;
             const Tested r = test(*prims, *scene, ray, i, best, *tally);
             if (detail == RayDetail::test) co_yield r.event;
             if (detail == RayDetail::test && r.nearer) co_yield nearer_event(*prims, *scene, best);
@@ -117,6 +126,7 @@ Steps<RayCastEvent, Hit> walk_octree(const Octree* tree, const Primitives* prims
         if (detail != RayDetail::ray)
             co_yield NodeEntered{v.node, node.depth, v.span.enter, v.span.exit, node.first_child < 0};
         for (std::uint32_t i : node.primitives) {
+            if (tally->tested_before(i)) continue;
             const Tested r = test(*prims, *scene, ray, i, best, *tally);
             if (detail == RayDetail::test) co_yield r.event;
             if (detail == RayDetail::test && r.nearer) co_yield nearer_event(*prims, *scene, best);
@@ -168,10 +178,11 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
     const int w = o.viewport.width, h = o.viewport.height;
     RayCastResult out{Image(w, h, o.background), std::vector<std::int32_t>(std::size_t(w) * std::size_t(h), -1),
                       std::vector<double>(std::size_t(w) * std::size_t(h), 2.0)};
-    Tally tally{0, o.max_tests};
+    Tally tally{0, o.max_tests, std::vector<std::uint64_t>(prims->polygons.size(), 0), 0};
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const Ray ray = pixel_ray(scene.camera, o.viewport, x, y);
+            ++tally.ray;
             if (o.detail != RayDetail::ray) co_yield RayStarted{x, y, ray.origin, ray.direction};
             const std::uint64_t before = tally.tests;
             auto walk = o.acceleration == Acceleration::grid     ? walk_grid(grid.get(), prims.get(), &scene, ray, o.detail, &tally)

@@ -13,6 +13,8 @@
 // accelerated walks give the same answer as brute force.
 //   grid    3D DDA (Amanatides–Woo): start in the cell where the ray enters (the eye's, when inside), skip empty
 //           cells, stop in the first cell whose exit lies beyond the nearest hit found.
+// A primitive listed in several cells or leaves is tested once per ray (mailboxing), so an accelerated cast never
+// tests more than brute force.
 //   octree  children front to back; a node starting beyond the nearest hit is not entered.
 #pragma once
 

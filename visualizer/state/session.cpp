@@ -3,6 +3,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/raycast_session.h"
 #include "state/zbuffer_session.h"
 
 namespace hsr::viz {
@@ -13,6 +14,7 @@ std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
         case algo::Family::bsp: return std::make_unique<BspSession>(std::move(lesson), options);
         case algo::Family::backface: return std::make_unique<CullSession>(std::move(lesson), options);
         case algo::Family::zbuffer: return std::make_unique<ZBufferSession>(std::move(lesson), options);
+        case algo::Family::raycast: return std::make_unique<RayCastSession>(std::move(lesson), options);
     }
     return nullptr;
 }

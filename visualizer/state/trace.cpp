@@ -7,6 +7,7 @@
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
 #include "culling/backface.h"
+#include "raycast/ray_cast.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
 
@@ -64,6 +65,21 @@ HSR_TO_JSON(DepthTestFailed, x, y, incoming, stored)
 HSR_TO_JSON(PolygonFillFinished, index, tested, written)
 HSR_TO_JSON(FillFinished, polygons, tested, written)
 HSR_TO_JSON(FillStepBoundReached, max_pixel_tests)
+
+}  // namespace hsr::algo
+namespace glm {
+inline void to_json(nlohmann::json& j, const dvec3& v) { j = nlohmann::json::array({v.x, v.y, v.z}); }
+inline void to_json(nlohmann::json& j, const ivec3& v) { j = nlohmann::json::array({v.x, v.y, v.z}); }
+}  // namespace glm
+namespace hsr::algo {
+HSR_TO_JSON(RayStarted, x, y, origin, direction)
+HSR_TO_JSON(CellEntered, cell, t_enter, t_exit, primitives)
+HSR_TO_JSON(NodeEntered, node, depth, t_enter, t_exit, leaf)
+HSR_TO_JSON(PrimitiveTested, index, id, hit, t)
+HSR_TO_JSON(NearerHitFound, index, id, t)
+HSR_TO_JSON(RayFinished, x, y, index, id, t, tests)
+HSR_TO_JSON(CastFinished, rays, tests)
+HSR_TO_JSON(CastStepBoundReached, max_tests)
 
 inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
 inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
@@ -134,6 +150,9 @@ std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::
 std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 
 void hash_line(TraceSummary& t, const std::string& line) {
     auto mix = [&](unsigned char c) {
@@ -184,6 +203,12 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             auto machine = algo::zbuffer_fill(algo::project_polygons(scene, lesson.grid),
                                               algo::zbuffer_options(scene, lesson.grid, lesson.depth_format));
             return write_trace(machine, [&](const algo::ZBufferEvent& e) { return algo::describe(e, lesson.depth_format); }, out);
+        }
+        case algo::Family::raycast: {
+            algo::Scene scene = lesson.scene;
+            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            auto machine = algo::ray_cast(scene, {.viewport = lesson.grid, .acceleration = algo::Acceleration(lesson.algorithm.variant)});
+            return write_trace(machine, [](const algo::RayCastEvent& e) { return algo::describe(e); }, out);
         }
     }
     return {};

@@ -10,6 +10,7 @@
 #include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
 #include "culling/backface.h"
+#include "raycast/raycast_events.h"
 #include "zbuffer/zbuffer_events.h"
 #include "core/steps.h"
 #include "state/lesson.h"
@@ -31,6 +32,7 @@ std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, const std::
 std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const std::string& sentence);
 
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
 // to only count and hash.

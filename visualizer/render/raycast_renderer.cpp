@@ -1,0 +1,85 @@
+#include "render/raycast_renderer.h"
+
+#include <array>
+#include <cstdio>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "render/palette.h"
+#include "render/scene_color.h"
+
+namespace hsr::viz {
+namespace {
+
+using algo::Vec3;
+
+void box(LineBatch& out, Vec3 lo, Vec3 hi, glm::vec4 colour) {
+    const auto corner = [&](int i) { return glm::vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z); };
+    for (int i = 0; i < 8; ++i)
+        for (int axis = 1; axis < 8; axis <<= 1)
+            if (!(i & axis)) out.line(corner(i), corner(i | axis), colour);
+}
+
+}  // namespace
+
+void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+    // The scene's polygons, the nearest hit so far drawn stronger
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+        const auto& p = scene.polygons[i];
+        const bool nearest = int(i) == v.nearest, tested = int(i) == v.tested;
+        for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+            out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]),
+                               scene_color(scene, p.id, nearest ? 0.7f : 0.25f));
+        for (std::size_t k = 0; k < p.vertices.size(); ++k)
+            (tested ? out.bold : out.faint)
+                .line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
+                      tested ? palette::current_edge : scene_color(scene, p.id, 1));
+    }
+    // The view frustum: the rays of the image's four corners, near plane to far plane
+    const algo::Viewport vp = v.viewport;
+    const std::array<algo::Ray, 4> corners = {algo::pixel_ray(scene.camera, vp, 0, 0), algo::pixel_ray(scene.camera, vp, vp.width - 1, 0),
+                                              algo::pixel_ray(scene.camera, vp, vp.width - 1, vp.height - 1),
+                                              algo::pixel_ray(scene.camera, vp, 0, vp.height - 1)};
+    const glm::vec4 frustum(0.7f, 0.72f, 0.76f, 0.35f);
+    for (std::size_t i = 0; i < 4; ++i) {
+        const algo::Ray &a = corners[i], &b = corners[(i + 1) % 4];
+        out.faint.line(glm::vec3(scene.camera.eye), glm::vec3(a.origin + a.direction), frustum);
+        out.faint.line(glm::vec3(a.origin), glm::vec3(b.origin), frustum);
+        out.faint.line(glm::vec3(a.origin + a.direction), glm::vec3(b.origin + b.direction), frustum);
+    }
+    out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
+    labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
+    // The grid and the cells the ray has walked
+    if (v.grid) {
+        box(out.faint, v.grid->box.lo, v.grid->box.hi, glm::vec4(0.6f, 0.6f, 0.65f, 0.4f));
+        for (std::size_t i = 0; i < v.cells.size(); ++i) {
+            const Vec3 lo = v.grid->box.lo + Vec3(v.cells[i]) * v.grid->size;
+            const bool last = i + 1 == v.cells.size();
+            box(last ? out.bold : out.faint, lo, lo + v.grid->size, last ? palette::parameter : glm::vec4(0.34f, 0.71f, 0.91f, 0.6f));
+        }
+    }
+    // The ray: solid up to the nearest hit, faint beyond
+    if (v.ray_x >= 0) {
+        const double t = std::min(v.nearest_t, 1.0);
+        const Vec3 hit = v.origin + t * v.direction;
+        out.bold.line(glm::vec3(v.origin), glm::vec3(hit), palette::working);
+        if (t < 1) {
+            out.faint.line(glm::vec3(hit), glm::vec3(v.origin + v.direction), glm::vec4(1, 1, 1, 0.3f));
+            out.bold.point(glm::vec3(hit), palette::intersection);
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "nearest t = %.4g", t);
+            labels.push_back({glm::vec3(hit), buf, palette::intersection});
+        }
+    }
+}
+
+void raycast_view_bounds(const algo::Scene& scene, glm::vec3& centre, float& radius) {
+    Vec3 lo = scene.camera.eye, hi = scene.camera.eye;
+    for (const auto& p : scene.polygons)
+        for (const auto& q : p.vertices) lo = glm::min(lo, Vec3(q)), hi = glm::max(hi, Vec3(q));
+    centre = glm::vec3((lo + hi) * 0.5);
+    radius = std::max(0.5f, float(glm::length(hi - lo) * 0.5));
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,81 @@
+#include "state/raycast_session.h"
+
+#include <array>
+
+#include "core/overloaded.h"
+
+namespace hsr::viz {
+namespace {
+
+using namespace hsr::algo;
+
+// The lecture's RayCasting; with a grid, the primitives of a ray are those of the cells it walks.
+constexpr std::array<std::string_view, 10> cast_lines = {
+    "RayCasting(primitiveDB, v):",
+    "  for each pixel p:",
+    "    minp = MAXINT",
+    "    for each cell C the ray (v, p) walks:   /* or: every primitive */",
+    "      for each primitive R in C:",
+    "        I = intersect_primitive_ray(R, v, p)",
+    "        if (|I - v| < minp):",
+    "          p -> nearest_primitive = R;  minp = |I - v|",
+    "      if (minp is inside C): stop walking",
+    "    p sees p -> nearest_primitive",
+};
+
+Scene with_aspect(Scene s, Viewport grid) {
+    s.camera.aspect = double(grid.width) / double(grid.height);
+    return s;
+}
+
+RayCastSession::PlayerType make_player(const Scene& scene, Viewport grid, Acceleration a, PlayerOptions options) {
+    RayView initial;
+    initial.viewport = grid;
+    initial.acceleration = a;
+    initial.owner.assign(std::size_t(grid.width) * std::size_t(grid.height), -1);
+    if (a == Acceleration::grid) {  // the same cells the machine builds (ray_cast: build_grid with 0 = automatic)
+        std::vector<std::vector<Vec3>> polygons;
+        for (const auto& p : scene.polygons) {
+            std::vector<Vec3> v;
+            for (const auto& q : p.vertices) v.emplace_back(q);
+            Plane plane;
+            if (v.size() >= 3 && plane_of(v, plane)) polygons.push_back(std::move(v));
+        }
+        initial.grid = std::make_shared<const Grid>(build_grid(polygons, 0));
+    }
+    return RayCastSession::PlayerType(ray_cast(scene, {.viewport = grid, .acceleration = a, .detail = RayDetail::test}),
+                                      std::move(initial), options);
+}
+
+}  // namespace
+
+RayCastSession::RayCastSession(Lesson lesson, PlayerOptions options)
+    : PlayerSession(lesson, make_player(with_aspect(lesson.scene, lesson.grid), lesson.grid,
+                                        Acceleration(lesson.algorithm.variant), options)),
+      scene_(with_aspect(lesson.scene, lesson.grid)) {}
+
+std::span<const std::string_view> RayCastSession::pseudocode() const { return cast_lines; }
+
+std::string RayCastSession::describe_event(const RayCastEvent& e) const { return describe(e); }
+
+int RayCastSession::line_of(const RayCastEvent& event) const {
+    return std::visit(overloaded{
+                          [](const RayStarted&) { return 2; },
+                          [](const CellEntered&) { return 3; },
+                          [](const NodeEntered&) { return 3; },
+                          [](const PrimitiveTested&) { return 5; },
+                          [](const NearerHitFound&) { return 7; },
+                          [](const RayFinished&) { return 9; },
+                          [](const CastFinished&) { return 1; },
+                          [](const CastStepBoundReached&) { return 1; },
+                      },
+                      event);
+}
+
+// A Step is a ray; the cells and tests along it are micro-steps.
+bool RayCastSession::is_major(const RayCastEvent& e) const {
+    return std::holds_alternative<RayFinished>(e) || std::holds_alternative<CastFinished>(e) ||
+           std::holds_alternative<CastStepBoundReached>(e);
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,24 @@
+// A ray-casting lesson: the lecture's RayCasting over a classroom-sized grid of fat pixels, ray by ray, with every
+// primitive (raycast_brute), a regular grid walked cell by cell (raycast_grid) or an octree (raycast_octree).
+#pragma once
+
+#include "state/raycast_view.h"
+#include "state/session.h"
+
+namespace hsr::viz {
+
+class RayCastSession : public PlayerSession<algo::RayCastEvent, algo::RayCastResult, RayView> {
+public:
+    explicit RayCastSession(Lesson lesson, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+    const algo::Scene& scene() const { return scene_; }  // the lesson's, with the grid's aspect
+
+private:
+    std::string describe_event(const algo::RayCastEvent& e) const override;
+    int line_of(const algo::RayCastEvent& e) const override;
+    bool is_major(const algo::RayCastEvent& e) const override;
+
+    algo::Scene scene_;
+};
+
+}  // namespace hsr::viz
