@@ -18,8 +18,8 @@ std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b)
 
 std::int64_t row_centre(int row) { return std::int64_t(row) * subpixels + subpixels / 2; }
 
-// The top-left rule as a threshold on E: on the edge (E = 0) counts only for top and left edges.
-std::int64_t threshold(std::int64_t dx, std::int64_t dy) { return (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1; }
+// The fill rule as a threshold on E: on the edge (E = 0) counts only for left edges and bottom edges (going −x).
+std::int64_t threshold(std::int64_t dx, std::int64_t dy) { return (dy < 0 || (dy == 0 && dx < 0)) ? 0 : 1; }
 
 // Twice the signed area in sub-pixel units²; positive when clockwise on the screen (y down).
 std::int64_t twice_area(const std::vector<ScreenVertex>& v) {

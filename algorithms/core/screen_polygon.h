@@ -4,11 +4,14 @@
 // Vertices are snapped to 1/256 of a pixel (8 sub-pixel bits, as GL rasterisers do) so that coverage is decided
 // by exact integer arithmetic: two polygons sharing an edge see the same edge, bit for bit.
 //
-// Top-left fill rule. Vertices are put in clockwise order on the screen (y down), so that the inside of every edge
-// a→b is where E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) > 0. A pixel centre exactly on an edge
-// (E = 0) belongs to the polygon only if the edge is a *top* edge (horizontal, inside below it: b.y = a.y and
-// b.x > a.x) or a *left* edge (going up: b.y < a.y). A shared edge is walked in opposite directions by its two
-// polygons, so exactly one of them owns the pixels on it.
+// Fill rule: OpenGL's top-left rule. Vertices are put in clockwise order on the screen (y down), so that the
+// inside of every edge a→b is where E(p) = (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x) > 0. A pixel centre
+// exactly on an edge (E = 0) belongs to the polygon only if the edge is a *left* edge (going up: b.y < a.y) or a
+// horizontal edge with the inside *above* it (b.y = a.y, b.x < a.x). Rasterisers apply "top-left" in the order
+// their framebuffer rows are stored, and OpenGL's rows run bottom to top, so in our top-down image the rule that
+// matches OpenGL (checked against Mesa in tests/gui/gl_raster_check) takes the pixels on a horizontal edge for the
+// polygon above it. A shared edge is walked in opposite directions by its two polygons, so exactly one of them owns
+// the pixels on it.
 //
 // Depth. After the divide by w the window depth d ∈ [0, 1] is an affine function of the screen position, so every
 // polygon has a depth plane d = c0 + (−a/c)·x + (−b/c)·y (the lecture's F′(x, y)), and stepping one pixel along x

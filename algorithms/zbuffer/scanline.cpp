@@ -7,9 +7,10 @@ namespace {
 
 std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
 
-// The first row whose centre is at or below y (sub-pixels), clamped to the viewport.
-int first_row_at_or_below(std::int64_t y, Viewport vp) {
-    return int(std::clamp<std::int64_t>(ceil_div(y - subpixels / 2, subpixels), 0, vp.height));
+// The first row whose centre is strictly below y (sub-pixels), clamped to the viewport. An edge spans the rows
+// whose centres lie in (top, bottom]: the fill rule gives a pixel centre on a vertex row to the polygon above.
+int first_row_below(std::int64_t y, Viewport vp) {
+    return int(std::clamp<std::int64_t>(ceil_div(y + 1 - subpixels / 2, subpixels), 0, vp.height));
 }
 
 // The polygon table: per polygon, its in/out flag and what this line's edges told of it.
@@ -30,8 +31,8 @@ std::vector<EdgeEntry> edge_table(const std::vector<ScreenPolygon>& polygons, Vi
         for (std::size_t i = 0, j = poly.vertices.size() - 1; i < poly.vertices.size(); j = i++) {
             const ScreenVertex &a = poly.vertices[j], &b = poly.vertices[i];
             if (a.y == b.y) continue;  // horizontal boundaries are ignored
-            const EdgeEntry e{p, a, b, first_row_at_or_below(std::min(a.y, b.y), vp),
-                              first_row_at_or_below(std::max(a.y, b.y), vp), b.y < a.y};
+            const EdgeEntry e{p, a, b, first_row_below(std::min(a.y, b.y), vp), first_row_below(std::max(a.y, b.y), vp),
+                              b.y < a.y};
             if (e.first_row < e.end_row) table.push_back(e);
         }
     }

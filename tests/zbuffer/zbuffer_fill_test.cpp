@@ -69,10 +69,11 @@ TEST_CASE("a fan around a vertex on a pixel centre gives that pixel to exactly o
     for (int v : count) REQUIRE(v == 1);
 }
 
-TEST_CASE("pixel centres on a left or top edge are in, on a right or bottom edge are out", "[zbuffer][fill-rule]") {
+TEST_CASE("pixel centres on a left edge or on a horizontal edge below the polygon are in, OpenGL's way", "[zbuffer][fill-rule]") {
     const Viewport vp{4, 4};
     // A square from pixel centre (1.5, 1.5) to (2.5, 2.5): its left and top edges pass through centres of pixels
-    // x = 1 and y = 1; its right and bottom edges through x = 2 and y = 2. Only pixel (1, 1) is covered.
+    // x = 1 and y = 1; its right and bottom edges through x = 2 and y = 2. OpenGL's top-left rule, applied in its
+    // bottom-up row order, keeps the left and the bottom edge: only pixel (1, 2) is covered.
     const auto px = [&](double x) { return x / vp.width * 2 - 1; };
     const auto py = [&](double y) { return 1 - y / vp.height * 2; };
     const ScreenPolygon square = project_polygon(
@@ -81,7 +82,7 @@ TEST_CASE("pixel centres on a left or top edge are in, on a right or bottom edge
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x) {
             INFO("pixel (" << x << ", " << y << ")");
-            CHECK((f.polygon[std::size_t(y * 4 + x)] == 0) == (x == 1 && y == 1));
+            CHECK((f.polygon[std::size_t(y * 4 + x)] == 0) == (x == 1 && y == 2));
         }
 }
 
