@@ -22,6 +22,7 @@
 #include "panels/clip_panels.h"
 #include "panels/cull_panels.h"
 #include "panels/raycast_panels.h"
+#include "panels/scanline_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
@@ -38,6 +39,7 @@
 #include "state/clip_session.h"
 #include "state/cull_session.h"
 #include "state/raycast_session.h"
+#include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
 #include "state/trace.h"
 
@@ -213,6 +215,10 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* cull = dynamic_cast<const CullSession*>(&s);
     const auto* zb = dynamic_cast<const ZBufferSession*>(&s);
     const auto* ray = dynamic_cast<const RayCastSession*>(&s);
+    const auto* scan = dynamic_cast<const ScanLineSession*>(&s);
+    if (scan)
+        detail = std::to_string(scan->lesson().grid.width) + "×" + std::to_string(scan->lesson().grid.height) +
+                 " pixels · one-line z-buffer, " + std::string(algo::to_string(scan->lesson().depth_format));
     if (ray) {
         draw_raycast_view(ray->view(), ray->scene(), r.batches, r.labels);
         detail = std::to_string(ray->lesson().grid.width) + "×" + std::to_string(ray->lesson().grid.height) +
@@ -249,6 +255,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
     if (zb) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
     if (ray) raycast_image(*ray, 0, 0, view_w, view_h);
+    if (scan) scanline_canvas(*scan, 0, 0, view_w, view_h);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
@@ -256,6 +263,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (cull) cull_state_panel(*cull, layout);
     if (zb) zbuffer_state_panel(*zb, layout, actions);
     if (ray) raycast_state_panel(*ray, layout);
+    if (scan) scanline_state_panel(*scan, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "core/events.h"
+#include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
 
 namespace hsr::viz {
@@ -18,7 +19,6 @@ using algo::DepthFormat;
 constexpr std::array formats = {DepthFormat::int16, DepthFormat::int24, DepthFormat::int32,
                                 DepthFormat::float32, DepthFormat::float32_reversed, DepthFormat::linear24};
 
-ImU32 rgb(algo::Color c, float alpha = 1) { return ImGui::GetColorU32(ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha)); }
 
 // The eye distance a window depth d stands for (perspective: d = a + b/z).
 double eye_distance(double d, algo::DepthRange r) {
@@ -34,24 +34,6 @@ double distance_of_code(DepthFormat f, std::uint64_t target, algo::DepthRange r)
         (algo::code(f, mid, r) < target ? lo : hi) = mid;
     }
     return hi;
-}
-
-// One buffer as a grid of fat pixels; `fill` gives each pixel's colour.
-template <class Fill>
-void pixel_grid(ImDrawList* d, ImVec2 origin, float cell, const ZView& v, Fill fill) {
-    const int w = v.viewport.width, h = v.viewport.height;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            d->AddRectFilled(ImVec2(origin.x + float(x) * cell, origin.y + float(y) * cell),
-                             ImVec2(origin.x + float(x + 1) * cell - 1, origin.y + float(y + 1) * cell - 1), fill(x, y));
-}
-
-void outline(ImDrawList* d, ImVec2 origin, float cell, const algo::ScreenPolygon& p, ImU32 colour, float thickness) {
-    if (p.status != algo::ScreenStatus::drawn) return;
-    std::vector<ImVec2> points;
-    for (const auto& q : p.vertices)
-        points.emplace_back(origin.x + float(q.x) / algo::subpixels * cell, origin.y + float(q.y) / algo::subpixels * cell);
-    d->AddPolyline(points.data(), int(points.size()), colour, ImDrawFlags_Closed, thickness);
 }
 
 // What the fill has under way: the polygon, its span and the pixel under test.
@@ -110,7 +92,7 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     d->AddText(ImVec2(depth.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "depth buffer (bright = near)");
     const algo::Color background{26, 28, 33};
     const auto at = [&](int px, int py) { return std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px); };
-    pixel_grid(d, frame, cell, v, [&](int px, int py) {
+    pixel_grid(d, frame, cell, v.viewport, [&](int px, int py) {
         const std::int32_t o = v.owner[at(px, py)];
         return o < 0 ? rgb({40, 43, 50}) : rgb((*v.polygons)[std::size_t(o)].color);
     });
@@ -118,7 +100,7 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     std::uint64_t lo = v.far_code, hi = 0;
     for (std::uint64_t c : v.depth)
         if (c < v.far_code) lo = std::min(lo, c), hi = std::max(hi, c);
-    pixel_grid(d, depth, cell, v, [&](int px, int py) {
+    pixel_grid(d, depth, cell, v.viewport, [&](int px, int py) {
         const std::uint64_t c = v.depth[at(px, py)];
         if (c >= v.far_code) return rgb(background);
         const float g = hi > lo ? 0.25f + 0.75f * float(double(hi - c) / double(hi - lo)) : 1.0f;

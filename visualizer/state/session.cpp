@@ -4,6 +4,7 @@
 #include "state/clip_session.h"
 #include "state/cull_session.h"
 #include "state/raycast_session.h"
+#include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
 
 namespace hsr::viz {
@@ -15,6 +16,7 @@ std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
         case algo::Family::backface: return std::make_unique<CullSession>(std::move(lesson), options);
         case algo::Family::zbuffer: return std::make_unique<ZBufferSession>(std::move(lesson), options);
         case algo::Family::raycast: return std::make_unique<RayCastSession>(std::move(lesson), options);
+        case algo::Family::scanline: return std::make_unique<ScanLineSession>(std::move(lesson), options);
     }
     return nullptr;
 }

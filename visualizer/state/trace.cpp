@@ -8,6 +8,7 @@
 #include "clipping/clip_scene.h"
 #include "culling/backface.h"
 #include "raycast/ray_cast.h"
+#include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
 
@@ -80,6 +81,14 @@ HSR_TO_JSON(NearerHitFound, index, id, t)
 HSR_TO_JSON(RayFinished, x, y, index, id, t, tests)
 HSR_TO_JSON(CastFinished, rays, tests)
 HSR_TO_JSON(CastStepBoundReached, max_tests)
+HSR_TO_JSON(EdgeTableBuilt, edges, polygons)
+HSR_TO_JSON(ScanLineStarted, y)
+HSR_TO_JSON(EdgeEntered, edge, polygon, y, x)
+HSR_TO_JSON(EdgeLeft, edge, polygon, y)
+HSR_TO_JSON(EdgeCrossed, edge, polygon, y, x, entering)
+HSR_TO_JSON(SpanColored, y, x_begin, x_end, polygon, id)
+HSR_TO_JSON(ScanFinished, lines, spans)
+HSR_TO_JSON(ScanStepBoundReached, max_crossings)
 
 inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
 inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
@@ -153,6 +162,9 @@ std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const st
 std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 
 void hash_line(TraceSummary& t, const std::string& line) {
     auto mix = [&](unsigned char c) {
@@ -209,6 +221,13 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
             auto machine = algo::ray_cast(scene, {.viewport = lesson.grid, .acceleration = algo::Acceleration(lesson.algorithm.variant)});
             return write_trace(machine, [](const algo::RayCastEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::scanline: {
+            algo::Scene scene = lesson.scene;
+            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            auto machine = algo::scan_line(algo::project_polygons(scene, lesson.grid),
+                                           algo::scan_line_options(scene, lesson.grid, lesson.depth_format));
+            return write_trace(machine, [](const algo::ScanLineEvent& e) { return algo::describe(e); }, out);
         }
     }
     return {};

@@ -11,6 +11,7 @@
 #include "clipping/clip_events.h"
 #include "culling/backface.h"
 #include "raycast/raycast_events.h"
+#include "zbuffer/scanline_events.h"
 #include "zbuffer/zbuffer_events.h"
 #include "core/steps.h"
 #include "state/lesson.h"
@@ -33,6 +34,7 @@ std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::s
 std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const std::string& sentence);
 
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
 // to only count and hash.

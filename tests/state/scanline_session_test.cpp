@@ -1,0 +1,37 @@
+// Scan-line lessons: the image folded from the spans is the z-buffer's, and the active edge table empties.
+#include "catch.h"
+#include "state/scanline_session.h"
+
+using namespace hsr::viz;
+using namespace hsr::algo;
+
+TEST_CASE("a scan-line lesson folds to the z-buffer's image, and every edge that enters leaves", "[state][scanline]") {
+    ScanLineSession s(load_lesson(HSR_SOURCE_DIR "/lessons/10_scan_line.toml"));
+    s.seek_end();
+    Scene scene = s.lesson().scene;
+    const Viewport grid = s.lesson().grid;
+    scene.camera.aspect = double(grid.width) / grid.height;
+    const FrameDepth z = zbuffer_fill(project_polygons(scene, grid), zbuffer_options(scene, grid, s.lesson().depth_format)).run_to_end();
+    CHECK(s.view().owner == z.polygon);
+    CHECK(s.view().done);
+    CHECK(s.view().spans >= std::uint64_t(grid.height));
+    // edges still active at the end are those reaching the bottom row
+    for (std::uint32_t e : s.view().active) CHECK((*s.view().edges)[e].end_row == grid.height);
+}
+
+TEST_CASE("seeking a scan-line lesson equals folding its events", "[state][scanline]") {
+    ScanLineSession s(load_lesson(HSR_SOURCE_DIR "/lessons/10_scan_line.toml"));
+    ScanLineSession fresh(load_lesson(HSR_SOURCE_DIR "/lessons/10_scan_line.toml"));
+    s.seek_end();
+    std::size_t folded = 0;
+    for (std::size_t k = 0; k <= s.cursor(); k += 13) {
+        ScanLineSession& t = s;
+        t.seek(k);
+        for (; folded < k; ++folded) fresh.micro_step();
+        INFO("step " << k);
+        REQUIRE(t.view().owner == fresh.view().owner);
+        REQUIRE(t.view().active == fresh.view().active);
+        REQUIRE(t.view().in == fresh.view().in);
+        t.seek_end();
+    }
+}

@@ -1,0 +1,21 @@
+// A scan-line lesson: the edge table, the active edge table and in/out flags, with a one-line z-buffer, over a
+// classroom-sized grid of fat pixels.
+#pragma once
+
+#include "state/scanline_view.h"
+#include "state/session.h"
+
+namespace hsr::viz {
+
+class ScanLineSession : public PlayerSession<algo::ScanLineEvent, algo::FrameDepth, ScanView> {
+public:
+    explicit ScanLineSession(Lesson lesson, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+
+private:
+    std::string describe_event(const algo::ScanLineEvent& e) const override;
+    int line_of(const algo::ScanLineEvent& e) const override;
+    bool is_major(const algo::ScanLineEvent& e) const override;
+};
+
+}  // namespace hsr::viz

@@ -1,0 +1,36 @@
+// What a scan-line lesson shows: the edge table, the active edge table on the current line with each edge
+// crossed so far (and the in/out flags it flipped), and the image filled line by line.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "zbuffer/scanline.h"
+
+namespace hsr::viz {
+
+struct Crossing {
+    std::uint32_t edge;
+    double x;
+    bool entering;
+};
+
+struct ScanView {
+    algo::Viewport viewport;
+    std::shared_ptr<const std::vector<algo::ScreenPolygon>> polygons;  // never changed
+    std::shared_ptr<const std::vector<algo::EdgeEntry>> edges;         // the edge table, never changed
+    std::vector<std::int32_t> owner;     // polygon index per pixel, −1 background (lines done so far)
+    int line = -1;                       // the current scan line
+    std::vector<std::uint32_t> active;   // the active edge table, as entered
+    std::vector<Crossing> crossings;     // this line's, left to right
+    std::vector<bool> in;                // per polygon: its in/out flag
+    std::uint64_t spans = 0;
+    bool done = false, bounded = false;
+};
+
+ScanView initial_view(std::shared_ptr<const std::vector<algo::ScreenPolygon>> polygons, algo::Viewport viewport);
+void reduce(ScanView& view, const algo::ScanLineEvent& event);
+std::size_t approx_bytes(const ScanView& view);
+
+}  // namespace hsr::viz
