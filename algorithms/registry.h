@@ -7,7 +7,7 @@
 
 namespace hsr::algo {
 
-enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast, scanline };
+enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast, scanline, zmerge };
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

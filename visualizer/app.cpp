@@ -24,6 +24,7 @@
 #include "panels/raycast_panels.h"
 #include "panels/scanline_panels.h"
 #include "panels/zbuffer_panels.h"
+#include "panels/zmerge_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
@@ -41,6 +42,7 @@
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
+#include "state/zmerge_session.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -216,6 +218,10 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* zb = dynamic_cast<const ZBufferSession*>(&s);
     const auto* ray = dynamic_cast<const RayCastSession*>(&s);
     const auto* scan = dynamic_cast<const ScanLineSession*>(&s);
+    const auto* merge = dynamic_cast<const ZMergeSession*>(&s);
+    if (merge)
+        detail = std::to_string(merge->lesson().grid.width) + "×" + std::to_string(merge->lesson().grid.height) +
+                 " pixels · " + std::string(algo::to_string(merge->lesson().depth_format));
     if (scan)
         detail = std::to_string(scan->lesson().grid.width) + "×" + std::to_string(scan->lesson().grid.height) +
                  " pixels · one-line z-buffer, " + std::string(algo::to_string(scan->lesson().depth_format));
@@ -256,6 +262,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (zb) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
     if (ray) raycast_image(*ray, 0, 0, view_w, view_h);
     if (scan) scanline_canvas(*scan, 0, 0, view_w, view_h);
+    if (merge) zmerge_canvas(*merge, 0, 0, view_w, view_h);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
@@ -264,6 +271,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (zb) zbuffer_state_panel(*zb, layout, actions);
     if (ray) raycast_state_panel(*ray, layout);
     if (scan) scanline_state_panel(*scan, layout);
+    if (merge) zmerge_state_panel(*merge, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

@@ -1,6 +1,6 @@
 #include "zbuffer/zbuffer_fill.h"
 
-#include <stdexcept>
+#include "zbuffer/z_merge.h"
 
 namespace hsr::algo {
 
@@ -68,19 +68,6 @@ ZBufferOptions zbuffer_options(const Scene& scene, Viewport viewport, DepthForma
             .detail = detail};
 }
 
-FrameDepth z_merge(const FrameDepth& a, const FrameDepth& b) {
-    if (a.image.width != b.image.width || a.image.height != b.image.height)
-        throw std::invalid_argument("z_merge: the two buffers differ in size");
-    FrameDepth c = b;
-    for (std::size_t k = 0; k < c.depth.size(); ++k)
-        if (a.depth[k] < b.depth[k]) {  // a is nearer
-            c.depth[k] = a.depth[k];
-            c.polygon[k] = a.polygon[k];
-            c.image.ids[k] = a.image.ids[k];
-            for (int ch = 0; ch < 3; ++ch) c.image.rgb[3 * k + std::size_t(ch)] = a.image.rgb[3 * k + std::size_t(ch)];
-        }
-    c.tested = a.tested + b.tested, c.written = a.written + b.written;
-    return c;
-}
+FrameDepth z_merge(const FrameDepth& a, const FrameDepth& b) { return z_merge_steps(a, b).run_to_end(); }
 
 }  // namespace hsr::algo

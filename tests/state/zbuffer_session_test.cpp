@@ -5,6 +5,7 @@
 
 #include "catch.h"
 #include "state/zbuffer_session.h"
+#include "state/zmerge_session.h"
 
 using namespace hsr::viz;
 using namespace hsr::algo;
@@ -81,4 +82,18 @@ TEST_CASE("a z-buffer lesson with a bad format or grid names the field and line"
     CHECK_THROWS_WITH(load_lesson(write("f.toml", "format = \"int8\"\n")), Catch::Contains("f.toml:4:") && Catch::Contains("'format'"));
     CHECK_THROWS_WITH(load_lesson(write("g.toml", "grid = [0, 24]\n")), Catch::Contains("g.toml:4:") && Catch::Contains("'grid'"));
     CHECK_THROWS_WITH(load_lesson(write("h.toml", "grid = [32]\n")), Catch::Contains("h.toml:4:") && Catch::Contains("grid"));
+}
+
+TEST_CASE("the z-merge lesson's merged image is the z-buffer of the whole scene", "[state][zbuffer][merge]") {
+    auto lesson = load_lesson(HSR_SOURCE_DIR "/lessons/12_z_merge.toml");
+    REQUIRE(lesson.algorithm.family == Family::zmerge);
+    ZMergeSession s(lesson);
+    s.seek_end();
+    Scene scene = lesson.scene;
+    scene.camera.aspect = double(lesson.grid.width) / lesson.grid.height;
+    const FrameDepth whole = zbuffer_fill(project_polygons(scene, lesson.grid), zbuffer_options(scene, lesson.grid, lesson.depth_format)).run_to_end();
+    CHECK(s.view().merged == whole.polygon);
+    CHECK(s.view().from_a_count > 0);
+    CHECK(s.view().from_b_count > 0);
+    CHECK(s.view().from_a_count + s.view().from_b_count == whole.polygon.size());
 }

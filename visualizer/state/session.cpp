@@ -6,6 +6,7 @@
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
+#include "state/zmerge_session.h"
 
 namespace hsr::viz {
 
@@ -17,6 +18,7 @@ std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
         case algo::Family::zbuffer: return std::make_unique<ZBufferSession>(std::move(lesson), options);
         case algo::Family::raycast: return std::make_unique<RayCastSession>(std::move(lesson), options);
         case algo::Family::scanline: return std::make_unique<ScanLineSession>(std::move(lesson), options);
+        case algo::Family::zmerge: return std::make_unique<ZMergeSession>(std::move(lesson), options);
     }
     return nullptr;
 }

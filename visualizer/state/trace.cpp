@@ -9,8 +9,10 @@
 #include "culling/backface.h"
 #include "raycast/ray_cast.h"
 #include "zbuffer/scanline.h"
+#include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
+#include "state/zmerge_session.h"
 
 namespace glm {
 // Points are written as [x, y, z, w].
@@ -89,6 +91,8 @@ HSR_TO_JSON(EdgeCrossed, edge, polygon, y, x, entering)
 HSR_TO_JSON(SpanColored, y, x_begin, x_end, polygon, id)
 HSR_TO_JSON(ScanFinished, lines, spans)
 HSR_TO_JSON(ScanStepBoundReached, max_crossings)
+HSR_TO_JSON(PixelMerged, x, y, depth_a, depth_b, from_a)
+HSR_TO_JSON(MergeFinished, from_a, from_b)
 
 inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
 inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
@@ -165,6 +169,9 @@ std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const st
 std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 
 void hash_line(TraceSummary& t, const std::string& line) {
     auto mix = [&](unsigned char c) {
@@ -228,6 +235,11 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             auto machine = algo::scan_line(algo::project_polygons(scene, lesson.grid),
                                            algo::scan_line_options(scene, lesson.grid, lesson.depth_format));
             return write_trace(machine, [](const algo::ScanLineEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::zmerge: {
+            ZMergeSession session(lesson);  // the two parts' buffers, as the window builds them
+            auto machine = algo::z_merge_steps(*session.view().a, *session.view().b);
+            return write_trace(machine, [](const algo::ZMergeEvent& e) { return algo::describe(e); }, out);
         }
     }
     return {};

@@ -1,0 +1,72 @@
+#include "state/zmerge_session.h"
+
+#include <array>
+
+#include "core/overloaded.h"
+
+namespace hsr::viz {
+namespace {
+
+using namespace hsr::algo;
+
+constexpr std::array<std::string_view, 6> merge_lines = {
+    "for (x = 0; x < XRES; x++)",
+    "  for (y = 0; y < YRES; y++) {",
+    "    Fc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Fa[x, y] : Fb[x, y];",
+    "    Zc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Za[x, y] : Zb[x, y];",
+    "  }",
+    "/* nearer: a smaller code here; the lecture's depths fall with distance */",
+};
+
+ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+    Scene scene = lesson.scene;
+    scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+    auto all = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
+    const std::size_t half = (all->size() + 1) / 2;
+    const ZBufferOptions o = zbuffer_options(scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
+    auto a = std::make_shared<const FrameDepth>(zbuffer_fill({all->begin(), all->begin() + std::ptrdiff_t(half)}, o).run_to_end());
+    auto b = std::make_shared<const FrameDepth>(zbuffer_fill({all->begin() + std::ptrdiff_t(half), all->end()}, o).run_to_end());
+    ZMergeView initial;
+    initial.viewport = lesson.grid;
+    initial.polygons = all;
+    initial.a = a, initial.b = b, initial.b_offset = half;
+    initial.merged.assign(a->polygon.size(), -2);
+    return ZMergeSession::PlayerType(z_merge_steps(*a, *b), std::move(initial), options);
+}
+
+}  // namespace
+
+void reduce(ZMergeView& v, const ZMergeEvent& event) {
+    std::visit(overloaded{
+                   [&](const PixelMerged& e) {
+                       const std::size_t k = std::size_t(e.y) * std::size_t(v.viewport.width) + std::size_t(e.x);
+                       const std::int32_t from_b = v.b->polygon[k] < 0 ? -1 : v.b->polygon[k] + std::int32_t(v.b_offset);
+                       v.merged[k] = e.from_a ? v.a->polygon[k] : from_b;
+                       v.x = e.x, v.y = e.y, v.depth_a = e.depth_a, v.depth_b = e.depth_b, v.from_a = e.from_a;
+                       ++(e.from_a ? v.from_a_count : v.from_b_count);
+                   },
+                   [&](const MergeFinished&) { v.done = true, v.x = v.y = -1; },
+               },
+               event);
+}
+
+std::size_t approx_bytes(const ZMergeView& v) { return sizeof(ZMergeView) + v.merged.capacity() * sizeof(std::int32_t); }
+
+ZMergeSession::ZMergeSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+
+std::span<const std::string_view> ZMergeSession::pseudocode() const { return merge_lines; }
+
+std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return describe(e); }
+
+int ZMergeSession::line_of(const ZMergeEvent& event) const {
+    return std::visit(overloaded{[](const PixelMerged&) { return 2; }, [](const MergeFinished&) { return 4; }},
+                      event);
+}
+
+// A Step is a column (the lecture's outer loop): its first pixel; the pixels below it are micro-steps.
+bool ZMergeSession::is_major(const ZMergeEvent& e) const {
+    const auto* p = std::get_if<PixelMerged>(&e);
+    return !p || p->y == 0;
+}
+
+}  // namespace hsr::viz

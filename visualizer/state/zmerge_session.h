@@ -1,0 +1,39 @@
+// A z-merge lesson: the scene's polygons in two parts (the first half, A, and the rest, B), each z-buffered on its
+// own, then merged pixel by pixel as the lecture gives it.
+#pragma once
+
+#include <memory>
+
+#include "state/session.h"
+#include "zbuffer/z_merge.h"
+
+namespace hsr::viz {
+
+struct ZMergeView {
+    algo::Viewport viewport;
+    std::shared_ptr<const std::vector<algo::ScreenPolygon>> polygons;  // all of them: A's, then B's
+    std::shared_ptr<const algo::FrameDepth> a, b;                       // the two parts' buffers, never changed
+    std::size_t b_offset = 0;            // B's polygon k is polygons[b_offset + k]
+    std::vector<std::int32_t> merged;    // polygon index per pixel so far (−1 background; unmerged pixels −2)
+    int x = -1, y = -1;                  // the pixel merged last
+    std::uint32_t depth_a = 0, depth_b = 0;
+    bool from_a = false;
+    std::uint64_t from_a_count = 0, from_b_count = 0;
+    bool done = false;
+};
+
+void reduce(ZMergeView& view, const algo::ZMergeEvent& event);
+std::size_t approx_bytes(const ZMergeView& view);
+
+class ZMergeSession : public PlayerSession<algo::ZMergeEvent, algo::FrameDepth, ZMergeView> {
+public:
+    explicit ZMergeSession(Lesson lesson, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+
+private:
+    std::string describe_event(const algo::ZMergeEvent& e) const override;
+    int line_of(const algo::ZMergeEvent& e) const override;
+    bool is_major(const algo::ZMergeEvent& e) const override;
+};
+
+}  // namespace hsr::viz
