@@ -29,6 +29,7 @@
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
 #include "render/raycast_renderer.h"
+#include "render/zbuffer_renderer.h"
 #include "render/gl.h"
 #include "render/orbit_camera.h"
 #include "render/palette.h"
@@ -58,6 +59,7 @@ struct Lessonplay {
     double tween = 1;                // 0 … 1 of the way from `before` to the current view
     static constexpr double tween_seconds = 0.25;
     bool animate = true;             // off for screenshots and recordings: they show each step as it ends
+    bool zbuffer_3d = false;         // z-buffer lessons: the scene in 3D instead of the fat pixels
 
     void load(const AppOptions& o) {
         try {
@@ -71,6 +73,7 @@ struct Lessonplay {
                 clip_view_bounds(clip->view(), clip->lesson().scene, centre, radius);
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
+            if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) zbuffer_view_bounds(zb->lesson().scene, centre, radius);
             if (const auto* ray = dynamic_cast<const RayCastSession*>(session.get())) {
                 raycast_view_bounds(ray->scene(), centre, radius);
                 camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
@@ -100,6 +103,7 @@ struct Lessonplay {
         if (!session) return;
         if (a.move_eye)
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
+        if (a.toggle_3d) zbuffer_3d = !zbuffer_3d;
         if (auto* zb = dynamic_cast<ZBufferSession*>(session.get())) {
             if (a.depth_format) zb->set_format(*a.depth_format);
             if (a.depth_range) zb->set_range(*a.depth_range);
@@ -163,6 +167,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_HOME: a.to_start = true; break;
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
+        case SDLK_3: a.toggle_3d = true; break;  // z-buffer lessons: fat pixels or 3D
         default: break;
     }
 }
@@ -230,6 +235,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
         detail = std::to_string(ray->lesson().grid.width) + "×" + std::to_string(ray->lesson().grid.height) +
                  " rays · double precision · " + std::string(algo::to_string(ray->view().acceleration));
     }
+    if (zb && lp.zbuffer_3d) draw_zbuffer_3d(zb->view(), zb->lesson().scene, r.batches, r.labels);
     if (zb)
         detail = std::to_string(zb->lesson().grid.width) + "×" + std::to_string(zb->lesson().grid.height) +
                  " pixels · " + std::string(algo::to_string(zb->format())) + " · top-left rule";
@@ -259,7 +265,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     glViewport(0, 0, px(layout.width), px(layout.height));
 
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
-    if (zb) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
+    if (zb && !lp.zbuffer_3d) zbuffer_canvas(*zb, 0, 0, view_w, view_h);
     if (ray) raycast_image(*ray, 0, 0, view_w, view_h);
     if (scan) scanline_canvas(*scan, 0, 0, view_w, view_h);
     if (merge) zmerge_canvas(*merge, 0, 0, view_w, view_h);
@@ -268,7 +274,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (clip) clip_state_panel(*clip, layout);
     if (bsp) bsp_state_panel(*bsp, layout);
     if (cull) cull_state_panel(*cull, layout);
-    if (zb) zbuffer_state_panel(*zb, layout, actions);
+    if (zb) zbuffer_state_panel(*zb, lp.zbuffer_3d, layout, actions);
     if (ray) raycast_state_panel(*ray, layout);
     if (scan) scanline_state_panel(*scan, layout);
     if (merge) zmerge_state_panel(*merge, layout);

@@ -149,8 +149,11 @@ Steps<RayCastEvent, Hit> walk_octree(const Octree* tree, const Primitives* prims
 }  // namespace
 
 Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y) {
+    return ndc_ray(camera, 2 * pixel_centre(x) / viewport.width - 1, 1 - 2 * pixel_centre(y) / viewport.height);
+}
+
+Ray ndc_ray(const Camera& camera, double nx, double ny) {
     const glm::dmat4 inverse = glm::inverse(view_projection(camera));
-    const double nx = 2 * pixel_centre(x) / viewport.width - 1, ny = 1 - 2 * pixel_centre(y) / viewport.height;
     const glm::dvec4 n = inverse * glm::dvec4(nx, ny, -1, 1), f = inverse * glm::dvec4(nx, ny, 1, 1);
     const Vec3 near = Vec3(n) / n.w, far = Vec3(f) / f.w;
     return {near, far - near};

@@ -53,5 +53,7 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions options)
 
 // The ray through the centre of pixel (x, y): origin on the near plane, origin + direction on the far plane.
 Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y);
+// The same for a point of the image in normalised device coordinates (−1 … 1, y up).
+Ray ndc_ray(const Camera& camera, double ndc_x, double ndc_y);
 
 }  // namespace hsr::algo

@@ -94,6 +94,18 @@ case "$case" in
     if "$hsrviz" render "$scene" --algorithm zbuffer --format int8 --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm raycast --accel kd --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm painter --out x.png 2>/dev/null; then exit 1; fi ;;
+  zbuffer)  # the z-buffer lesson in 3D (key 3): the scene, the frustum and the image; traces of every new family
+    "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot z3d.png --frames 6 --keys 3,End > out.txt
+    grep -q "at step 826 of 826" out.txt
+    "$png_check" z3d.png 1280 800
+    for lesson in 08_depth_precision 09_ray_casting_grid 10_scan_line 12_z_merge; do
+      "$hsrviz" trace "$src/lessons/$lesson.toml" --out "$lesson.jsonl" > /dev/null
+      test -s "$lesson.jsonl"
+    done
+    grep -q '"kind":"DepthTestFailed"' 08_depth_precision.jsonl
+    grep -q '"kind":"CellEntered"' 09_ray_casting_grid.jsonl
+    grep -q '"kind":"EdgeCrossed"' 10_scan_line.jsonl
+    grep -q '"kind":"PixelMerged"' 12_z_merge.jsonl ;;
   help)
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"

@@ -22,6 +22,7 @@ struct UiActions {
     std::optional<glm::dvec3> move_eye;  // the eye dragged to here (world space)
     std::optional<algo::DepthFormat> depth_format;  // z-buffer lessons: rerun with this format
     std::optional<algo::DepthRange> depth_range;    // z-buffer lessons: rerun with this near and far
+    bool toggle_3d = false;                         // z-buffer lessons: the fat pixels, or the scene in 3D
 };
 
 struct PlaybackState {

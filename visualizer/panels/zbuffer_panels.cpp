@@ -112,7 +112,7 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     ImGui::End();
 }
 
-void zbuffer_state_panel(const ZBufferSession& s, const PanelLayout& l, UiActions& out) {
+void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout& l, UiActions& out) {
     place_in_column(l, 2);
     const ZView& v = s.view();
     ImGui::Begin("Depth buffer", nullptr, fixed);
@@ -126,6 +126,9 @@ void zbuffer_state_panel(const ZBufferSession& s, const PanelLayout& l, UiAction
                 out.depth_format = formats[i];
         ImGui::EndCombo();
     }
+    ImGui::SameLine();
+    bool three_d = in_3d;
+    if (ImGui::Checkbox("3D view", &three_d)) out.toggle_3d = true;
     float near = float(v.range.near), far = float(v.range.far);
     ImGui::SetNextItemWidth(150);
     const bool near_moved = ImGui::SliderFloat("near", &near, 1e-3f, 10.0f, "%.4g", ImGuiSliderFlags_Logarithmic);

@@ -9,6 +9,7 @@ namespace hsr::viz {
 
 // Fills the view area (x, y, w, h in window points, top-left origin).
 void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h);
-void zbuffer_state_panel(const ZBufferSession& s, const PanelLayout& layout, UiActions& out);
+// `in_3d`: whether the view shows the scene in 3D (the checkbox's state)
+void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout& layout, UiActions& out);
 
 }  // namespace hsr::viz

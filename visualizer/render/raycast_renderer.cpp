@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "render/frustum.h"
 #include "render/palette.h"
 #include "render/scene_color.h"
 
@@ -36,18 +37,7 @@ void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& 
                 .line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
                       tested ? palette::current_edge : scene_color(scene, p.id, 1));
     }
-    // The view frustum: the rays of the image's four corners, near plane to far plane
-    const algo::Viewport vp = v.viewport;
-    const std::array<algo::Ray, 4> corners = {algo::pixel_ray(scene.camera, vp, 0, 0), algo::pixel_ray(scene.camera, vp, vp.width - 1, 0),
-                                              algo::pixel_ray(scene.camera, vp, vp.width - 1, vp.height - 1),
-                                              algo::pixel_ray(scene.camera, vp, 0, vp.height - 1)};
-    const glm::vec4 frustum(0.7f, 0.72f, 0.76f, 0.35f);
-    for (std::size_t i = 0; i < 4; ++i) {
-        const algo::Ray &a = corners[i], &b = corners[(i + 1) % 4];
-        out.faint.line(glm::vec3(scene.camera.eye), glm::vec3(a.origin + a.direction), frustum);
-        out.faint.line(glm::vec3(a.origin), glm::vec3(b.origin), frustum);
-        out.faint.line(glm::vec3(a.origin + a.direction), glm::vec3(b.origin + b.direction), frustum);
-    }
+    draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
     labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
     // The grid and the cells the ray has walked

@@ -1,0 +1,24 @@
+// The view frustum of a camera, as lines: the four corner rays from the eye to the far plane, and the near and far
+// rectangles.
+#pragma once
+
+#include <array>
+
+#include "raycast/ray_cast.h"
+#include "render/line_batch.h"
+
+namespace hsr::viz {
+
+inline void draw_frustum(const algo::Camera& camera, LineBatch& out, glm::vec4 colour = {0.7f, 0.72f, 0.76f, 0.35f}) {
+    const std::array<algo::Ray, 4> corners = {algo::ndc_ray(camera, -1, 1), algo::ndc_ray(camera, 1, 1),
+                                              algo::ndc_ray(camera, 1, -1), algo::ndc_ray(camera, -1, -1)};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const algo::Ray &a = corners[i], &b = corners[(i + 1) % 4];
+        out.line(glm::vec3(camera.projection == algo::Projection::perspective ? camera.eye : a.origin),
+                 glm::vec3(a.origin + a.direction), colour);
+        out.line(glm::vec3(a.origin), glm::vec3(b.origin), colour);
+        out.line(glm::vec3(a.origin + a.direction), glm::vec3(b.origin + b.direction), colour);
+    }
+}
+
+}  // namespace hsr::viz
