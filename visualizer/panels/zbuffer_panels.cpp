@@ -136,10 +136,23 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
     ImGui::SetNextItemWidth(150);
     const bool far_moved = ImGui::SliderFloat("far", &far, 1.0f, 1e5f, "%.4g", ImGuiSliderFlags_Logarithmic);
     if ((near_moved || far_moved) && near < far) out.depth_range = algo::DepthRange{near, far};
-    const double z = v.pixel_x >= 0 ? eye_distance(v.pixel_depth, v.range) : v.range.far;
     ImGui::TextColored(dim_text, "%s stored values are nearer · far code %llu", algo::smaller_is_nearer(v.format) ? "smaller" : "larger",
                        (unsigned long long)v.far_code);
-    ImGui::Text("smallest resolvable step at z = %.4g: %.4g", z, algo::resolvable_step(v.format, z, v.range));
+    // The distance the resolvable step is shown for: the user's choice, kept in ImGui's own widget storage as a
+    // slider's value is (the geometric mean of near and far until moved)
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID probe_id = ImGui::GetID("probe distance");
+    float probe = storage->GetFloat(probe_id, float(std::sqrt(v.range.near * v.range.far)));
+    ImGui::SetNextItemWidth(150);
+    if (ImGui::SliderFloat("distance", &probe, float(v.range.near), float(v.range.far), "%.4g", ImGuiSliderFlags_Logarithmic))
+        storage->SetFloat(probe_id, probe);
+    const double z = std::clamp(double(probe), v.range.near, v.range.far);
+    ImGui::SameLine();
+    ImGui::Text("resolvable step there: %.4g", algo::resolvable_step(v.format, z, v.range));
+    if (v.pixel_x >= 0) {
+        const double zp = eye_distance(v.pixel_depth, v.range);
+        ImGui::TextColored(dim_text, "at the pixel under test, z = %.4g: %.4g", zp, algo::resolvable_step(v.format, zp, v.range));
+    }
     if (v.pixel_x >= 0)
         ImGui::Text("pixel (%d, %d): new %llu %s stored %llu", v.pixel_x, v.pixel_y, (unsigned long long)v.incoming,
                     v.incoming < v.stored ? "<" : "≥", (unsigned long long)v.stored);
