@@ -28,6 +28,7 @@
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
+#include "render/frustum.h"
 #include "render/raycast_renderer.h"
 #include "render/zbuffer_renderer.h"
 #include "render/gl.h"
@@ -73,9 +74,9 @@ struct Lessonplay {
                 clip_view_bounds(clip->view(), clip->lesson().scene, centre, radius);
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
-            if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) zbuffer_view_bounds(zb->lesson().scene, centre, radius);
+            if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) scene_bounds(zb->lesson().scene, centre, radius);
             if (const auto* ray = dynamic_cast<const RayCastSession*>(session.get())) {
-                raycast_view_bounds(ray->scene(), centre, radius);
+                scene_bounds(ray->scene(), centre, radius);
                 camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
             }
             if (const auto* bsp = dynamic_cast<const BspSession*>(session.get())) {

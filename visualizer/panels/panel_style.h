@@ -26,6 +26,14 @@ inline void place(float x, float y, float w, float h) {
     ImGui::SetNextWindowSize(ImVec2(w, h));
 }
 
+// A window without decoration over the view area, for a canvas drawn with ImGui's draw list.
+inline ImDrawList* begin_canvas(const char* name, float x, float y, float w, float h) {
+    place(x, y, w, h);
+    ImGui::Begin(name, nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
+                                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
+    return ImGui::GetWindowDrawList();
+}
+
 inline void place_in_column(const PanelLayout& l, int panel) {
     const auto slot = l.slot(panel);
     place(l.width - l.side, slot.y, l.side, slot.h);

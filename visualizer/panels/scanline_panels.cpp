@@ -12,10 +12,7 @@ namespace hsr::viz {
 
 void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float h) {
     const ScanView& v = s.view();
-    place(x, y, w, h);
-    ImGui::Begin("##scanline canvas", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
-                                                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
-    ImDrawList* d = ImGui::GetWindowDrawList();
+    ImDrawList* d = begin_canvas("##scanline canvas", x, y, w, h);
     const float margin = 24;
     const float cell = std::max(2.0f, std::min((w - 2 * margin) / float(v.viewport.width), (h - 2 * margin - 24) / float(v.viewport.height)));
     const ImVec2 o(x + margin, y + margin + 20);

@@ -80,10 +80,7 @@ void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
 
 void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h) {
     const ZView& v = s.view();
-    place(x, y, w, h);
-    ImGui::Begin("##zbuffer canvas", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
-                                                  ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
-    ImDrawList* d = ImGui::GetWindowDrawList();
+    ImDrawList* d = begin_canvas("##zbuffer canvas", x, y, w, h);
     const float margin = 24, diagram = 70;
     const float cell = std::max(2.0f, std::min((w - 3 * margin) / (2.0f * float(v.viewport.width)),
                                                (h - 2 * margin - diagram - 24) / float(v.viewport.height)));

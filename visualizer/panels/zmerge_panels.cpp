@@ -11,10 +11,7 @@ namespace hsr::viz {
 
 void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
     const ZMergeView& v = s.view();
-    place(x, y, w, h);
-    ImGui::Begin("##zmerge canvas", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBackground |
-                                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
-    ImDrawList* d = ImGui::GetWindowDrawList();
+    ImDrawList* d = begin_canvas("##zmerge canvas", x, y, w, h);
     const float margin = 20;
     const float cell = std::max(2.0f, std::min((w - 4 * margin) / (3.0f * float(v.viewport.width)), (h - 2 * margin - 40) / float(v.viewport.height)));
     const float step = cell * float(v.viewport.width) + margin;

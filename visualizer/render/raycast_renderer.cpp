@@ -64,12 +64,4 @@ void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& 
     }
 }
 
-void raycast_view_bounds(const algo::Scene& scene, glm::vec3& centre, float& radius) {
-    Vec3 lo = scene.camera.eye, hi = scene.camera.eye;
-    for (const auto& p : scene.polygons)
-        for (const auto& q : p.vertices) lo = glm::min(lo, Vec3(q)), hi = glm::max(hi, Vec3(q));
-    centre = glm::vec3((lo + hi) * 0.5);
-    radius = std::max(0.5f, float(glm::length(hi - lo) * 0.5));
-}
-
 }  // namespace hsr::viz

@@ -49,12 +49,4 @@ void draw_zbuffer_3d(const ZView& v, const algo::Scene& scene, LineBatches& out,
     }
 }
 
-void zbuffer_view_bounds(const algo::Scene& scene, glm::vec3& centre, float& radius) {
-    Vec3 lo = scene.camera.eye, hi = scene.camera.eye;
-    for (const auto& p : scene.polygons)
-        for (const auto& q : p.vertices) lo = glm::min(lo, Vec3(q)), hi = glm::max(hi, Vec3(q));
-    centre = glm::vec3((lo + hi) * 0.5);
-    radius = std::max(0.5f, float(glm::length(hi - lo) * 0.5));
-}
-
 }  // namespace hsr::viz

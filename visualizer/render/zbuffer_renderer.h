@@ -12,6 +12,5 @@
 namespace hsr::viz {
 
 void draw_zbuffer_3d(const ZView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
-void zbuffer_view_bounds(const algo::Scene& scene, glm::vec3& centre, float& radius);
 
 }  // namespace hsr::viz

@@ -72,6 +72,12 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
     return lesson;
 }
 
+algo::Scene grid_scene(const Lesson& lesson) {
+    algo::Scene s = lesson.scene;
+    s.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+    return s;
+}
+
 std::string data_dir() {
     if (const char* d = std::getenv("HSRVIZ_DATA"); d && *d) return d;
     return HSR_SOURCE_DIR;

@@ -38,6 +38,9 @@ struct Lesson {
     algo::Scene scene;
 };
 
+// The lesson's scene with its camera's aspect set to the lesson's grid (the pixel lessons render into it).
+algo::Scene grid_scene(const Lesson& lesson);
+
 // Loads a lesson or a scene file; throws algo::LoadError naming file, line, column and field.
 Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm = std::nullopt);
 

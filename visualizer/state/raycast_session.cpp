@@ -23,11 +23,6 @@ constexpr std::array<std::string_view, 10> cast_lines = {
     "    p sees p -> nearest_primitive",
 };
 
-Scene with_aspect(Scene s, Viewport grid) {
-    s.camera.aspect = double(grid.width) / double(grid.height);
-    return s;
-}
-
 RayCastSession::PlayerType make_player(const Scene& scene, Viewport grid, Acceleration a, PlayerOptions options) {
     RayView initial;
     initial.viewport = grid;
@@ -50,9 +45,8 @@ RayCastSession::PlayerType make_player(const Scene& scene, Viewport grid, Accele
 }  // namespace
 
 RayCastSession::RayCastSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(with_aspect(lesson.scene, lesson.grid), lesson.grid,
-                                        Acceleration(lesson.algorithm.variant), options)),
-      scene_(with_aspect(lesson.scene, lesson.grid)) {}
+    : PlayerSession(lesson, make_player(grid_scene(lesson), lesson.grid, Acceleration(lesson.algorithm.variant), options)),
+      scene_(grid_scene(lesson)) {}
 
 std::span<const std::string_view> RayCastSession::pseudocode() const { return cast_lines; }
 

@@ -25,8 +25,7 @@ constexpr std::array<std::string_view, 11> scan_lines = {
 };
 
 ScanLineSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
-    Scene scene = lesson.scene;
-    scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+    const Scene scene = grid_scene(lesson);
     auto polygons = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     ScanView initial = initial_view(polygons, lesson.grid);
     return ScanLineSession::PlayerType(scan_line(*polygons, scan_line_options(scene, lesson.grid, lesson.depth_format)),

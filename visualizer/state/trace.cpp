@@ -217,21 +217,18 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             return write_trace(machine, [](const algo::CullEvent& e) { return algo::describe(e); }, out);
         }
         case algo::Family::zbuffer: {
-            algo::Scene scene = lesson.scene;
-            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            const algo::Scene scene = grid_scene(lesson);
             auto machine = algo::zbuffer_fill(algo::project_polygons(scene, lesson.grid),
                                               algo::zbuffer_options(scene, lesson.grid, lesson.depth_format));
             return write_trace(machine, [&](const algo::ZBufferEvent& e) { return algo::describe(e, lesson.depth_format); }, out);
         }
         case algo::Family::raycast: {
-            algo::Scene scene = lesson.scene;
-            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            const algo::Scene scene = grid_scene(lesson);
             auto machine = algo::ray_cast(scene, {.viewport = lesson.grid, .acceleration = algo::Acceleration(lesson.algorithm.variant)});
             return write_trace(machine, [](const algo::RayCastEvent& e) { return algo::describe(e); }, out);
         }
         case algo::Family::scanline: {
-            algo::Scene scene = lesson.scene;
-            scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+            const algo::Scene scene = grid_scene(lesson);
             auto machine = algo::scan_line(algo::project_polygons(scene, lesson.grid),
                                            algo::scan_line_options(scene, lesson.grid, lesson.depth_format));
             return write_trace(machine, [](const algo::ScanLineEvent& e) { return algo::describe(e); }, out);

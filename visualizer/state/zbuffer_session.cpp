@@ -31,11 +31,6 @@ ZBufferSession::PlayerType make_player(const Scene& scene, Viewport grid, DepthF
     return ZBufferSession::PlayerType(zbuffer_fill(*polygons, o), std::move(initial), options);
 }
 
-Scene with_grid_aspect(Scene s, Viewport grid) {
-    s.camera.aspect = double(grid.width) / double(grid.height);
-    return s;
-}
-
 // How many pixels the finished fill shows differently from the ray cast through the same pixel centres.
 std::size_t unlike_ray_cast(const Scene& scene, Viewport grid, DepthFormat format) {
     const FrameDepth z = zbuffer_fill(project_polygons(scene, grid), zbuffer_options(scene, grid, format, EventDetail::polygon)).run_to_end();
@@ -48,8 +43,8 @@ std::size_t unlike_ray_cast(const Scene& scene, Viewport grid, DepthFormat forma
 }  // namespace
 
 ZBufferSession::ZBufferSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(with_grid_aspect(lesson.scene, lesson.grid), lesson.grid, lesson.depth_format, options)),
-      scene_(with_grid_aspect(lesson.scene, lesson.grid)),
+    : PlayerSession(lesson, make_player(grid_scene(lesson), lesson.grid, lesson.depth_format, options)),
+      scene_(grid_scene(lesson)),
       format_(lesson.depth_format),
       options_(options),
       unlike_ray_cast_(unlike_ray_cast(scene_, lesson.grid, format_)) {}

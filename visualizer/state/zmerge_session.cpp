@@ -19,8 +19,7 @@ constexpr std::array<std::string_view, 6> merge_lines = {
 };
 
 ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
-    Scene scene = lesson.scene;
-    scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+    const Scene scene = grid_scene(lesson);
     auto all = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     const std::size_t half = (all->size() + 1) / 2;
     const ZBufferOptions o = zbuffer_options(scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
