@@ -17,7 +17,7 @@ Image::Image(int w, int h, Color background)
 }
 
 std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::span<const Vec3> polygon,
-                          std::uint16_t id, Color color) {
+                          SceneId id, Color color) {
     std::vector<glm::dvec4> clip;
     for (const Vec3& v : polygon) clip.push_back(view_projection * glm::dvec4(v, 1.0));
     const Viewport viewport{image.width, image.height};

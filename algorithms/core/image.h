@@ -18,14 +18,14 @@ namespace hsr::algo {
 struct Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgb;   // row 0 is the top
-    std::vector<std::uint16_t> ids;  // the scene's id of the primitive painted last, 0 for background
+    std::vector<SceneId> ids;  // the scene's id of the primitive painted last, 0 for background
 
     Image(int w, int h, Color background = {0, 0, 0});
-    std::uint16_t id(int x, int y) const { return ids[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    SceneId id(int x, int y) const { return ids[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
 };
 
 // Paints the polygon (world space, 3 or more vertices) seen through view_projection. Returns the pixels covered.
 std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::span<const Vec3> polygon,
-                          std::uint16_t id, Color color);
+                          SceneId id, Color color);
 
 }  // namespace hsr::algo

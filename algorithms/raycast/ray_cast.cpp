@@ -206,7 +206,7 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
                 id = p.id;
                 out.polygon[k] = std::int32_t(prims->scene_index[std::size_t(best.index)]);
                 out.t[k] = best.t;
-                out.image.ids[k] = std::uint16_t(id);
+                out.image.ids[k] = id;
                 out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
             }
             co_yield RayFinished{x, y, out.polygon[k], id, best.t, std::uint32_t(tally.tests - before)};

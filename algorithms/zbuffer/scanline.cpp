@@ -111,7 +111,7 @@ Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, 
             const Color c = owner < 0 ? o.background : polygons[std::size_t(owner)].color;
             for (int x = x0; x < x1; ++x) {
                 const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                out.polygon[k] = owner, out.depth[k] = line_depth[std::size_t(x)], out.image.ids[k] = std::uint16_t(id);
+                out.polygon[k] = owner, out.depth[k] = line_depth[std::size_t(x)], out.image.ids[k] = id;
                 out.image.rgb[3 * k] = c.r, out.image.rgb[3 * k + 1] = c.g, out.image.rgb[3 * k + 2] = c.b;
             }
             co_yield SpanColored{y, x0, x1, owner, id};

@@ -45,7 +45,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                     if (per_pixel) co_yield DepthWritten{x, y, index, out.polygon[k], stored, incoming};
                     out.depth[k] = std::uint32_t(incoming);
                     out.polygon[k] = std::int32_t(index);
-                    out.image.ids[k] = std::uint16_t(p.id);
+                    out.image.ids[k] = p.id;
                     out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g;
                     out.image.rgb[3 * k + 2] = p.color.b;
                     ++written, ++out.written;

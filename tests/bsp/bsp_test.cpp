@@ -317,7 +317,7 @@ TEST_CASE("the painter's fill in BSP order gives the ray cast's id image through
         Image image(w, h);
         for (BspPolygonId p : paint_order(b.tree, camera.eye)) {
             const BspPolygon& poly = b.tree.polygons[std::size_t(p)];
-            paint_polygon(image, vp_wide, poly.vertices, std::uint16_t(poly.source), {255, 255, 255});
+            paint_polygon(image, vp_wide, poly.vertices, poly.source, {255, 255, 255});
         }
         std::vector<std::vector<Vec3>> polys;
         std::vector<Plane> planes;

@@ -153,7 +153,7 @@ TEST_CASE("event detail changes what is told, never the image", "[zbuffer][event
     std::vector<ScreenPolygon> polys{ndc_triangle(1, {-1, -1}, {1, -1}, {0, 1}, 0.2, vp),
                                      ndc_triangle(2, {-1, 1}, {1, 1}, {0, -1}, -0.2, vp)};
     std::size_t counts[3] = {};
-    std::vector<std::uint16_t> ids[3];
+    std::vector<SceneId> ids[3];
     for (EventDetail d : {EventDetail::polygon, EventDetail::span, EventDetail::pixel}) {
         auto m = zbuffer_fill(polys, {.viewport = vp, .detail = d});
         for (const auto& e : m) ++counts[int(d)], (void)e;

@@ -14,6 +14,8 @@ bool write_rgb_png(const std::string& path, const algo::Image& image) {
 }
 
 bool write_ids_png(const std::string& path, const algo::Image& image) {
+    for (algo::SceneId id : image.ids)
+        if (id < 0 || id > 65535) return false;  // a 16-bit sample cannot hold it
     std::vector<png_byte> row(std::size_t(image.width) * 2);  // before setjmp: a longjmp must not skip a destructor
     FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) return false;
@@ -30,7 +32,7 @@ bool write_ids_png(const std::string& path, const algo::Image& image) {
     png_write_info(png, info);
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {  // PNG samples are big-endian
-            const std::uint16_t id = image.id(x, y);
+            const auto id = std::uint16_t(image.id(x, y));  // 0 … 65535, checked above
             row[2 * std::size_t(x)] = png_byte(id >> 8);
             row[2 * std::size_t(x) + 1] = png_byte(id & 0xff);
         }

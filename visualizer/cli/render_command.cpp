@@ -60,7 +60,7 @@ algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::V
         algo::Color color{200, 200, 200};
         for (const auto& sp : scene.polygons)
             if (sp.id == poly.source) color = sp.color;
-        algo::paint_polygon(image, view_projection, poly.vertices, std::uint16_t(poly.source), color);
+        algo::paint_polygon(image, view_projection, poly.vertices, poly.source, color);
     }
     std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
                 o.splitter.c_str(), scene.polygons.size(), tree.polygons.size(), tree.splits, tree.nodes.size(),
