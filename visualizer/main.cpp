@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
     hsr::viz::RenderOptions render;
     CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
     render_cmd->add_option("scene", render.scene, "Scene file (world coordinates)")->required()->check(CLI::ExistingFile);
-    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, raycast");
+    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, raycast, depth-sort");
     render_cmd->add_option("--format", render.format, "Depth format for zbuffer and scanline: int16, int24 (default), int32, float32, float32-reversed, linear24");
     render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");

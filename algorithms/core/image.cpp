@@ -20,6 +20,10 @@ std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::
                           SceneId id, Color color) {
     std::vector<glm::dvec4> clip;
     for (const Vec3& v : polygon) clip.push_back(view_projection * glm::dvec4(v, 1.0));
+    return paint_clip_polygon(image, std::move(clip), id, color);
+}
+
+std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color) {
     const Viewport viewport{image.width, image.height};
     const ScreenPolygon p = project_polygon(id, color, std::move(clip), viewport);
     std::size_t covered = 0;

@@ -27,5 +27,7 @@ struct Image {
 // Paints the polygon (world space, 3 or more vertices) seen through view_projection. Returns the pixels covered.
 std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::span<const Vec3> polygon,
                           SceneId id, Color color);
+// The same for a polygon given in clip space (x, y, z, w), or in normalised device coordinates with w = 1.
+std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color);
 
 }  // namespace hsr::algo

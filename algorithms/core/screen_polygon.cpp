@@ -42,6 +42,8 @@ DepthPlane depth_plane(const std::vector<glm::dvec3>& v) {
     return {centre.z + (n.x * centre.x + n.y * centre.y) / n.z, -n.x / n.z, -n.y / n.z};
 }
 
+}  // namespace
+
 void require_convex(const ScenePolygon& p) {
     std::vector<Vec3> v;
     for (const auto& q : p.vertices) v.emplace_back(q);
@@ -57,7 +59,6 @@ void require_convex(const ScenePolygon& p) {
     }
 }
 
-}  // namespace
 
 ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport) {
     ScreenPolygon out{.id = id, .color = color};

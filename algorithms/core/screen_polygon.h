@@ -63,6 +63,9 @@ struct Viewport {
 // InvalidInput names a polygon that is not convex or has NaN coordinates.
 std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewport);
 
+// Throws InvalidInput naming the polygon unless it is convex (world space; a polygon with no area passes).
+void require_convex(const ScenePolygon& p);
+
 // One polygon given in clip space (x, y, z, w), as above.
 ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport);
 

@@ -91,6 +91,10 @@ case "$case" in
     # the BSP painter and the z-buffer share the fill; the ray cast's exact edges may differ in a few edge pixels
     "$png_check" --same-ids z_ids.png bsp_ids.png 0
     "$png_check" --same-ids z_ids.png r_ids.png 30
+    # depth sort paints in its own order with the same fill: its walls are split where they cross
+    "$hsrviz" render "$scene" --algorithm depth-sort --size 200x150 --out d.png --ids d_ids.png > d.txt
+    grep -q "depth-sort: 4 polygons" d.txt
+    "$png_check" --same-ids z_ids.png d_ids.png 30
     if "$hsrviz" render "$scene" --algorithm zbuffer --format int8 --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm raycast --accel kd --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm painter --out x.png 2>/dev/null; then exit 1; fi ;;

@@ -1,4 +1,4 @@
-// hsrviz render SCENE --algorithm bsp|zbuffer|raycast|scanline [options] --out IMAGE.png [--ids IDS.png]
+// hsrviz render SCENE --algorithm bsp|zbuffer|raycast|scanline|depth-sort [options] --out IMAGE.png [--ids IDS.png]
 // Renders a scene's polygons headless with a hidden-surface algorithm and writes the colour image and, with --ids,
 // the visible primitive id of every pixel (16-bit grey PNG, 0 for background, ids as the scene numbers them).
 #pragma once

@@ -1,0 +1,201 @@
+#include "depth_sort/depth_sort.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "clipping/sutherland_hodgman.h"
+#include "core/numeric.h"
+#include "core/screen_polygon.h"
+
+namespace hsr::algo {
+namespace {
+
+const Tolerance tol = Tolerance::for_extent(2);  // the canonical view volume is 2 units across
+
+struct Extents {
+    double min_x, max_x, min_y, max_y, min_z, max_z;
+    Plane plane;
+    bool has_plane;
+};
+
+Extents extents_of(const SortPolygon& p) {
+    Extents e{1e300, -1e300, 1e300, -1e300, 1e300, -1e300, {}, false};
+    for (const Vec3& v : p.vertices) {
+        e.min_x = std::min(e.min_x, v.x), e.max_x = std::max(e.max_x, v.x);
+        e.min_y = std::min(e.min_y, v.y), e.max_y = std::max(e.max_y, v.y);
+        e.min_z = std::min(e.min_z, v.z), e.max_z = std::max(e.max_z, v.z);
+    }
+    e.has_plane = plane_of(p.vertices, e.plane);
+    return e;
+}
+
+// The side of a plane the viewpoint (at z = −∞) is on: +1 front, −1 back, 0 when the plane holds the view rays.
+int viewer_side(const Extents& e) {
+    if (!e.has_plane || std::abs(e.plane.n.z) <= tol.epsilon) return 0;
+    return e.plane.n.z < 0 ? 1 : -1;
+}
+
+// Tests 3 and 4 (and their swapped forms): does every vertex of `polygon` lie on `want` side of the plane (+1 the
+// viewer's, −1 the other), or on it? The counts become the event's numbers.
+TestTried plane_test(OrderTest test, const std::vector<Vec3>& polygon, const Extents& of_plane, bool viewer_half) {
+    const int v = viewer_side(of_plane);
+    double far_side = 0, near_side = 0, on = 0;
+    for (const Vec3& p : polygon) {
+        const Side s = classify(of_plane.plane, p, tol);
+        if (s == Side::on) ++on;
+        else if ((s == Side::front ? 1 : -1) == v) ++near_side;
+        else ++far_side;
+    }
+    const bool passed = v != 0 && (viewer_half ? far_side == 0 : near_side == 0);
+    return {test, passed, far_side, near_side, on, double(v)};
+}
+
+double projected_area(const std::vector<Vec3>& p) {
+    double twice = 0;
+    for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) twice += p[j].x * p[i].y - p[i].x * p[j].y;
+    return std::abs(twice) / 2;
+}
+
+// Test 5: do the projections onto the screen (x, y) overlap? Separating axes of two convex polygons; touching
+// counts as not overlapping, and so does a polygon seen edge-on (its projection covers nothing).
+bool projections_overlap(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    if (projected_area(a) <= tol.epsilon || projected_area(b) <= tol.epsilon) return false;
+    for (const auto* poly : {&a, &b})
+        for (std::size_t i = 0, j = poly->size() - 1; i < poly->size(); j = i++) {
+            const glm::dvec2 axis((*poly)[i].y - (*poly)[j].y, (*poly)[j].x - (*poly)[i].x);
+            if (axis.x == 0 && axis.y == 0) continue;
+            double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
+            for (const Vec3& p : a) a0 = std::min(a0, axis.x * p.x + axis.y * p.y), a1 = std::max(a1, axis.x * p.x + axis.y * p.y);
+            for (const Vec3& p : b) b0 = std::min(b0, axis.x * p.x + axis.y * p.y), b1 = std::max(b1, axis.x * p.x + axis.y * p.y);
+            const double slack = tol.epsilon * (std::abs(axis.x) + std::abs(axis.y));
+            if (a1 <= b0 + slack || b1 <= a0 + slack) return false;
+        }
+    return true;
+}
+
+// Tests 1, 2, 3, 4, 5 in order of cost: may R be drawn before Q?
+std::array<TestTried, 5> r_before_q_tests(const SortPolygon& r, const Extents& er, const SortPolygon& q, const Extents& eq) {
+    return {{
+        {OrderTest::x_extents, er.max_x <= eq.min_x || eq.max_x <= er.min_x, er.min_x, er.max_x, eq.min_x, eq.max_x},
+        {OrderTest::y_extents, er.max_y <= eq.min_y || eq.max_y <= er.min_y, er.min_y, er.max_y, eq.min_y, eq.max_y},
+        plane_test(OrderTest::r_behind_q, r.vertices, eq, false),
+        plane_test(OrderTest::q_in_front_of_r, q.vertices, er, true),
+        {OrderTest::projections, false, 0, 0, 0, 0},  // filled in only if reached: it is the costly one
+    }};
+}
+
+}  // namespace
+
+Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polygons, DepthSortOptions o) {
+    DepthSortResult out;
+    out.polygons = std::move(polygons);
+    std::vector<Extents> ext;
+    for (const auto& p : out.polygons) ext.push_back(extents_of(p));
+    std::vector<bool> moved(out.polygons.size(), false);
+    // Find MINZ and MAXZ; sort, farthest first
+    std::vector<std::uint32_t> list(out.polygons.size());
+    for (std::uint32_t i = 0; i < list.size(); ++i) list[i] = i;
+    std::stable_sort(list.begin(), list.end(), [&](std::uint32_t a, std::uint32_t b) { return ext[a].max_z > ext[b].max_z; });
+    {
+        const DepthSortEvent sorted = ListSorted{list};
+        co_yield sorted;
+    }
+    // Resolve overlaps in z, then draw the head of the list
+    while (!list.empty()) {
+        const std::uint32_t r = list.front();
+        bool draw_r = true;
+        for (std::size_t k = 1; k < list.size() && draw_r; ++k) {
+            const std::uint32_t q = list[k];
+            if (ext[q].max_z <= ext[r].min_z || ext[r].max_z <= ext[q].min_z) continue;  // z extents apart
+            if (++out.pairs > o.max_pairs) {
+                out.bounded = true;
+                co_yield SortBoundReached{SortBound::pairs, o.max_pairs};
+                co_return out;
+            }
+            co_yield PairExamined{r, q, ext[r].min_z, ext[r].max_z, ext[q].min_z, ext[q].max_z};
+            bool settled = false;
+            for (TestTried t : r_before_q_tests(out.polygons[r], ext[r], out.polygons[q], ext[q])) {
+                if (t.test == OrderTest::projections)
+                    t.passed = !projections_overlap(out.polygons[r].vertices, out.polygons[q].vertices), t.a = !t.passed;
+                co_yield t;
+                if ((settled = t.passed)) {
+                    ++out.decided_by[int(t.test)];
+                    break;
+                }
+            }
+            if (settled) continue;
+            // Swap the roles of R and Q and retry tests 3 and 4: should Q be drawn first?
+            const TestTried swapped[2] = {plane_test(OrderTest::q_behind_r, out.polygons[q].vertices, ext[r], false),
+                                          plane_test(OrderTest::r_in_front_of_q, out.polygons[r].vertices, ext[q], true)};
+            bool q_first = false;
+            for (const TestTried& t : swapped) {
+                co_yield t;
+                if ((q_first = t.passed)) {
+                    ++out.decided_by[int(t.test)];
+                    break;
+                }
+            }
+            draw_r = false;
+            if (q_first && !moved[q]) {  // Q goes to the head of the list
+                moved[q] = true;
+                ++out.moves;
+                list.erase(list.begin() + std::ptrdiff_t(k));
+                list.insert(list.begin(), q);
+                co_yield PolygonMoved{q, r};
+                break;
+            }
+            if (q_first) co_yield CycleDetected{q};
+            // Split: Q by R's plane if that cuts it, else R by Q's plane
+            if (out.splits == o.max_splits) {
+                out.bounded = true;
+                co_yield SortBoundReached{SortBound::splits, o.max_splits};
+                co_return out;
+            }
+            std::uint32_t cut = q, by = r;
+            if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
+            if (!ext[by].has_plane || classify(ext[by].plane, out.polygons[cut].vertices, tol) != PolygonSide::spanning) {
+                draw_r = true;  // neither cuts the other: nothing can order them better than the list does
+                continue;
+            }
+            const SplitParts parts = split(ext[by].plane, out.polygons[cut].vertices, tol);
+            const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
+            for (const auto* part : {&parts.front, &parts.back}) {
+                out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part});
+                ext.push_back(extents_of(out.polygons.back()));
+                moved.push_back(false);
+            }
+            ++out.splits;
+            const auto at = std::find(list.begin(), list.end(), cut);
+            *at = back;
+            list.insert(at + 1, front);
+            co_yield PolygonCut{cut, by, front, back};
+        }
+        if (!draw_r) continue;
+        list.erase(list.begin());
+        out.order.push_back(r);
+        co_yield PolygonPainted{r, out.polygons[r].id};
+    }
+    co_yield DepthSortFinished{std::uint32_t(out.order.size()), out.splits, out.moves, out.pairs};
+    co_return out;
+}
+
+std::vector<SortPolygon> sort_polygons(const Scene& scene) {
+    std::vector<SortPolygon> out;
+    for (const ScenePolygon& p : scene.polygons) {
+        for (std::size_t k = 0; k < p.vertices.size(); ++k)
+            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
+        if (p.vertices.size() < 3) continue;
+        if (scene.coordinates == Coordinates::world) require_convex(p);
+        ClipPolygon clip{p.id, {}};
+        for (const auto& v : p.vertices) clip.vertices.push_back(to_clip(scene, v));
+        const PolygonClip visible = sutherland_hodgman(std::move(clip), {.space = ClipSpace::homogeneous}).run_to_end();
+        if (visible.vertices.size() < 3) continue;  // wholly outside the view volume
+        SortPolygon s{p.id, p.color, {}};
+        for (const Vec4& c : visible.vertices) s.vertices.push_back(Vec3(c) / c.w);
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+}  // namespace hsr::algo

@@ -1,0 +1,214 @@
+// Newell's depth sort: each test decides when it should, cycles and piercing pairs end with a split and the right
+// image, and on random scenes the painter's image in the final order is the ray cast's but for boundary pixels.
+#include "catch.h"
+#include "core/image.h"
+#include "depth_sort/depth_sort.h"
+#include "raycast/ray_cast.h"
+#include "scene/random_scene.h"
+
+using namespace hsr::algo;
+
+namespace {
+
+SortPolygon poly(SceneId id, std::vector<Vec3> v) { return {id, {}, std::move(v)}; }
+
+// A bar of width 0.16 along a segment in NDC, z linear along it: a planar quad.
+SortPolygon bar(SceneId id, glm::dvec2 a, glm::dvec2 b, double za, double zb) {
+    const glm::dvec2 d = glm::normalize(b - a), n(-d.y * 0.08, d.x * 0.08);
+    return poly(id, {{a - n, za}, {b - n, zb}, {b + n, zb}, {a + n, za}});
+}
+
+struct Run {
+    DepthSortResult result;
+    std::vector<DepthSortEvent> events;
+};
+Run run(std::vector<SortPolygon> p, DepthSortOptions o = {}) {
+    auto m = depth_sort(std::move(p), o);
+    Run r;
+    for (const auto& e : m) r.events.push_back(e);
+    r.result = std::move(m).result();
+    return r;
+}
+
+// The test that settled the first pair examined.
+std::optional<OrderTest> first_decider(const Run& r) {
+    for (const auto& e : r.events)
+        if (const auto* t = std::get_if<TestTried>(&e); t && t->passed) return t->test;
+    return std::nullopt;
+}
+
+// Paints the order into an image (NDC polygons, w = 1).
+Image paint(const DepthSortResult& r, Viewport vp) {
+    Image image(vp.width, vp.height);
+    for (std::uint32_t i : r.order) {
+        std::vector<glm::dvec4> clip;
+        for (const Vec3& v : r.polygons[i].vertices) clip.emplace_back(v, 1.0);
+        paint_clip_polygon(image, std::move(clip), r.polygons[i].id, {});
+    }
+    return image;
+}
+
+// The nearest polygon along the view ray (parallel to z in NDC) through an image point, by brute force.
+SceneId seen_in_ndc(const std::vector<SortPolygon>& polys, double x, double y) {
+    SceneId best = 0;
+    double best_z = 2;
+    for (const auto& p : polys) {
+        std::vector<Vec3> v = p.vertices;
+        Plane pl;
+        if (!plane_of(v, pl) || pl.n.z == 0) continue;
+        const Ray ray{{x, y, -1}, {0, 0, 1}};
+        if (const auto t = hit(ray, v, pl); t && *t - 1 < best_z) best_z = *t - 1, best = p.id;
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST_CASE("each of the five tests is the one that decides, for a pair made for it", "[depth-sort]") {
+    SECTION("1. x extents apart") {
+        const Run r = run({poly(1, {{-0.9, -0.5, 0.6}, {-0.5, -0.5, 0.6}, {-0.7, 0.5, 0.5}}),
+                           poly(2, {{0.5, -0.5, 0.55}, {0.9, -0.5, 0.55}, {0.7, 0.5, 0.55}})});
+        CHECK(first_decider(r) == OrderTest::x_extents);
+    }
+    SECTION("2. y extents apart") {
+        const Run r = run({poly(1, {{-0.5, -0.9, 0.6}, {0.5, -0.9, 0.6}, {0, -0.5, 0.5}}),
+                           poly(2, {{-0.5, 0.5, 0.55}, {0.5, 0.5, 0.55}, {0, 0.9, 0.55}})});
+        CHECK(first_decider(r) == OrderTest::y_extents);
+    }
+    SECTION("3. R wholly behind Q's plane") {  // parallel tilted planes, Q 0.2 nearer
+        const Run r = run({poly(1, {{-1, -0.5, 0.6}, {0, -0.5, 0.8}, {0, 0.5, 0.8}, {-1, 0.5, 0.6}}),
+                           poly(2, {{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.7}, {0.5, 0.5, 0.7}, {-0.5, 0.5, 0.5}})});
+        CHECK(first_decider(r) == OrderTest::r_behind_q);
+        CHECK(r.result.order == std::vector<std::uint32_t>{0, 1});
+    }
+    SECTION("4. Q wholly in front of R's plane") {
+        const Run r = run({poly(1, {{-1, -0.5, 0.6}, {0, -0.5, 0.7}, {0, 0.5, 0.7}, {-1, 0.5, 0.6}}),
+                           poly(2, {{-0.3, -0.2, 0.62}, {0, -0.2, 0.62}, {0, 0.2, 0.62}, {-0.3, 0.2, 0.62}})});
+        CHECK(first_decider(r) == OrderTest::q_in_front_of_r);
+    }
+    SECTION("5. projections apart though their boxes overlap") {
+        const Run r = run({poly(1, {{-1, -1, 0.3}, {0.2, -1, 0.54}, {-1, 0.2, 0.3}}),
+                           poly(2, {{1, 1, 0.7}, {-0.2, 1, 0.7}, {1, -0.2, 0.46}})});
+        CHECK(first_decider(r) == OrderTest::projections);
+        std::vector<OrderTest> tried;
+        for (const auto& e : r.events)
+            if (const auto* t = std::get_if<TestTried>(&e)) tried.push_back(t->test);
+        CHECK(tried == std::vector<OrderTest>{OrderTest::x_extents, OrderTest::y_extents, OrderTest::r_behind_q,
+                                              OrderTest::q_in_front_of_r, OrderTest::projections});
+    }
+    SECTION("the swapped test 3 moves Q to the head of the list") {
+        // R (head, farthest MAXZ) is a tilted plane whose near end lies in front of Q; Q lies wholly behind it
+        const Run r = run({poly(1, {{-1, -0.5, 0.2}, {1, -0.5, 0.9}, {1, 0.5, 0.9}, {-1, 0.5, 0.2}}),
+                           poly(2, {{-0.9, -0.3, 0.8}, {-0.5, -0.3, 0.8}, {-0.5, 0.3, 0.8}, {-0.9, 0.3, 0.8}})});
+        bool moved = false;
+        for (const auto& e : r.events) moved |= std::holds_alternative<PolygonMoved>(e);
+        CHECK(moved);
+        CHECK(r.result.order == std::vector<std::uint32_t>{1, 0});
+    }
+}
+
+TEST_CASE("three bars in a cyclic overlap end with a split and the right image", "[depth-sort]") {
+    // B lies over A, C over B, and A over C: no order of the three is right
+    const std::vector<SortPolygon> bars = {bar(1, {-0.8, -0.5}, {0.8, -0.5}, 0.3, 0.7),
+                                           bar(2, {0.7, -0.8}, {-0.1, 0.8}, 0.3, 0.7),
+                                           bar(3, {0.1, 0.8}, {-0.7, -0.8}, 0.3, 0.7)};
+    const Run r = run(bars);
+    CHECK(r.result.splits >= 1);
+    CHECK_FALSE(r.result.bounded);
+    const Viewport vp{64, 64};
+    const Image image = paint(r.result, vp);
+    int compared = 0;
+    for (int y = 0; y < vp.height; ++y)
+        for (int x = 0; x < vp.width; ++x) {
+            const double nx = (x + 0.5) / vp.width * 2 - 1, ny = 1 - (y + 0.5) / vp.height * 2, e = 0.02;
+            const SceneId want = seen_in_ndc(bars, nx, ny);
+            if (seen_in_ndc(bars, nx + e, ny) != want || seen_in_ndc(bars, nx - e, ny) != want ||
+                seen_in_ndc(bars, nx, ny + e) != want || seen_in_ndc(bars, nx, ny - e) != want)
+                continue;  // a boundary pixel
+            ++compared;
+            INFO("pixel (" << x << ", " << y << ")");
+            REQUIRE(image.id(x, y) == want);
+        }
+    CHECK(compared > 500);
+    SECTION("with no splits allowed it stops at the bound, naming it") {
+        const Run bounded = run(bars, {.max_splits = 0});
+        CHECK(bounded.result.bounded);
+        CHECK(std::holds_alternative<SortBoundReached>(bounded.events.back()));
+    }
+}
+
+TEST_CASE("two piercing polygons end with a split and the right order", "[depth-sort]") {
+    const std::vector<SortPolygon> pair = {poly(1, {{-0.8, -0.6, 0.3}, {0.8, -0.6, 0.7}, {0, 0.7, 0.5}}),
+                                           poly(2, {{-0.8, 0.6, 0.7}, {0.8, 0.6, 0.3}, {0, -0.7, 0.5}})};
+    const Run r = run(pair);
+    CHECK(r.result.splits >= 1);
+    const Image image = paint(r.result, {40, 40});
+    CHECK(image.id(8, 20) == seen_in_ndc(pair, (8.5 / 40) * 2 - 1, 0));
+    CHECK(image.id(32, 20) == seen_in_ndc(pair, (32.5 / 40) * 2 - 1, 0));
+}
+
+TEST_CASE("painting in the depth-sorted order gives the ray cast's image on random scenes", "[depth-sort][reference]") {
+    const Projection projection = GENERATE(Projection::perspective, Projection::orthographic);
+    for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+        Scene s = random_triangles({.count = 40, .seed = seed, .size = 1.2});
+        s.camera.projection = projection;
+        s.camera.box[0] = -6, s.camera.box[1] = 6, s.camera.box[2] = -6, s.camera.box[3] = 6;
+        const Viewport vp{64, 64};
+        const Run r = run(sort_polygons(s));
+        REQUIRE_FALSE(r.result.bounded);
+        const Image image = paint(r.result, vp);
+        const RayCastResult ref = ray_cast(s, {.viewport = vp, .detail = RayDetail::ray}).run_to_end();
+        int compared = 0, wrong = 0;
+        for (int y = 1; y + 1 < vp.height; ++y)
+            for (int x = 1; x + 1 < vp.width; ++x) {
+                // boundary pixels: a neighbour's ray sees something else
+                const SceneId want = ref.image.id(x, y);
+                if (ref.image.id(x + 1, y) != want || ref.image.id(x - 1, y) != want || ref.image.id(x, y + 1) != want ||
+                    ref.image.id(x, y - 1) != want)
+                    continue;
+                ++compared;
+                wrong += image.id(x, y) != want;
+            }
+        INFO("seed " << seed << ", " << (projection == Projection::perspective ? "perspective" : "orthographic"));
+        CHECK(compared > 1000);
+        CHECK(wrong == 0);
+    }
+}
+
+TEST_CASE("depth sort extremes: shared edges, coplanar overlaps, edge-on polygons, NaN", "[depth-sort][extremes]") {
+    SECTION("coplanar overlapping squares are drawn, no split") {
+        const Run r = run({poly(1, {{-0.5, -0.5, 0.5}, {0.3, -0.5, 0.5}, {0.3, 0.3, 0.5}, {-0.5, 0.3, 0.5}}),
+                           poly(2, {{-0.3, -0.3, 0.5}, {0.5, -0.3, 0.5}, {0.5, 0.5, 0.5}, {-0.3, 0.5, 0.5}})});
+        CHECK(r.result.order.size() == 2);
+        CHECK(r.result.splits == 0);
+    }
+    SECTION("a polygon seen edge-on (the viewpoint in its plane) is drawn, no split") {
+        const Run r = run({poly(1, {{-0.5, 0, 0.2}, {0.5, 0, 0.2}, {0.5, 0, 0.8}, {-0.5, 0, 0.8}}),
+                           poly(2, {{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0, 0.5, 0.5}})});
+        CHECK(r.result.order.size() == 2);
+        CHECK(r.result.splits == 0);
+    }
+    SECTION("a mesh sharing edges needs no split") {
+        Scene s;
+        s.camera = {.eye = {0, 0, 5}, .near = 1, .far = 10};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const double x = i - 2, y = j - 2, z = 0.1 * (i + j);
+                s.polygons.push_back({SceneId(2 * (i * 4 + j) + 1), {}, {{x, y, z, 1}, {x + 1, y, z + 0.1, 1}, {x + 1, y + 1, z + 0.2, 1}}});
+                s.polygons.push_back({SceneId(2 * (i * 4 + j) + 2), {}, {{x, y, z, 1}, {x + 1, y + 1, z + 0.2, 1}, {x, y + 1, z + 0.1, 1}}});
+            }
+        const Run r = run(sort_polygons(s));
+        CHECK(r.result.order.size() == 32);
+        CHECK(r.result.splits == 0);
+    }
+    SECTION("NaN is rejected by polygon and vertex") {
+        Scene s;
+        s.polygons.push_back({7, {}, {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, std::nan(""), 0, 1}}});
+        CHECK_THROWS_WITH(sort_polygons(s), Catch::Contains("polygon 7 vertex 2"));
+    }
+    SECTION("a thousand random triangles finish within the bounds") {
+        const Run r = run(sort_polygons(random_triangles({.count = 1000, .seed = 4, .size = 0.6})));
+        CHECK_FALSE(r.result.bounded);
+        CHECK(r.result.order.size() >= 1000);
+    }
+}
