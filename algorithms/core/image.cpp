@@ -23,7 +23,10 @@ std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::
     return paint_clip_polygon(image, std::move(clip), id, color);
 }
 
-std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color) {
+std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color, double opacity) {
+    const auto over = [&](std::uint8_t& dst, std::uint8_t src) {
+        dst = std::uint8_t(std::lround(opacity * src + (1 - opacity) * dst));
+    };
     const Viewport viewport{image.width, image.height};
     const ScreenPolygon p = project_polygon(id, color, std::move(clip), viewport);
     std::size_t covered = 0;
@@ -32,7 +35,7 @@ std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, Scene
         for (int x = span.begin; x < span.end; ++x, ++covered) {
             const std::size_t k = std::size_t(y) * std::size_t(image.width) + std::size_t(x);
             image.ids[k] = id;
-            image.rgb[3 * k] = color.r, image.rgb[3 * k + 1] = color.g, image.rgb[3 * k + 2] = color.b;
+            over(image.rgb[3 * k], color.r), over(image.rgb[3 * k + 1], color.g), over(image.rgb[3 * k + 2], color.b);
         }
     }
     return covered;

@@ -27,7 +27,9 @@ struct Image {
 // Paints the polygon (world space, 3 or more vertices) seen through view_projection. Returns the pixels covered.
 std::size_t paint_polygon(Image& image, const glm::dmat4& view_projection, std::span<const Vec3> polygon,
                           SceneId id, Color color);
-// The same for a polygon given in clip space (x, y, z, w), or in normalised device coordinates with w = 1.
-std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color);
+// The same for a polygon given in clip space (x, y, z, w), or in normalised device coordinates with w = 1. With
+// opacity α < 1 the colour goes "over" what is there (premultiplied: c = α·colour + (1 − α)·c), as a painter's
+// algorithm drawing back to front composites translucent polygons; the id becomes the polygon's either way.
+std::size_t paint_clip_polygon(Image& image, std::vector<glm::dvec4> clip, SceneId id, Color color, double opacity = 1);
 
 }  // namespace hsr::algo

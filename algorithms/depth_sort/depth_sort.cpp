@@ -161,7 +161,7 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             const SplitParts parts = split(ext[by].plane, out.polygons[cut].vertices, tol);
             const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
             for (const auto* part : {&parts.front, &parts.back}) {
-                out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part});
+                out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part, out.polygons[cut].opacity});
                 ext.push_back(extents_of(out.polygons.back()));
                 moved.push_back(false);
             }
@@ -191,7 +191,7 @@ std::vector<SortPolygon> sort_polygons(const Scene& scene) {
         for (const auto& v : p.vertices) clip.vertices.push_back(to_clip(scene, v));
         const PolygonClip visible = sutherland_hodgman(std::move(clip), {.space = ClipSpace::homogeneous}).run_to_end();
         if (visible.vertices.size() < 3) continue;  // wholly outside the view volume
-        SortPolygon s{p.id, p.color, {}};
+        SortPolygon s{p.id, p.color, {}, p.opacity};
         for (const Vec4& c : visible.vertices) s.vertices.push_back(Vec3(c) / c.w);
         out.push_back(std::move(s));
     }

@@ -28,6 +28,7 @@ struct SortPolygon {
     SceneId id = 0;
     Color color;
     std::vector<Vec3> vertices;  // normalised device coordinates, convex, after clipping to the view volume
+    double opacity = 1;
 };
 
 struct DepthSortOptions {

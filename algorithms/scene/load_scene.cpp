@@ -183,8 +183,10 @@ Scene read_scene(const TomlReader& r) {
         s.segments.push_back({read_id(t, f), read_color(r, t, f), vertex(t, "a", f), vertex(t, "b", f)});
     });
     for_each_table(r, root, "polygons", [&](const toml::table& t, const std::string& f) {
-        r.only_keys(t, f, {"id", "color", "vertices"});
+        r.only_keys(t, f, {"id", "color", "opacity", "vertices"});
         ScenePolygon p{read_id(t, f), read_color(r, t, f), {}};
+        p.opacity = r.number(t, "opacity", f, 1.0);
+        if (!(p.opacity >= 0 && p.opacity <= 1)) r.fail(t.get("opacity"), join(f, "opacity"), "expected an opacity from 0 to 1");
         const toml::array* v = r.array(t, "vertices", f, true);
         for (std::size_t i = 0; i < v->size(); ++i)
             p.vertices.push_back(r.vector(*v->get(i), index(join(f, "vertices"), i), dims, dims));

@@ -8,7 +8,7 @@
 //   eye = [0, 0, 5]  target = [0, 0, 0]  up = [0, 1, 0]  fov = 60  aspect = 1  near = 1  far = 10
 //   [[points]]    id = 1  color = "#e69f00"  p = [0, 0, 0]
 //   [[segments]]  id = 2  color = "#56b4e9"  a = [-3, 0, 0]  b = [0.5, 0.2, -2]
-//   [[polygons]]  id = 3  color = "#009e73"  vertices = [[…], […], […]]
+//   [[polygons]]  id = 3  color = "#009e73"  vertices = [[…], […], […]]  opacity = 0.5   # opacity: 0 … 1, default 1
 //   [[expect.clip]] id = 2  outcome = "clipped"  vertices = [[…, w], [… , w]]   # clip space
 #pragma once
 

@@ -49,6 +49,7 @@ struct ScenePolygon {
     SceneId id;
     Color color;
     std::vector<glm::dvec4> vertices;
+    double opacity = 1;  // 0 … 1: drawn with "over" by the painter's algorithms; the z-buffer draws it opaque
 };
 
 // [[expect.clip]]: what clipping must make of one primitive.

@@ -4,6 +4,7 @@
 #include "core/image.h"
 #include "depth_sort/depth_sort.h"
 #include "raycast/ray_cast.h"
+#include "scene/load_scene.h"
 #include "scene/random_scene.h"
 
 using namespace hsr::algo;
@@ -211,4 +212,30 @@ TEST_CASE("depth sort extremes: shared edges, coplanar overlaps, edge-on polygon
         CHECK_FALSE(r.result.bounded);
         CHECK(r.result.order.size() >= 1000);
     }
+}
+
+TEST_CASE("translucent polygons composite back to front with over", "[depth-sort][transparency]") {
+    const Scene s = load_scene(HSR_SOURCE_DIR "/assets/scenes/translucent_squares.toml");
+    REQUIRE(s.polygons[0].opacity == 0.5);
+    const Run r = run(sort_polygons(s));
+    Image image(40, 40, {0, 0, 0});
+    for (std::uint32_t i : r.result.order) {
+        std::vector<glm::dvec4> ndc;
+        for (const Vec3& v : r.result.polygons[i].vertices) ndc.emplace_back(v, 1.0);
+        paint_clip_polygon(image, std::move(ndc), r.result.polygons[i].id, r.result.polygons[i].color, r.result.polygons[i].opacity);
+    }
+    const std::size_t k = 3 * std::size_t(20 * 40 + 20);  // the centre: red over blue
+    CHECK(int(image.rgb[k]) == 128);
+    CHECK(int(image.rgb[k + 1]) == 0);
+    CHECK(int(image.rgb[k + 2]) == 128);
+    CHECK(image.id(20, 20) == 1);  // the id image names the front polygon
+    // In the scene's own order (front first), "over" would leave the blue square covering the red
+    Image wrong(40, 40, {0, 0, 0});
+    for (const auto& p : sort_polygons(s)) {
+        std::vector<glm::dvec4> ndc;
+        for (const Vec3& v : p.vertices) ndc.emplace_back(v, 1.0);
+        paint_clip_polygon(wrong, std::move(ndc), p.id, p.color, p.opacity);
+    }
+    CHECK(int(wrong.rgb[k]) == 0);
+    CHECK(int(wrong.rgb[k + 2]) == 255);
 }

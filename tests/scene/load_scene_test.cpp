@@ -71,6 +71,7 @@ TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
         {"[[polygons]]\nid = 1\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n", 3, "polygons[0].vertices", "no area"},
         {"[[expect.clip]]\nid = 1\noutcome = \"maybe\"\n", 3, "expect.clip[0].outcome", "\"inside\""},
         {"coordinates = \"screen\"\n", 1, "coordinates", "\"world\" or \"clip\""},
+        {"[[polygons]]\nid = 1\nopacity = 1.5\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n", 3, "polygons[0].opacity", "from 0 to 1"},
         {"name = \"x\"\n[camera\n", 2, "", ""},  // a TOML syntax error
     };
     for (const Case& c : cases) {

@@ -112,7 +112,7 @@ algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, al
     for (std::uint32_t i : r.order) {  // back to front, each polygon in normalised device coordinates
         std::vector<glm::dvec4> ndc;
         for (const auto& v : r.polygons[i].vertices) ndc.emplace_back(v, 1.0);
-        algo::paint_clip_polygon(image, std::move(ndc), r.polygons[i].id, r.polygons[i].color);
+        algo::paint_clip_polygon(image, std::move(ndc), r.polygons[i].id, r.polygons[i].color, r.polygons[i].opacity);
     }
     std::printf("depth-sort: %zu polygons, %llu pairs examined, %u moves, %u splits%s, sorted in %.3f ms\n",
                 scene.polygons.size(), (unsigned long long)r.pairs, r.moves, r.splits, r.bounded ? " (stopped at a bound)" : "",
