@@ -25,6 +25,7 @@ constexpr std::array registry = {
     AlgorithmInfo{"backface_screen_winding", "Back-face culling: the winding on screen", 2, Family::backface,
                   int(BackfaceTest::screen_winding)},
     AlgorithmInfo{"zbuffer_fill", "Z-buffer fill", 2, Family::zbuffer, 0},
+    AlgorithmInfo{"depth_sort", "Depth sort (Newell, Newell and Sancha)", 4, Family::depth_sort, 0},
     AlgorithmInfo{"z_merge", "Z-merge of two frame and depth buffers", 2, Family::zmerge, 0},
     AlgorithmInfo{"scan_line", "Scan-line algorithm with a one-line z-buffer", 3, Family::scanline, 0},
     AlgorithmInfo{"raycast_brute", "Ray casting: every primitive", 1, Family::raycast, int(Acceleration::none)},

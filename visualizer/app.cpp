@@ -23,11 +23,13 @@
 #include "panels/cull_panels.h"
 #include "panels/raycast_panels.h"
 #include "panels/scanline_panels.h"
+#include "panels/depth_sort_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "panels/zmerge_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
+#include "render/depth_sort_renderer.h"
 #include "render/frustum.h"
 #include "render/raycast_renderer.h"
 #include "render/zbuffer_renderer.h"
@@ -41,6 +43,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/depth_sort_session.h"
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
@@ -75,6 +78,10 @@ struct Lessonplay {
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
             if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) scene_bounds(zb->lesson().scene, centre, radius);
+            if (dynamic_cast<const DepthSortSession*>(session.get())) {  // the canonical view volume, seen from the eye's side
+                centre = glm::vec3(0), radius = 1.6f;
+                camera.yaw = 3.6f, camera.pitch = 0.35f;
+            }
             if (const auto* ray = dynamic_cast<const RayCastSession*>(session.get())) {
                 scene_bounds(ray->scene(), centre, radius);
                 camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
@@ -225,6 +232,11 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* ray = dynamic_cast<const RayCastSession*>(&s);
     const auto* scan = dynamic_cast<const ScanLineSession*>(&s);
     const auto* merge = dynamic_cast<const ZMergeSession*>(&s);
+    const auto* sort = dynamic_cast<const DepthSortSession*>(&s);
+    if (sort) {
+        draw_depth_sort_view(sort->view(), r.batches, r.labels);
+        detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
+    }
     if (merge)
         detail = std::to_string(merge->lesson().grid.width) + "×" + std::to_string(merge->lesson().grid.height) +
                  " pixels · " + std::string(algo::to_string(merge->lesson().depth_format));
@@ -279,6 +291,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (ray) raycast_state_panel(*ray, layout);
     if (scan) scanline_state_panel(*scan, layout);
     if (merge) zmerge_state_panel(*merge, layout);
+    if (sort) depth_sort_state_panel(*sort, layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

@@ -169,7 +169,8 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             const auto at = std::find(list.begin(), list.end(), cut);
             *at = back;
             list.insert(at + 1, front);
-            co_yield PolygonCut{cut, by, front, back};
+            const DepthSortEvent cut_event = PolygonCut{cut, by, front, back, parts.front, parts.back};
+            co_yield cut_event;
         }
         if (!draw_r) continue;
         list.erase(list.begin());

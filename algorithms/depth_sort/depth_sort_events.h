@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/plane.h"
 #include "scene/scene.h"
 
 namespace hsr::algo {
@@ -58,7 +59,8 @@ struct CycleDetected {
 struct PolygonCut {
     static constexpr std::string_view kind = "PolygonCut";
     std::uint32_t polygon, by;     // cut by the plane of `by`
-    std::uint32_t front, back;     // the new parts
+    std::uint32_t front, back;     // the new parts, which take its place in the list (back part first)
+    std::vector<Vec3> front_vertices, back_vertices;
     bool operator==(const PolygonCut&) const = default;
 };
 struct PolygonPainted {

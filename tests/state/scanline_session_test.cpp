@@ -1,5 +1,6 @@
 // Scan-line lessons: the image folded from the spans is the z-buffer's, and the active edge table empties.
 #include "catch.h"
+#include "state/depth_sort_session.h"
 #include "state/scanline_session.h"
 
 using namespace hsr::viz;
@@ -34,4 +35,19 @@ TEST_CASE("seeking a scan-line lesson equals folding its events", "[state][scanl
         REQUIRE(t.view().in == fresh.view().in);
         t.seek_end();
     }
+}
+
+TEST_CASE("a depth-sort lesson folds to the machine's order and parts", "[state][depth-sort]") {
+    auto lesson = load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml");
+    auto session = make_session(lesson);
+    auto* s = dynamic_cast<DepthSortSession*>(session.get());
+    REQUIRE(s);
+    s->seek_end();
+    const DepthSortResult r = depth_sort(sort_polygons(lesson.scene)).run_to_end();
+    CHECK(s->view().drawn == r.order);
+    CHECK(s->view().polygons.size() == r.polygons.size());
+    CHECK(s->view().list.empty());
+    CHECK(s->view().splits == r.splits);
+    CHECK(r.splits >= 1);  // the bars cannot be ordered whole
+    for (std::size_t i = 0; i < r.polygons.size(); ++i) CHECK(s->view().polygons[i].vertices == r.polygons[i].vertices);
 }

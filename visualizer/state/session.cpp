@@ -3,6 +3,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/depth_sort_session.h"
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
@@ -19,6 +20,7 @@ std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
         case algo::Family::raycast: return std::make_unique<RayCastSession>(std::move(lesson), options);
         case algo::Family::scanline: return std::make_unique<ScanLineSession>(std::move(lesson), options);
         case algo::Family::zmerge: return std::make_unique<ZMergeSession>(std::move(lesson), options);
+        case algo::Family::depth_sort: return std::make_unique<DepthSortSession>(std::move(lesson), options);
     }
     return nullptr;
 }

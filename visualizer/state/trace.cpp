@@ -9,6 +9,7 @@
 #include "culling/backface.h"
 #include "raycast/ray_cast.h"
 #include "zbuffer/scanline.h"
+#include "depth_sort/depth_sort.h"
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
@@ -93,6 +94,17 @@ HSR_TO_JSON(ScanFinished, lines, spans)
 HSR_TO_JSON(ScanStepBoundReached, max_crossings)
 HSR_TO_JSON(PixelMerged, x, y, depth_a, depth_b, from_a)
 HSR_TO_JSON(MergeFinished, from_a, from_b)
+inline void to_json(nlohmann::json& j, OrderTest t) { j = std::string(to_string(t)); }
+inline void to_json(nlohmann::json& j, SortBound b) { j = b == SortBound::splits ? "splits" : "pairs"; }
+HSR_TO_JSON(ListSorted, order)
+HSR_TO_JSON(PairExamined, r, q, r_min_z, r_max_z, q_min_z, q_max_z)
+HSR_TO_JSON(TestTried, test, passed, a, b, c, d)
+HSR_TO_JSON(PolygonMoved, polygon, ahead_of)
+HSR_TO_JSON(CycleDetected, polygon)
+HSR_TO_JSON(PolygonCut, polygon, by, front, back, front_vertices, back_vertices)
+HSR_TO_JSON(PolygonPainted, polygon, id)
+HSR_TO_JSON(DepthSortFinished, drawn, splits, moves, pairs)
+HSR_TO_JSON(SortBoundReached, bound, limit)
 
 inline void to_json(nlohmann::json& j, Side s) { j = std::string(to_string(s)); }
 inline void to_json(nlohmann::json& j, PolygonSide s) { j = std::string(to_string(s)); }
@@ -172,6 +184,9 @@ std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const s
 std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::DepthSortEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 
 void hash_line(TraceSummary& t, const std::string& line) {
     auto mix = [&](unsigned char c) {
@@ -232,6 +247,10 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             auto machine = algo::scan_line(algo::project_polygons(scene, lesson.grid),
                                            algo::scan_line_options(scene, lesson.grid, lesson.depth_format));
             return write_trace(machine, [](const algo::ScanLineEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::depth_sort: {
+            auto machine = algo::depth_sort(algo::sort_polygons(lesson.scene));
+            return write_trace(machine, [](const algo::DepthSortEvent& e) { return algo::describe(e); }, out);
         }
         case algo::Family::zmerge: {
             ZMergeSession session(lesson);  // the two parts' buffers, as the window builds them

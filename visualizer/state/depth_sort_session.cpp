@@ -1,0 +1,112 @@
+#include "state/depth_sort_session.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/overloaded.h"
+
+namespace hsr::viz {
+namespace {
+
+using namespace hsr::algo;
+
+constexpr std::array<std::string_view, 12> sort_lines = {
+    "DepthSort(polygonDB):",
+    "  for each polygon find MINZ and MAXZ; sort, farthest first",
+    "  R = head of the list; for each Q whose z extent overlaps R's:",
+    "    1. x extents apart?   2. y extents apart?",
+    "    3. R wholly behind Q's plane?",
+    "    4. Q wholly in front of R's plane?",
+    "    5. projections apart?",
+    "    else swap roles, retry 3 and 4:",
+    "      Q must go first: move Q to the head",
+    "      Q moved before (a cycle), or no order:",
+    "        split one by the plane of the other",
+    "  no Q left: draw R (back to front)",
+};
+
+DepthSortSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+    std::vector<SortPolygon> polygons = sort_polygons(lesson.scene);
+    DepthSortView initial;
+    initial.polygons = polygons;
+    return DepthSortSession::PlayerType(depth_sort(std::move(polygons)), std::move(initial), options);
+}
+
+}  // namespace
+
+void reduce(DepthSortView& v, const DepthSortEvent& event) {
+    std::visit(overloaded{
+                   [&](const ListSorted& e) { v.list = e.order; },
+                   [&](const PairExamined& e) {
+                       v.r = int(e.r), v.q = int(e.q), v.tests.clear(), v.moved = v.cycle = v.cut = -1;
+                   },
+                   [&](const TestTried& e) { v.tests.push_back(e); },
+                   [&](const PolygonMoved& e) {
+                       std::erase(v.list, e.polygon);
+                       v.list.insert(v.list.begin(), e.polygon);
+                       v.moved = int(e.polygon), ++v.moves;
+                   },
+                   [&](const CycleDetected& e) { v.cycle = int(e.polygon); },
+                   [&](const PolygonCut& e) {
+                       const SortPolygon& whole = v.polygons[e.polygon];
+                       v.polygons.push_back({whole.id, whole.color, e.front_vertices, whole.opacity});
+                       v.polygons.push_back({whole.id, whole.color, e.back_vertices, whole.opacity});
+                       const auto at = std::find(v.list.begin(), v.list.end(), e.polygon);
+                       if (at != v.list.end()) {
+                           *at = e.back;
+                           v.list.insert(at + 1, e.front);
+                       }
+                       v.cut = int(e.polygon), ++v.splits;
+                   },
+                   [&](const PolygonPainted& e) {
+                       std::erase(v.list, e.polygon);
+                       v.drawn.push_back(e.polygon);
+                       v.r = v.q = -1, v.tests.clear();
+                   },
+                   [&](const DepthSortFinished&) { v.done = true; },
+                   [&](const SortBoundReached&) { v.bounded = true; },
+               },
+               event);
+}
+
+std::size_t approx_bytes(const DepthSortView& v) {
+    std::size_t b = sizeof(DepthSortView) + (v.list.capacity() + v.drawn.capacity()) * sizeof(std::uint32_t) +
+                    v.tests.capacity() * sizeof(TestTried);
+    for (const auto& p : v.polygons) b += sizeof(SortPolygon) + p.vertices.capacity() * sizeof(Vec3);
+    return b;
+}
+
+DepthSortSession::DepthSortSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+
+std::span<const std::string_view> DepthSortSession::pseudocode() const { return sort_lines; }
+
+std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { return describe(e); }
+
+int DepthSortSession::line_of(const DepthSortEvent& event) const {
+    return std::visit(overloaded{
+                          [](const ListSorted&) { return 1; },
+                          [](const PairExamined&) { return 2; },
+                          [](const TestTried& e) {
+                              switch (e.test) {
+                                  case OrderTest::x_extents:
+                                  case OrderTest::y_extents: return 3;
+                                  case OrderTest::r_behind_q: return 4;
+                                  case OrderTest::q_in_front_of_r: return 5;
+                                  case OrderTest::projections: return 6;
+                                  default: return 7;
+                              }
+                          },
+                          [](const PolygonMoved&) { return 8; },
+                          [](const CycleDetected&) { return 9; },
+                          [](const PolygonCut&) { return 10; },
+                          [](const PolygonPainted&) { return 11; },
+                          [](const DepthSortFinished&) { return 11; },
+                          [](const SortBoundReached&) { return 10; },
+                      },
+                      event);
+}
+
+// A Step is a pair, a move, a split or a drawing; the tests within a pair are micro-steps.
+bool DepthSortSession::is_major(const DepthSortEvent& e) const { return !std::holds_alternative<TestTried>(e); }
+
+}  // namespace hsr::viz

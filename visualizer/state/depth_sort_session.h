@@ -1,0 +1,37 @@
+// A depth-sort lesson: the display list as it is sorted, the pair under examination with each test tried, moves,
+// cycles and splits, and the polygons drawn back to front.
+#pragma once
+
+#include <vector>
+
+#include "depth_sort/depth_sort.h"
+#include "state/session.h"
+
+namespace hsr::viz {
+
+struct DepthSortView {
+    std::vector<algo::SortPolygon> polygons;  // the working list's polygons (NDC), parts appended as they are made
+    std::vector<std::uint32_t> list;          // still to draw, the head first
+    std::vector<std::uint32_t> drawn;         // back to front
+    int r = -1, q = -1;                       // the pair under examination
+    std::vector<algo::TestTried> tests;       // tried on it so far, in order
+    int moved = -1, cycle = -1, cut = -1;     // what the last step did
+    std::uint32_t splits = 0, moves = 0;
+    bool done = false, bounded = false;
+};
+
+void reduce(DepthSortView& view, const algo::DepthSortEvent& event);
+std::size_t approx_bytes(const DepthSortView& view);
+
+class DepthSortSession : public PlayerSession<algo::DepthSortEvent, algo::DepthSortResult, DepthSortView> {
+public:
+    explicit DepthSortSession(Lesson lesson, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+
+private:
+    std::string describe_event(const algo::DepthSortEvent& e) const override;
+    int line_of(const algo::DepthSortEvent& e) const override;
+    bool is_major(const algo::DepthSortEvent& e) const override;
+};
+
+}  // namespace hsr::viz
