@@ -48,7 +48,7 @@ void reduce(DepthSortView& v, const DepthSortEvent& event) {
                    },
                    [&](const CycleDetected& e) { v.cycle = int(e.polygon); },
                    [&](const PolygonCut& e) {
-                       const SortPolygon& whole = v.polygons[e.polygon];
+                       const SortPolygon whole = v.polygons[e.polygon];  // a copy: push_back may move the list
                        v.polygons.push_back({whole.id, whole.color, e.front_vertices, whole.opacity});
                        v.polygons.push_back({whole.id, whole.color, e.back_vertices, whole.opacity});
                        const auto at = std::find(v.list.begin(), v.list.end(), e.polygon);
