@@ -53,6 +53,25 @@ Tested test(const Primitives& prims, const Scene& scene, const Ray& ray, std::ui
     return {{prims.scene_index[i], id, in_view, in_view ? *t : 0}, nearer};
 }
 
+// The scene's polygons a ray can hit (3 or more vertices, some area), with their planes.
+Primitives primitives_of(const Scene& scene) {
+    Primitives prims;
+    for (std::uint32_t s = 0; s < scene.polygons.size(); ++s) {
+        const ScenePolygon& p = scene.polygons[s];
+        std::vector<Vec3> v;
+        for (std::size_t k = 0; k < p.vertices.size(); ++k) {
+            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
+            v.emplace_back(p.vertices[k]);
+        }
+        Plane plane;
+        if (v.size() < 3 || !plane_of(v, plane)) continue;  // segments and area-less polygons are never hit
+        prims.polygons.push_back(std::move(v));
+        prims.planes.push_back(plane);
+        prims.scene_index.push_back(s);
+    }
+    return prims;
+}
+
 NearerHitFound nearer_event(const Primitives& prims, const Scene& scene, const Hit& best) {
     const std::uint32_t s = prims.scene_index[std::size_t(best.index)];
     return {s, scene.polygons[s].id, best.t};
@@ -148,6 +167,8 @@ Steps<RayCastEvent, Hit> walk_octree(const Octree* tree, const Primitives* prims
 
 }  // namespace
 
+Grid ray_cast_grid(const Scene& scene, int cells) { return build_grid(primitives_of(scene).polygons, cells); }
+
 Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y) {
     return ndc_ray(camera, 2 * pixel_centre(x) / viewport.width - 1, 1 - 2 * pixel_centre(y) / viewport.height);
 }
@@ -161,20 +182,7 @@ Ray ndc_ray(const Camera& camera, double nx, double ny) {
 
 Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
     if (scene.coordinates != Coordinates::world) throw InvalidInput(scene.source + ": ray casting needs world coordinates");
-    auto prims = std::make_unique<Primitives>();
-    for (std::uint32_t s = 0; s < scene.polygons.size(); ++s) {
-        const ScenePolygon& p = scene.polygons[s];
-        std::vector<Vec3> v;
-        for (std::size_t k = 0; k < p.vertices.size(); ++k) {
-            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
-            v.emplace_back(p.vertices[k]);
-        }
-        Plane plane;
-        if (v.size() < 3 || !plane_of(v, plane)) continue;  // segments and area-less polygons are never hit
-        prims->polygons.push_back(std::move(v));
-        prims->planes.push_back(plane);
-        prims->scene_index.push_back(s);
-    }
+    const auto prims = std::make_unique<Primitives>(primitives_of(scene));
     const auto grid = std::make_unique<Grid>(o.acceleration == Acceleration::grid ? build_grid(prims->polygons, o.grid_cells) : Grid{});
     const auto tree = std::make_unique<Octree>(o.acceleration == Acceleration::octree ? build_octree(prims->polygons, o.octree) : Octree{});
 

@@ -51,6 +51,9 @@ struct RayCastResult {
 // InvalidInput names a polygon with NaN or infinite coordinates.
 Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions options);
 
+// The grid ray_cast builds for a scene with grid_cells = cells (for a view that draws the cells it walks).
+Grid ray_cast_grid(const Scene& scene, int cells = 0);
+
 // The ray through the centre of pixel (x, y): origin on the near plane, origin + direction on the far plane.
 Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y);
 // The same for a point of the image in normalised device coordinates (−1 … 1, y up).

@@ -54,6 +54,7 @@ Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, 
     std::vector<std::uint32_t> line_depth(static_cast<std::size_t>(w));
     std::vector<std::int32_t> line_owner(static_cast<std::size_t>(w));
     std::vector<std::uint32_t> aet;  // indices into the edge table
+    std::vector<std::pair<double, std::uint32_t>> sorted;  // the AET by x on the current line
     std::size_t next = 0;            // the first edge of the ET not yet entered
     std::uint64_t crossings = 0, spans = 0;
     for (int y = 0; y < h; ++y) {
@@ -71,7 +72,7 @@ Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, 
             if (o.tell_crossings) co_yield EdgeEntered{std::uint32_t(next), et[next].polygon, y, edge_x_at_row(et[next].a, et[next].b, y)};
         }
         // Sort the AET by where its edges cross this line
-        std::vector<std::pair<double, std::uint32_t>> sorted;
+        sorted.clear();
         for (std::uint32_t e : aet) sorted.emplace_back(edge_x_at_row(et[e].a, et[e].b, y), e);
         std::sort(sorted.begin(), sorted.end());
         // Walk it left to right, flipping in/out flags; a polygon going out z-tests its span into the line

@@ -28,16 +28,7 @@ RayCastSession::PlayerType make_player(const Scene& scene, Viewport grid, Accele
     initial.viewport = grid;
     initial.acceleration = a;
     initial.owner.assign(std::size_t(grid.width) * std::size_t(grid.height), -1);
-    if (a == Acceleration::grid) {  // the same cells the machine builds (ray_cast: build_grid with 0 = automatic)
-        std::vector<std::vector<Vec3>> polygons;
-        for (const auto& p : scene.polygons) {
-            std::vector<Vec3> v;
-            for (const auto& q : p.vertices) v.emplace_back(q);
-            Plane plane;
-            if (v.size() >= 3 && plane_of(v, plane)) polygons.push_back(std::move(v));
-        }
-        initial.grid = std::make_shared<const Grid>(build_grid(polygons, 0));
-    }
+    if (a == Acceleration::grid) initial.grid = std::make_shared<const Grid>(ray_cast_grid(scene));  // the machine's cells
     return RayCastSession::PlayerType(ray_cast(scene, {.viewport = grid, .acceleration = a, .detail = RayDetail::test}),
                                       std::move(initial), options);
 }

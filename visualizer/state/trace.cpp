@@ -253,8 +253,8 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
             return write_trace(machine, [](const algo::DepthSortEvent& e) { return algo::describe(e); }, out);
         }
         case algo::Family::zmerge: {
-            ZMergeSession session(lesson);  // the two parts' buffers, as the window builds them
-            auto machine = algo::z_merge_steps(*session.view().a, *session.view().b);
+            const ZMergeView parts = zmerge_initial_view(lesson);  // the two parts' buffers, as the window builds them
+            auto machine = algo::z_merge_steps(*parts.a, *parts.b);
             return write_trace(machine, [](const algo::ZMergeEvent& e) { return algo::describe(e); }, out);
         }
     }

@@ -18,7 +18,9 @@ constexpr std::array<std::string_view, 6> merge_lines = {
     "/* nearer: a smaller code here; the lecture's depths fall with distance */",
 };
 
-ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+}  // namespace
+
+ZMergeView zmerge_initial_view(const Lesson& lesson) {
     const Scene scene = grid_scene(lesson);
     auto all = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     const std::size_t half = (all->size() + 1) / 2;
@@ -30,7 +32,15 @@ ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions option
     initial.polygons = all;
     initial.a = a, initial.b = b, initial.b_offset = half;
     initial.merged.assign(a->polygon.size(), -2);
-    return ZMergeSession::PlayerType(z_merge_steps(*a, *b), std::move(initial), options);
+    return initial;
+}
+
+namespace {
+
+ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+    ZMergeView initial = zmerge_initial_view(lesson);
+    auto merge = z_merge_steps(*initial.a, *initial.b);
+    return ZMergeSession::PlayerType(std::move(merge), std::move(initial), options);
 }
 
 }  // namespace

@@ -22,6 +22,8 @@ struct ZMergeView {
     bool done = false;
 };
 
+// Parts A (the first half of the lesson's polygons) and B (the rest), z-buffered apart, before any merge.
+ZMergeView zmerge_initial_view(const Lesson& lesson);
 void reduce(ZMergeView& view, const algo::ZMergeEvent& event);
 std::size_t approx_bytes(const ZMergeView& view);
 
