@@ -7,6 +7,7 @@ namespace hsr::algo {
 namespace {
 
 std::string n(std::uint64_t v) { return std::to_string(v); }
+std::string vertices(double count) { return n(std::uint64_t(count)) + (count == 1 ? " vertex" : " vertices"); }
 std::string range(double a, double b) { return "[" + format_number(a) + ", " + format_number(b) + "]"; }
 
 }  // namespace
@@ -39,8 +40,8 @@ std::string describe(const DepthSortEvent& event) {
                     case OrderTest::y_extents: numbers = "R " + range(e.a, e.b) + ", Q " + range(e.c, e.d); break;
                     case OrderTest::projections: numbers = e.a != 0 ? "they overlap" : "a separating axis exists"; break;
                     default:
-                        numbers = n(std::uint64_t(e.a)) + " vertices on the far side, " + n(std::uint64_t(e.b)) +
-                                  " on the viewer's side, " + n(std::uint64_t(e.c)) + " on the plane";
+                        numbers = vertices(e.a) + " on the far side, " + vertices(e.b) + " on the viewer's side, " + vertices(e.c) +
+                                  " on the plane";
                 }
                 return std::string(to_string(e.test)) + ": " + (e.passed ? "yes" : "no") + " (" + numbers + ").";
             },
@@ -51,8 +52,8 @@ std::string describe(const DepthSortEvent& event) {
             },
             [](const PolygonPainted& e) { return "Draw #" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ")."; },
             [](const DepthSortFinished& e) {
-                return "Done: " + n(e.drawn) + " drawn after " + n(e.pairs) + " pairs, " + n(e.moves) + " moves and " +
-                       n(e.splits) + " splits.";
+                return "Done: " + n(e.drawn) + " drawn after " + n(e.pairs) + (e.pairs == 1 ? " pair, " : " pairs, ") + n(e.moves) +
+                       (e.moves == 1 ? " move and " : " moves and ") + n(e.splits) + (e.splits == 1 ? " split." : " splits.");
             },
             [](const SortBoundReached& e) {
                 return "Stopped: the bound of " + n(e.limit) + (e.bound == SortBound::splits ? " splits" : " pairs examined") + " was reached.";

@@ -1,5 +1,7 @@
 // Newell's depth sort: each test decides when it should, cycles and piercing pairs end with a split and the right
 // image, and on random scenes the painter's image in the final order is the ray cast's but for boundary pixels.
+#include <algorithm>
+
 #include "catch.h"
 #include "core/image.h"
 #include "depth_sort/depth_sort.h"
@@ -62,6 +64,29 @@ SceneId seen_in_ndc(const std::vector<SortPolygon>& polys, double x, double y) {
     }
     return best;
 }
+
+// Pixels whose visible polygon the ray cast and the painter's order agree on, and disagree on, leaving out
+// boundary pixels (where a neighbour's ray sees something else).
+struct Agreement {
+    int compared = 0, wrong = 0;
+};
+Agreement compare_with_ray_cast(const Scene& s, const DepthSortResult& r, Viewport vp) {
+    const Image image = paint(r, vp);
+    const RayCastResult ref = ray_cast(s, {.viewport = vp, .detail = RayDetail::ray}).run_to_end();
+    Agreement a;
+    for (int y = 1; y + 1 < vp.height; ++y)
+        for (int x = 1; x + 1 < vp.width; ++x) {
+            const SceneId want = ref.image.id(x, y);
+            if (ref.image.id(x + 1, y) != want || ref.image.id(x - 1, y) != want || ref.image.id(x, y + 1) != want ||
+                ref.image.id(x, y - 1) != want)
+                continue;
+            ++a.compared;
+            a.wrong += image.id(x, y) != want;
+        }
+    return a;
+}
+
+Scene lesson_scene(const char* name) { return load_scene(std::string(HSR_SOURCE_DIR "/assets/scenes/") + name); }
 
 }  // namespace
 
@@ -157,19 +182,7 @@ TEST_CASE("painting in the depth-sorted order gives the ray cast's image on rand
         const Viewport vp{64, 64};
         const Run r = run(sort_polygons(s));
         REQUIRE_FALSE(r.result.bounded);
-        const Image image = paint(r.result, vp);
-        const RayCastResult ref = ray_cast(s, {.viewport = vp, .detail = RayDetail::ray}).run_to_end();
-        int compared = 0, wrong = 0;
-        for (int y = 1; y + 1 < vp.height; ++y)
-            for (int x = 1; x + 1 < vp.width; ++x) {
-                // boundary pixels: a neighbour's ray sees something else
-                const SceneId want = ref.image.id(x, y);
-                if (ref.image.id(x + 1, y) != want || ref.image.id(x - 1, y) != want || ref.image.id(x, y + 1) != want ||
-                    ref.image.id(x, y - 1) != want)
-                    continue;
-                ++compared;
-                wrong += image.id(x, y) != want;
-            }
+        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, vp);
         INFO("seed " << seed << ", " << (projection == Projection::perspective ? "perspective" : "orthographic"));
         CHECK(compared > 1000);
         CHECK(wrong == 0);
@@ -207,10 +220,17 @@ TEST_CASE("depth sort extremes: shared edges, coplanar overlaps, edge-on polygon
         s.polygons.push_back({7, {}, {{0, 0, 0, 1}, {1, 0, 0, 1}, {0, std::nan(""), 0, 1}}});
         CHECK_THROWS_WITH(sort_polygons(s), Catch::Contains("polygon 7 vertex 2"));
     }
-    SECTION("a thousand random triangles finish within the bounds") {
-        const Run r = run(sort_polygons(random_triangles({.count = 1000, .seed = 4, .size = 0.6})));
+    SECTION("ten thousand random triangles finish within the bounds, every part drawn once") {
+        std::vector<SortPolygon> polygons = sort_polygons(random_triangles({.count = 10000, .seed = 4, .size = 0.15, .far = 30}));
+        const std::size_t visible = polygons.size();
+        CHECK(visible > 9000);
+        const Run r = run(std::move(polygons));
         CHECK_FALSE(r.result.bounded);
-        CHECK(r.result.order.size() >= 1000);
+        CHECK(r.result.splits > 0);
+        CHECK(r.result.order.size() == visible + r.result.splits);  // a split replaces one polygon by two
+        std::vector<std::uint32_t> order = r.result.order;
+        std::sort(order.begin(), order.end());
+        CHECK(std::adjacent_find(order.begin(), order.end()) == order.end());
     }
 }
 
@@ -238,4 +258,57 @@ TEST_CASE("translucent polygons composite back to front with over", "[depth-sort
     }
     CHECK(int(wrong.rgb[k]) == 0);
     CHECK(int(wrong.rgb[k + 2]) == 255);
+}
+
+TEST_CASE("the depth-sort lessons' scenes do what their lessons say", "[depth-sort][lessons]") {
+    SECTION("simple case: no z extents overlap, so no pair is examined") {
+        const Scene s = lesson_scene("depth_sort_layers.toml");
+        const Run r = run(sort_polygons(s));
+        CHECK(r.result.pairs == 0);
+        CHECK(r.result.order == std::vector<std::uint32_t>{1, 3, 2, 0});  // z = -1.5, -0.6, 0.3, 1.2: far to near
+        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, {64, 48});
+        CHECK(compared > 1000);
+        CHECK(wrong == 0);
+    }
+    SECTION("one pair for each test: tests 1 to 5 and the swapped test 3 each settle a pair") {
+        const Run r = run(sort_polygons(lesson_scene("depth_sort_tests.toml")));
+        std::vector<OrderTest> deciders;
+        for (const auto& e : r.events)
+            if (const auto* t = std::get_if<TestTried>(&e); t && t->passed) deciders.push_back(t->test);
+        // the last pair is examined twice: once to move Q ahead, once with the roles swapped, when test 3 holds
+        CHECK(deciders == std::vector<OrderTest>{OrderTest::x_extents, OrderTest::y_extents, OrderTest::r_behind_q,
+                                                 OrderTest::q_in_front_of_r, OrderTest::projections,
+                                                 OrderTest::q_behind_r, OrderTest::r_behind_q});
+        CHECK(r.result.moves == 1);
+        CHECK(r.result.splits == 0);
+    }
+    SECTION("piercing triangles: a split, then the ray cast's image") {
+        const Scene s = lesson_scene("depth_sort_piercing.toml");
+        const Run r = run(sort_polygons(s));
+        CHECK(r.result.splits == 1);
+        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, {64, 48});
+        CHECK(compared > 1000);
+        CHECK(wrong == 0);
+    }
+    SECTION("translucent panes: red over green over blue where all three overlap") {
+        const Scene s = lesson_scene("translucent_panes.toml");
+        const Run r = run(sort_polygons(s));
+        CHECK(r.result.pairs == 1);
+        Image image(64, 48, {0, 0, 0});
+        for (std::uint32_t i : r.result.order) {
+            std::vector<glm::dvec4> ndc;
+            for (const Vec3& v : r.result.polygons[i].vertices) ndc.emplace_back(v, 1.0);
+            paint_clip_polygon(image, std::move(ndc), r.result.polygons[i].id, r.result.polygons[i].color, r.result.polygons[i].opacity);
+        }
+        // the screen centre is on all three: blue wall, then green (0.55), then red (0.55), each "over"
+        const auto over = [](double front, double alpha, double back) { return alpha * front + (1 - alpha) * back; };
+        const double red = over(0xff, 0.55, over(0x30, 0.55, 0x30));
+        const double green = over(0x30, 0.55, over(0xd0, 0.55, 0x50));
+        const double blue = over(0x30, 0.55, over(0x40, 0.55, 0xff));
+        const std::size_t k = 3 * std::size_t(24 * 64 + 32);
+        CHECK(std::abs(int(image.rgb[k]) - red) <= 1);
+        CHECK(std::abs(int(image.rgb[k + 1]) - green) <= 1);
+        CHECK(std::abs(int(image.rgb[k + 2]) - blue) <= 1);
+        CHECK(image.id(32, 24) == 1);
+    }
 }
