@@ -80,7 +80,7 @@ struct Lessonplay {
             if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) scene_bounds(zb->lesson().scene, centre, radius);
             if (dynamic_cast<const DepthSortSession*>(session.get())) {  // the canonical view volume, seen from the eye's side
                 centre = glm::vec3(0), radius = 1.6f;
-                camera.yaw = 3.6f, camera.pitch = 0.35f;
+                camera.yaw = 0.55f, camera.pitch = 0.35f;
             }
             if (const auto* ray = dynamic_cast<const RayCastSession*>(session.get())) {
                 scene_bounds(ray->scene(), centre, radius);
@@ -282,6 +282,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (ray) raycast_image(*ray, 0, 0, view_w, view_h);
     if (scan) scanline_canvas(*scan, 0, 0, view_w, view_h);
     if (merge) zmerge_canvas(*merge, 0, 0, view_w, view_h);
+    if (sort) depth_sort_canvas(*sort, 0, 0, view_w, view_h, lp.animate);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);

@@ -21,7 +21,7 @@ TEST_CASE("every shipped lesson loads and plays to its end", "[lesson]") {
         REQUIRE(session);
         session->seek_end();
         CHECK(session->complete());
-        CHECK(session->cursor() > 10);
+        CHECK(session->cursor() >= 6);  // more than a start and an end: the shortest, depth sort's simple case, has 6
         CHECK_FALSE(session->narration().empty());
         CHECK(session->current_line() >= 0);
         CHECK(std::size_t(session->current_line()) < session->pseudocode().size());

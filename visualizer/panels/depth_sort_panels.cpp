@@ -8,18 +8,23 @@
 
 namespace hsr::viz {
 
+// The tests tried on the pair under examination, one row each (the swapped retries of 3 and 4 after the five),
+// scrolled so that the latest is in sight.
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
     place_in_column(l, 2);
     const DepthSortView& v = s.view();
     ImGui::Begin("Decision table", nullptr, fixed);
-    std::string list = "list:";
-    for (std::uint32_t i : v.list) list += " #" + std::to_string(i);
-    ImGui::TextColored(dim_text, "%zu drawn · %u moves · %u splits · %s", v.drawn.size(), v.moves, v.splits, list.c_str());
-    if (v.r >= 0 && ImGui::BeginTable("tests", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
-        ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, 250);
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 36);
+    if (v.r < 0) {
+        ImGui::TextColored(dim_text, v.done ? "All drawn: %zu polygons, %u moves, %u splits." : "No pair under examination.",
+                           v.drawn.size(), v.moves, v.splits);
+    } else if (v.tests.empty()) {
+        ImGui::Text("R = #%d and Q = #%d overlap in z: the tests come next.", v.r, v.q);
+    }
+    ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
+    if (!v.tests.empty() && ImGui::BeginTable("tests", 3, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
+        ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, 226);
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 28);
         ImGui::TableSetupColumn("numbers");
-        ImGui::TableHeadersRow();
         for (const algo::TestTried& t : v.tests) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
@@ -29,13 +34,15 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
             ImGui::TableNextColumn();
             switch (t.test) {
                 case algo::OrderTest::x_extents:
-                case algo::OrderTest::y_extents: ImGui::Text("R [%.3g, %.3g]  Q [%.3g, %.3g]", t.a, t.b, t.c, t.d); break;
+                case algo::OrderTest::y_extents: ImGui::Text("R [%.2f,%.2f]  Q [%.2f,%.2f]", t.a, t.b, t.c, t.d); break;
                 case algo::OrderTest::projections: ImGui::TextUnformatted(t.a != 0 ? "overlap" : "separated"); break;
                 default: ImGui::Text("far %g · near %g · on %g", t.a, t.b, t.c);
             }
         }
+        ImGui::SetScrollHereY(1.0f);
         ImGui::EndTable();
     }
+    ImGui::PopStyleVar();
     ImGui::End();
 }
 

@@ -1,5 +1,6 @@
-// The panel of a depth-sort lesson: the decision table of the pair under examination (each test tried, its
-// outcome and the numbers that decided it) and the display list.
+// The panels of a depth-sort lesson: the decision table of the pair under examination (each test tried, its
+// outcome and the numbers that decided it), and over the 3D view the display list (moves and splits animated),
+// the screen with the projections of R and Q (tests 1, 2 and 5 are about them) and the image painted so far.
 #pragma once
 
 #include "panels/lesson_panels.h"
@@ -8,5 +9,8 @@
 namespace hsr::viz {
 
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& layout);
+// Over the view area (x, y, w, h): the display list along the top, the screen bottom left, the painting bottom right.
+// With `animate` off (screenshots, recordings) the chips of the list stand in their places at once.
+void depth_sort_canvas(const DepthSortSession& s, float x, float y, float w, float h, bool animate);
 
 }  // namespace hsr::viz

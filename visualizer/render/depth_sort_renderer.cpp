@@ -11,12 +11,17 @@ namespace {
 
 using algo::Vec3;
 
+// Normalised device coordinates are left-handed (z grows away from the eye) and the 3D view is right-handed, so
+// depth is drawn along −z: the eye (at z = −∞ in NDC) is on the +z side of the view, and x runs to the right, as on
+// the screen and in the painted image.
+glm::vec3 shown(const Vec3& ndc) { return {float(ndc.x), float(ndc.y), float(-ndc.z)}; }
+
 glm::vec4 colour_of(const algo::SortPolygon& p, float alpha) { return {p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, alpha}; }
 
 void polygon(LineBatches& out, const algo::SortPolygon& p, glm::vec4 fill, glm::vec4 edge, bool bold) {
     const auto& v = p.vertices;
-    for (std::size_t k = 1; k + 1 < v.size(); ++k) out.faint.triangle(glm::vec3(v[0]), glm::vec3(v[k]), glm::vec3(v[k + 1]), fill);
-    for (std::size_t k = 0; k < v.size(); ++k) (bold ? out.bold : out.faint).line(glm::vec3(v[k]), glm::vec3(v[(k + 1) % v.size()]), edge);
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) out.faint.triangle(shown(v[0]), shown(v[k]), shown(v[k + 1]), fill);
+    for (std::size_t k = 0; k < v.size(); ++k) (bold ? out.bold : out.faint).line(shown(v[k]), shown(v[(k + 1) % v.size()]), edge);
 }
 
 // The plane of a polygon, as a square of side 1.6 around its centre.
@@ -26,7 +31,7 @@ void plane_quad(LineBatches& out, const algo::SortPolygon& p) {
     const Vec3 c = algo::centroid(p.vertices);
     const Vec3 u = glm::normalize(glm::cross(pl.n, std::abs(pl.n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0))) * 0.8;
     const Vec3 w = glm::cross(pl.n, u);
-    const glm::vec3 a(c - u - w), b(c + u - w), d(c + u + w), e(c - u + w);
+    const glm::vec3 a = shown(c - u - w), b = shown(c + u - w), d = shown(c + u + w), e = shown(c - u + w);
     out.faint.triangle(a, b, d, palette::plane_fill);
     out.faint.triangle(a, d, e, palette::plane_fill);
     for (const auto& [x, y] : {std::pair{a, b}, {b, d}, {d, e}, {e, a}}) out.faint.line(x, y, palette::plane_edge);
@@ -43,18 +48,18 @@ void draw_depth_sort_view(const DepthSortView& v, LineBatches& out, std::vector<
                 const auto corner = [](int k) { return glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1); };
                 out.faint.line(corner(i), corner(i | axis), box);
             }
-    out.bold.point({0, 0, -1.6f}, palette::eye);
-    labels.push_back({{0, 0, -1.6f}, "eye (rays along +z)", palette::eye});
+    out.bold.point(shown({0, 0, -1.6}), palette::eye);
+    labels.push_back({shown({0, 0, -1.6}), "eye (NDC z grows away from it)", palette::eye});
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.15f), colour_of(v.polygons[i], 0.8f), false);
     for (std::uint32_t i : v.drawn) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.75f), colour_of(v.polygons[i], 1), false);
     if (v.r >= 0) {
         polygon(out, v.polygons[std::size_t(v.r)], colour_of(v.polygons[std::size_t(v.r)], 0.4f), palette::current_edge, true);
-        labels.push_back({glm::vec3(algo::centroid(v.polygons[std::size_t(v.r)].vertices)), "R", palette::current_edge});
+        labels.push_back({shown(algo::centroid(v.polygons[std::size_t(v.r)].vertices)), "R", palette::current_edge});
     }
     if (v.q >= 0) {
         polygon(out, v.polygons[std::size_t(v.q)], colour_of(v.polygons[std::size_t(v.q)], 0.4f), palette::parameter, true);
-        labels.push_back({glm::vec3(algo::centroid(v.polygons[std::size_t(v.q)].vertices)), "Q", palette::parameter});
+        labels.push_back({shown(algo::centroid(v.polygons[std::size_t(v.q)].vertices)), "Q", palette::parameter});
     }
     if (!v.tests.empty() && v.r >= 0 && v.q >= 0) {  // tests 3 and 4 test against a plane: show it
         switch (v.tests.back().test) {

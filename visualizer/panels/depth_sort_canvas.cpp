@@ -1,0 +1,175 @@
+// Over the 3D view of a depth-sort lesson: the display list as a row of chips that slide when a polygon moves to
+// the head or is cut into parts, the screen (x, y) with the projections of R and Q and their extents, and the
+// image painted so far, translucent polygons composited "over" what lies behind them.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <imgui.h>
+
+#include "core/image.h"
+#include "panels/depth_sort_panels.h"
+#include "panels/fat_pixels.h"
+#include "panels/panel_style.h"
+
+namespace hsr::viz {
+namespace {
+
+using algo::SortPolygon;
+
+const ImU32 r_colour = IM_COL32(240, 227, 66, 255);   // palette::current_edge, as R is in the 3D view
+const ImU32 q_colour = IM_COL32(87, 181, 232, 255);   // palette::parameter, as Q is
+const ImU32 cut_colour = IM_COL32(214, 94, 0, 255);   // vermillion
+const ImU32 text_colour = IM_COL32(220, 220, 220, 255);
+const ImU32 dim_colour = IM_COL32(150, 153, 160, 255);
+
+// Where each chip is drawn now, by polygon index; chips ease towards their place in the list, so that a move to
+// the head or the parts of a cut slide into place instead of jumping. The state belongs to the drawing only.
+struct ChipAnimation {
+    const DepthSortSession* session = nullptr;
+    std::vector<float> x;
+};
+
+float ease(float from, float to, bool animate) {
+    if (!animate) return to;
+    const float k = 1 - std::exp(-ImGui::GetIO().DeltaTime * 9);
+    return from + (to - from) * std::clamp(k, 0.0f, 1.0f);
+}
+
+void display_list(const DepthSortSession& s, ImDrawList* d, ImVec2 at, float w, bool animate) {
+    static ChipAnimation anim;
+    const DepthSortView& v = s.view();
+    if (anim.session != &s) anim = {&s, {}};
+    anim.x.resize(v.polygons.size(), NAN);
+    const std::size_t n = v.drawn.size() + v.list.size();
+    const float gap = 26, chip = std::clamp((w - gap) / float(std::max<std::size_t>(n, 1)) - 4, 8.0f, 46.0f);
+    const std::string heading = "drawn, back to front · " + std::to_string(v.moves) + (v.moves == 1 ? " move · " : " moves · ") +
+                              std::to_string(v.splits) + (v.splits == 1 ? " split" : " splits");
+    d->AddText(at, dim_colour, heading.c_str());
+    const float list_x0 = at.x + float(v.drawn.size()) * (chip + 4) + (v.drawn.empty() ? 0 : gap);
+    d->AddText(ImVec2(std::max(list_x0, at.x + 290), at.y), dim_colour, "display list, head first →");
+    const float y = at.y + 22;
+    const auto place_chip = [&](std::uint32_t i, float target) {
+        float& x = anim.x[i];
+        if (std::isnan(x)) x = v.cut >= 0 && std::size_t(v.cut) < anim.x.size() && !std::isnan(anim.x[std::size_t(v.cut)])
+                                   ? anim.x[std::size_t(v.cut)] : target;  // parts start where the cut polygon was
+        x = ease(x, target, animate);
+        const SortPolygon& p = v.polygons[i];
+        const bool drawn = std::find(v.drawn.begin(), v.drawn.end(), i) != v.drawn.end();
+        const float lift = int(i) == v.moved ? -6.0f : 0.0f;
+        const ImVec2 a(x, y + lift), b(x + chip, y + lift + 28);
+        d->AddRectFilled(a, b, rgb(p.color, drawn ? 0.35f + 0.65f * float(p.opacity) : 0.3f), 3);
+        ImU32 edge = IM_COL32(90, 94, 102, 255);
+        float thickness = 1;
+        if (int(i) == v.r) edge = r_colour, thickness = 3;
+        if (int(i) == v.q) edge = q_colour, thickness = 3;
+        d->AddRect(a, b, edge, 3, 0, thickness);
+        if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_colour, ("#" + std::to_string(i)).c_str());
+        const char* note = int(i) == v.moved ? "moved" : int(i) == v.cycle ? "cycle" : int(i) == v.r ? "R" : int(i) == v.q ? "Q" : nullptr;
+        if (note) d->AddText(ImVec2(a.x + 2, b.y + 2), int(i) == v.cycle ? cut_colour : text_colour, note);
+    };
+    for (std::size_t k = 0; k < v.drawn.size(); ++k) place_chip(v.drawn[k], at.x + float(k) * (chip + 4));
+    for (std::size_t k = 0; k < v.list.size(); ++k) place_chip(v.list[k], list_x0 + float(k) * (chip + 4));
+    if (v.cut >= 0) {
+        const std::string cut = "#" + std::to_string(v.cut) + " was cut into #" + std::to_string(v.polygons.size() - 2) +
+                                " and #" + std::to_string(v.polygons.size() - 1);
+        d->AddText(ImVec2(at.x, y + 48), cut_colour, cut.c_str());
+    }
+}
+
+// The screen, x and y in [−1, 1] (y up), as a square of `size` points from `o`.
+struct Screen {
+    ImVec2 o;
+    float size;
+    ImVec2 operator()(double x, double y) const {
+        return {o.x + float((x + 1) / 2) * size, o.y + float((1 - y) / 2) * size};
+    }
+};
+
+void projection(ImDrawList* d, const Screen& screen, const SortPolygon& p, ImU32 fill, ImU32 edge, float thickness) {
+    std::vector<ImVec2> points;
+    for (const auto& v : p.vertices) points.push_back(screen(v.x, v.y));
+    if (points.size() >= 3) d->AddConvexPolyFilled(points.data(), int(points.size()), fill);
+    d->AddPolyline(points.data(), int(points.size()), edge, ImDrawFlags_Closed, thickness);
+}
+
+// An extent [lo, hi] of x (below the screen) or y (left of it), in the colour of its polygon.
+void extent_bar(ImDrawList* d, const Screen& screen, const SortPolygon& p, bool along_x, float offset, ImU32 colour) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& v : p.vertices) lo = std::min(lo, along_x ? v.x : v.y), hi = std::max(hi, along_x ? v.x : v.y);
+    if (along_x) {
+        const float y = screen.o.y + screen.size + offset;
+        d->AddLine(ImVec2(screen(lo, 0).x, y), ImVec2(screen(hi, 0).x, y), colour, 4);
+    } else {
+        const float x = screen.o.x - offset;
+        d->AddLine(ImVec2(x, screen(0, lo).y), ImVec2(x, screen(0, hi).y), colour, 4);
+    }
+}
+
+void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
+    const DepthSortView& v = s.view();
+    d->AddRectFilled(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(26, 28, 33, 255));
+    d->AddRect(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(110, 114, 122, 255));
+    d->AddText(ImVec2(screen.o.x, screen.o.y - 20), text_colour, "screen (x, y): tests 1, 2, 5");
+    for (std::uint32_t i : v.list)
+        if (int(i) != v.r && int(i) != v.q) projection(d, screen, v.polygons[i], 0, IM_COL32(110, 114, 122, 200), 1);
+    if (v.r < 0 || v.q < 0) return;
+    const SortPolygon &r = v.polygons[std::size_t(v.r)], &q = v.polygons[std::size_t(v.q)];
+    projection(d, screen, r, rgb(r.color, 0.35f), r_colour, 2.5f);
+    projection(d, screen, q, rgb(q.color, 0.35f), q_colour, 2.5f);
+    extent_bar(d, screen, r, true, 6, r_colour);
+    extent_bar(d, screen, q, true, 12, q_colour);
+    extent_bar(d, screen, r, false, 6, r_colour);
+    extent_bar(d, screen, q, false, 12, q_colour);
+    for (const algo::TestTried& t : v.tests)
+        if (t.test == algo::OrderTest::projections)
+            d->AddText(ImVec2(screen.o.x + 4, screen.o.y + 4), t.passed ? IM_COL32(90, 205, 140, 255) : cut_colour,
+                       t.passed ? "5: projections apart" : "5: projections overlap");
+}
+
+// The image painted so far: the drawn polygons in their order, each "over" what is there. Repainted only when the
+// drawn list changes (stepping, scrubbing or a reload).
+void painting(const DepthSortSession& s, ImDrawList* d, ImVec2 o, float size) {
+    struct Cache {
+        const DepthSortSession* session = nullptr;
+        std::vector<std::uint32_t> drawn;
+        algo::Image image{0, 0};
+    };
+    static Cache cache;
+    const DepthSortView& v = s.view();
+    const algo::Viewport vp{96, 96};
+    if (cache.session != &s || cache.drawn != v.drawn || cache.image.width != vp.width) {
+        cache = {&s, v.drawn, algo::Image(vp.width, vp.height, {26, 28, 33})};
+        for (std::uint32_t i : v.drawn) {
+            std::vector<glm::dvec4> ndc;
+            for (const auto& p : v.polygons[i].vertices) ndc.emplace_back(p, 1.0);
+            algo::paint_clip_polygon(cache.image, std::move(ndc), v.polygons[i].id, v.polygons[i].color, v.polygons[i].opacity);
+        }
+    }
+    d->AddText(ImVec2(o.x, o.y - 20), text_colour, "painted so far (over)");
+    const float cell = size / float(vp.width);
+    for (int y = 0; y < vp.height; ++y)  // runs of one colour along a row, one rectangle each
+        for (int x0 = 0; x0 < vp.width;) {
+            const auto px = [&](int x) { return &cache.image.rgb[3 * (std::size_t(y) * std::size_t(vp.width) + std::size_t(x))]; };
+            int x1 = x0 + 1;
+            while (x1 < vp.width && std::equal(px(x1), px(x1) + 3, px(x0))) ++x1;
+            d->AddRectFilled(ImVec2(o.x + float(x0) * cell, o.y + float(y) * cell), ImVec2(o.x + float(x1) * cell, o.y + float(y + 1) * cell),
+                             IM_COL32(px(x0)[0], px(x0)[1], px(x0)[2], 255));
+            x0 = x1;
+        }
+    d->AddRect(o, ImVec2(o.x + size, o.y + size), IM_COL32(110, 114, 122, 255));
+}
+
+}  // namespace
+
+void depth_sort_canvas(const DepthSortSession& s, float x, float y, float w, float h, bool animate) {
+    ImDrawList* d = begin_canvas("##depth sort canvas", x, y, w, h);
+    display_list(s, d, ImVec2(x + 16, y + 10), w - 32, animate);
+    const float size = std::clamp(std::min(w * 0.26f, h * 0.28f), 110.0f, 240.0f);
+    screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
+    painting(s, d, ImVec2(x + w - size - 16, y + h - size - 34), size);
+    ImGui::End();
+}
+
+}  // namespace hsr::viz
