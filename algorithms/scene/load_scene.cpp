@@ -3,8 +3,10 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "core/plane.h"
 #include <set>
+
+#include "core/plane.h"
+#include "scene/load_floor_plan.h"
 
 namespace hsr::algo {
 namespace {
@@ -87,10 +89,11 @@ void for_each_table(const TomlReader& r, const toml::table& root, std::string_vi
     }
 }
 
-Expect read_expect(const TomlReader& r, const toml::table* t) {
+Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& plan) {
     Expect e;
     if (!t) return e;
-    r.only_keys(*t, "expect", {"clip", "bsp", "cull"});
+    r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs"});
+    e.pvs = read_expect_pvs(r, r.table(*t, "pvs", "expect", false), plan);
     for_each_table(r, *t, "cull", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
         r.only_keys(c, f, {"test", "kept"});
@@ -149,7 +152,7 @@ Expect read_expect(const TomlReader& r, const toml::table* t) {
 
 Scene read_scene(const TomlReader& r) {
     const toml::table& root = r.root();
-    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "expect"});
+    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "floor_plan", "expect"});
     Scene s;
     s.source = r.path();
     s.name = r.text(root, "name", "", "untitled scene");
@@ -197,7 +200,14 @@ Scene read_scene(const TomlReader& r) {
                    "the polygon has no area (its vertices are on one line or at one point)");
         s.polygons.push_back(std::move(p));
     });
-    s.expect = read_expect(r, r.table(root, "expect", "", false));
+    s.floor_plan = read_floor_plan(r, r.table(root, "floor_plan", "", false));
+    if (s.floor_plan.eye) {  // the viewer of a floor plan stands in it: the camera follows
+        const FloorPlan& plan = s.floor_plan;
+        s.camera.eye = {plan.eye->x, plan.eye_height, -plan.eye->y};
+        s.camera.target = {plan.look.x, plan.eye_height, -plan.look.y};
+        s.camera.up = {0, 1, 0};
+    }
+    s.expect = read_expect(r, r.table(root, "expect", "", false), s.floor_plan);
     for (const ExpectClip& x : s.expect.clip)
         if (!ids.contains(x.id))
             throw LoadError(r.path(), x.line, 1, "expect.clip.id",

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -52,6 +53,36 @@ struct ScenePolygon {
     double opacity = 1;  // 0 … 1: drawn with "over" by the painter's algorithms; the z-buffer draws it opaque
 };
 
+// A cells-and-portals scene in the lecture's simplest form: a floor plan of convex cells joined by portals
+// (openings in a shared wall), extruded to rooms. Plan coordinates (x, y) are the world's (x, −z); heights are
+// the world's y, the floor at 0.
+struct SceneCell {
+    std::string name;
+    std::vector<glm::dvec2> outline;  // convex, counter-clockwise in the plan
+    int line;
+};
+struct ScenePortal {
+    std::string between[2];   // the names of the two cells it joins
+    glm::dvec2 from, to;      // the opening, on the wall the two cells share (plan)
+    double bottom = 0, top = 0;  // heights of the opening (top 0: up to the ceiling)
+    int line;
+};
+struct FloorPlan {
+    double height = 3;                  // of every room, world units
+    std::vector<SceneCell> cells;
+    std::vector<ScenePortal> portals;
+    std::optional<glm::dvec2> eye;      // the viewer in the plan, at eye_height; the camera looks at `look`
+    glm::dvec2 look{0};
+    double eye_height = 1.6;
+};
+
+// [expect.pvs]: each cell's potentially visible set, by name.
+struct ExpectPvs {
+    std::string cell;
+    std::vector<std::string> visible;
+    int line;
+};
+
 // [[expect.clip]]: what clipping must make of one primitive.
 struct ExpectClip {
     SceneId id;
@@ -77,6 +108,7 @@ struct Expect {
     std::vector<ExpectClip> clip;
     std::vector<ExpectBsp> bsp;
     std::vector<ExpectCull> cull;
+    std::vector<ExpectPvs> pvs;
 };
 
 struct Scene {
@@ -88,6 +120,7 @@ struct Scene {
     std::vector<ScenePoint> points;
     std::vector<SceneSegment> segments;
     std::vector<ScenePolygon> polygons;
+    FloorPlan floor_plan;  // no cells: not a cells-and-portals scene
     Expect expect;
 };
 

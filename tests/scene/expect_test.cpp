@@ -8,6 +8,7 @@
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
 #include "culling/backface.h"
+#include "portals/pvs.h"
 #include "scene/load_scene.h"
 
 using namespace hsr::algo;
@@ -90,6 +91,23 @@ TEST_CASE("every scene file loads and meets its expect table", "[scene][expect]"
                 for (BspPolygonId p : traverse_bsp(&tree, *x.eye).run_to_end())
                     painted.push_back(tree.polygons[std::size_t(p)].source);
                 CHECK(painted == *x.order);
+            }
+        }
+
+        if (!scene.expect.pvs.empty()) {
+            const CellModel model = cell_model(scene);
+            const Pvs pvs = build_pvs(&model).run_to_end();
+            for (const ExpectPvs& x : scene.expect.pvs) {
+                INFO("expect.pvs at line " << x.line << ", cell " << x.cell);
+                const auto named = [&](const std::string& name) {
+                    return std::uint32_t(std::find_if(model.cells.begin(), model.cells.end(), [&](const Cell& c) { return c.name == name; }) -
+                                         model.cells.begin());
+                };
+                std::vector<std::string> got, want = x.visible;
+                for (std::uint32_t c : pvs.row(named(x.cell))) got.push_back(model.cells[c].name);
+                std::sort(want.begin(), want.end());
+                std::sort(got.begin(), got.end());
+                CHECK(got == want);
             }
         }
     }

@@ -1,0 +1,149 @@
+#include "scene/load_floor_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <glm/geometric.hpp>
+
+namespace hsr::algo {
+namespace {
+
+glm::dvec2 point2(const TomlReader& r, const toml::node& n, const std::string& field) {
+    const toml::array* a = n.as_array();
+    if (!a || a->size() != 2) r.fail(&n, field, "expected [x, y] (2 numbers)");
+    glm::dvec2 p;
+    for (int i = 0; i < 2; ++i) {
+        const auto v = a->get(std::size_t(i))->value<double>();
+        if (!v || !std::isfinite(*v)) r.fail(a->get(std::size_t(i)), field, "expected [x, y] (2 finite numbers)");
+        p[i] = *v;
+    }
+    return p;
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Distance from p to the segment ab.
+double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+    const glm::dvec2 d = b - a;
+    const double t = std::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0, 1.0);
+    return glm::length(p - (a + t * d));
+}
+
+// Is the segment pq on one edge of the outline (both ends within eps of the same edge)?
+bool on_an_edge(const std::vector<glm::dvec2>& outline, glm::dvec2 p, glm::dvec2 q, double eps) {
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+        const glm::dvec2 a = outline[i], b = outline[(i + 1) % outline.size()];
+        if (distance_to_segment(p, a, b) <= eps && distance_to_segment(q, a, b) <= eps) return true;
+    }
+    return false;
+}
+
+SceneCell read_cell(const TomlReader& r, const toml::table& t, const std::string& f) {
+    r.only_keys(t, f, {"name", "rect", "outline"});
+    SceneCell c{r.text(t, "name", f), {}, int(t.source().begin.line)};
+    if (c.name.empty()) r.fail(t.get("name"), join(f, "name"), "a cell needs a name");
+    if (const toml::node* rect = t.get("rect")) {
+        const toml::array* a = rect->as_array();
+        double v[4];
+        for (std::size_t i = 0; i < 4; ++i) {
+            const auto x = a && a->size() == 4 ? a->get(i)->value<double>() : std::nullopt;
+            if (!x || !std::isfinite(*x)) r.fail(rect, join(f, "rect"), "expected [x0, y0, x1, y1] (4 finite numbers)");
+            v[i] = *x;
+        }
+        if (!(v[0] < v[2] && v[1] < v[3])) r.fail(rect, join(f, "rect"), "expected x0 < x1 and y0 < y1");
+        c.outline = {{v[0], v[1]}, {v[2], v[1]}, {v[2], v[3]}, {v[0], v[3]}};
+    } else {
+        const toml::array* a = r.array(t, "outline", f, true);
+        for (std::size_t i = 0; i < a->size(); ++i) c.outline.push_back(point2(r, *a->get(i), index(join(f, "outline"), i)));
+        if (c.outline.size() < 3) r.fail(t.get("outline"), join(f, "outline"), "a cell needs at least 3 corners");
+        double area = 0;
+        for (std::size_t i = 0; i < c.outline.size(); ++i) area += cross(c.outline[i], c.outline[(i + 1) % c.outline.size()]);
+        if (area < 0) std::reverse(c.outline.begin(), c.outline.end());  // counter-clockwise, whichever way it was written
+        for (std::size_t i = 0; i < c.outline.size(); ++i) {
+            const glm::dvec2 a0 = c.outline[i], a1 = c.outline[(i + 1) % c.outline.size()], a2 = c.outline[(i + 2) % c.outline.size()];
+            if (cross(a1 - a0, a2 - a1) <= 0)
+                r.fail(t.get("outline"), join(f, "outline"), "the cell is not convex (or has a straight angle) at corner " + std::to_string((i + 1) % c.outline.size()));
+        }
+    }
+    return c;
+}
+
+}  // namespace
+
+FloorPlan read_floor_plan(const TomlReader& r, const toml::table* t) {
+    FloorPlan plan;
+    if (!t) return plan;
+    const std::string f = "floor_plan";
+    r.only_keys(*t, f, {"height", "cells", "portals", "eye", "look", "eye_height"});
+    plan.height = r.number(*t, "height", f, plan.height);
+    if (!(plan.height > 0)) r.fail(t->get("height"), join(f, "height"), "expected a height > 0");
+    plan.eye_height = r.number(*t, "eye_height", f, plan.eye_height);
+    if (!(plan.eye_height > 0 && plan.eye_height < plan.height))
+        r.fail(t->get("eye_height"), join(f, "eye_height"), "expected 0 < eye_height < height");
+    if (const toml::node* eye = t->get("eye")) plan.eye = point2(r, *eye, join(f, "eye"));
+    if (const toml::node* look = t->get("look")) plan.look = point2(r, *look, join(f, "look"));
+    if (plan.eye && glm::length(plan.look - *plan.eye) == 0) r.fail(t->get("look"), join(f, "look"), "look equals eye");
+
+    std::set<std::string> names;
+    double extent = 0;
+    const toml::array* cells = r.array(*t, "cells", f, true);
+    for (std::size_t i = 0; i < cells->size(); ++i) {
+        const std::string fi = index(join(f, "cells"), i);
+        const toml::table* ct = cells->get(i)->as_table();
+        if (!ct) r.fail(cells->get(i), fi, "expected a table");
+        SceneCell c = read_cell(r, *ct, fi);
+        if (!names.insert(c.name).second) r.fail(ct->get("name"), join(fi, "name"), "cell \"" + c.name + "\" is named twice");
+        for (const auto& p : c.outline) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+        plan.cells.push_back(std::move(c));
+    }
+    const double eps = 1e-9 * std::max(extent, 1.0);
+    const auto cell_named = [&](const std::string& name) {
+        return std::find_if(plan.cells.begin(), plan.cells.end(), [&](const SceneCell& c) { return c.name == name; });
+    };
+    if (const toml::array* portals = r.array(*t, "portals", f, false))
+        for (std::size_t i = 0; i < portals->size(); ++i) {
+            const std::string fi = index(join(f, "portals"), i);
+            const toml::table* pt = portals->get(i)->as_table();
+            if (!pt) r.fail(portals->get(i), fi, "expected a table");
+            r.only_keys(*pt, fi, {"between", "from", "to", "bottom", "top"});
+            const std::vector<std::string> between = r.strings(*pt, "between", fi);
+            if (between.size() != 2 || between[0] == between[1])
+                r.fail(pt->get("between"), join(fi, "between"), "expected the names of two different cells");
+            ScenePortal p{{between[0], between[1]}, {}, {}, 0, 0, int(pt->source().begin.line)};
+            for (const std::string& name : between)
+                if (cell_named(name) == plan.cells.end()) r.fail(pt->get("between"), join(fi, "between"), "no cell is named \"" + name + "\"");
+            if (!pt->get("from") || !pt->get("to")) r.fail(pt, fi, "a portal needs from = [x, y] and to = [x, y]");
+            p.from = point2(r, *pt->get("from"), join(fi, "from"));
+            p.to = point2(r, *pt->get("to"), join(fi, "to"));
+            if (glm::length(p.to - p.from) <= eps) r.fail(pt->get("to"), join(fi, "to"), "the opening has no width");
+            for (const std::string& name : between)
+                if (!on_an_edge(cell_named(name)->outline, p.from, p.to, eps))
+                    r.fail(pt->get("from"), join(fi, "from"), "the opening is not on a wall of cell \"" + name + "\"");
+            p.bottom = r.number(*pt, "bottom", fi, 0.0);
+            p.top = r.number(*pt, "top", fi, plan.height);
+            if (!(p.bottom >= 0 && p.bottom < p.top && p.top <= plan.height))
+                r.fail(pt->get("top"), join(fi, "top"), "expected 0 <= bottom < top <= the rooms' height");
+            plan.portals.push_back(std::move(p));
+        }
+    return plan;
+}
+
+std::vector<ExpectPvs> read_expect_pvs(const TomlReader& r, const toml::table* t, const FloorPlan& plan) {
+    std::vector<ExpectPvs> out;
+    if (!t) return out;
+    const auto known = [&](const std::string& name) {
+        return std::any_of(plan.cells.begin(), plan.cells.end(), [&](const SceneCell& c) { return c.name == name; });
+    };
+    for (const auto& [key, node] : *t) {
+        const std::string name(key.str()), f = "expect.pvs." + name;
+        if (!known(name)) r.fail(&node, f, "no cell is named \"" + name + "\"");
+        ExpectPvs x{name, r.strings(*t, key.str(), "expect.pvs"), int(node.source().begin.line)};
+        for (const std::string& v : x.visible)
+            if (!known(v)) r.fail(&node, f, "no cell is named \"" + v + "\"");
+        out.push_back(std::move(x));
+    }
+    return out;
+}
+
+}  // namespace hsr::algo
