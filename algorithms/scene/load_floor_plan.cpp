@@ -39,6 +39,19 @@ bool on_an_edge(const std::vector<glm::dvec2>& outline, glm::dvec2 p, glm::dvec2
     return false;
 }
 
+// Do two convex outlines overlap with area (more than touching)? Separating axes: the edges' normals.
+bool overlap(const std::vector<glm::dvec2>& a, const std::vector<glm::dvec2>& b, double eps) {
+    for (const auto* poly : {&a, &b})
+        for (std::size_t i = 0; i < poly->size(); ++i) {
+            const glm::dvec2 e = (*poly)[(i + 1) % poly->size()] - (*poly)[i], axis(-e.y, e.x);
+            double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
+            for (const auto& p : a) a0 = std::min(a0, glm::dot(p, axis)), a1 = std::max(a1, glm::dot(p, axis));
+            for (const auto& p : b) b0 = std::min(b0, glm::dot(p, axis)), b1 = std::max(b1, glm::dot(p, axis));
+            if (a1 <= b0 + eps * glm::length(axis) || b1 <= a0 + eps * glm::length(axis)) return false;
+        }
+    return true;
+}
+
 SceneCell read_cell(const TomlReader& r, const toml::table& t, const std::string& f) {
     r.only_keys(t, f, {"name", "rect", "outline"});
     SceneCell c{r.text(t, "name", f), {}, int(t.source().begin.line)};
@@ -98,6 +111,22 @@ FloorPlan read_floor_plan(const TomlReader& r, const toml::table* t) {
         plan.cells.push_back(std::move(c));
     }
     const double eps = 1e-9 * std::max(extent, 1.0);
+    // Cells may share walls but not floor: sorted by their left edge, each is compared with those it could overlap
+    std::vector<std::size_t> by_x(plan.cells.size());
+    for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+    const auto x_range = [&](std::size_t i) {
+        double lo = 1e300, hi = -1e300;
+        for (const auto& p : plan.cells[i].outline) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+        return std::pair{lo, hi};
+    };
+    std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) { return x_range(a).first < x_range(b).first; });
+    for (std::size_t i = 0; i < by_x.size(); ++i)
+        for (std::size_t j = i + 1; j < by_x.size() && x_range(by_x[j]).first < x_range(by_x[i]).second; ++j)
+            if (overlap(plan.cells[by_x[i]].outline, plan.cells[by_x[j]].outline, eps)) {
+                const SceneCell& later = plan.cells[std::max(by_x[i], by_x[j])];
+                throw LoadError(r.path(), later.line, 1, index(join(f, "cells"), std::max(by_x[i], by_x[j])),
+                                "cells \"" + plan.cells[by_x[i]].name + "\" and \"" + plan.cells[by_x[j]].name + "\" overlap");
+            }
     const auto cell_named = [&](const std::string& name) {
         return std::find_if(plan.cells.begin(), plan.cells.end(), [&](const SceneCell& c) { return c.name == name; });
     };

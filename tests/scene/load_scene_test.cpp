@@ -49,6 +49,8 @@ outcome = "inside"
     CHECK(s.expect.clip[0].outcome == "inside");
 }
 
+const char* const two_cells = "[floor_plan]\n[[floor_plan.cells]]\nname = \"A\"\nrect = [0, 0, 2, 2]\n[[floor_plan.cells]]\nname = \"B\"\nrect = [2, 0, 4, 2]\n";
+
 TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
     struct Case {
         const char* text;
@@ -74,6 +76,23 @@ TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
         {"[[polygons]]\nid = 1\nopacity = 1.5\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n", 3, "polygons[0].opacity", "from 0 to 1"},
         {"name = \"x\"\n[camera\n", 2, "", ""},  // a TOML syntax error
     };
+    // Floor plans: the text is two cells side by side (lines 1-7) and what follows
+    const std::string plans[][4] = {
+        {"[[floor_plan.cells]]\nname = \"C\"\nrect = [1, 1, 3, 3]\n", "8", "floor_plan.cells[2]", "overlap"},
+        {"[[floor_plan.cells]]\nname = \"A\"\nrect = [5, 5, 6, 6]\n", "9", "floor_plan.cells[2].name", "named twice"},
+        {"[[floor_plan.cells]]\nname = \"L\"\noutline = [[5, 0], [7, 0], [6, 0.5], [6, 2]]\n", "10", "floor_plan.cells[2].outline", "not convex"},
+        {"[[floor_plan.portals]]\nbetween = [\"A\", \"Z\"]\nfrom = [2, 0.5]\nto = [2, 1.5]\n", "9", "floor_plan.portals[0].between", "no cell is named \"Z\""},
+        {"[[floor_plan.portals]]\nbetween = [\"A\", \"B\"]\nfrom = [1, 0.5]\nto = [1, 1.5]\n", "10", "floor_plan.portals[0].from", "not on a wall"},
+        {"[[floor_plan.portals]]\nbetween = [\"A\", \"B\"]\nfrom = [2, 0.5]\nto = [2, 1.5]\ntop = 9\n", "12", "floor_plan.portals[0].top", "bottom < top"},
+        {"[expect.pvs]\nA = [\"A\", \"Q\"]\n", "9", "expect.pvs.A", "no cell is named \"Q\""},
+    };
+    for (const auto& [text, line, field, says] : plans) {
+        const LoadError e = error_of(std::string(two_cells) + text);
+        INFO(text << "\n→ " << e.what());
+        CHECK(e.line == std::stoi(line));
+        CHECK(e.field == field);
+        CHECK_THAT(e.what(), Catch::Contains(says));
+    }
     for (const Case& c : cases) {
         const LoadError e = error_of(c.text);
         INFO(c.text << "\n→ " << e.what());
