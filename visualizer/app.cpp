@@ -24,12 +24,14 @@
 #include "panels/raycast_panels.h"
 #include "panels/scanline_panels.h"
 #include "panels/depth_sort_panels.h"
+#include "panels/portal_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "panels/zmerge_panels.h"
 #include "render/bsp_renderer.h"
 #include "render/clip_renderer.h"
 #include "render/cull_renderer.h"
 #include "render/depth_sort_renderer.h"
+#include "render/portal_renderer.h"
 #include "render/frustum.h"
 #include "render/raycast_renderer.h"
 #include "render/zbuffer_renderer.h"
@@ -44,6 +46,7 @@
 #include "state/clip_session.h"
 #include "state/cull_session.h"
 #include "state/depth_sort_session.h"
+#include "state/portal_session.h"
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
@@ -63,7 +66,7 @@ struct Lessonplay {
     double tween = 1;                // 0 … 1 of the way from `before` to the current view
     static constexpr double tween_seconds = 0.25;
     bool animate = true;             // off for screenshots and recordings: they show each step as it ends
-    bool zbuffer_3d = false;         // z-buffer lessons: the scene in 3D instead of the fat pixels
+    bool zbuffer_3d = false;         // z-buffer and portal lessons: the scene in 3D instead of the pixels or the plan
 
     void load(const AppOptions& o) {
         try {
@@ -78,6 +81,10 @@ struct Lessonplay {
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
             if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) scene_bounds(zb->lesson().scene, centre, radius);
+            if (const auto* portals = dynamic_cast<const PortalRenderSession*>(session.get())) {
+                portal_view_bounds(portals->view().world->model, centre, radius);
+                camera.yaw = 0.3f, camera.pitch = 0.9f;  // from above, to look into the rooms (they have no ceilings)
+            }
             if (dynamic_cast<const DepthSortSession*>(session.get())) {  // the canonical view volume, seen from the eye's side
                 centre = glm::vec3(0), radius = 1.6f;
                 camera.yaw = 0.55f, camera.pitch = 0.35f;
@@ -109,8 +116,10 @@ struct Lessonplay {
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload) load(o);
         if (!session) return;
-        if (a.move_eye)
+        if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
+            if (auto* portals = dynamic_cast<PortalRenderSession*>(session.get())) portals->move_eye(algo::plan_point(*a.move_eye));
+        }
         if (a.toggle_3d) zbuffer_3d = !zbuffer_3d;
         if (auto* zb = dynamic_cast<ZBufferSession*>(session.get())) {
             if (a.depth_format) zb->set_format(*a.depth_format);
@@ -233,6 +242,10 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* scan = dynamic_cast<const ScanLineSession*>(&s);
     const auto* merge = dynamic_cast<const ZMergeSession*>(&s);
     const auto* sort = dynamic_cast<const DepthSortSession*>(&s);
+    const auto* pvs = dynamic_cast<const PvsSession*>(&s);
+    const auto* portals = dynamic_cast<const PortalRenderSession*>(&s);
+    if (portals && lp.zbuffer_3d) draw_portal_view(portals->view(), r.batches, r.labels);
+    if (pvs || portals) detail = "cells and portals · plan (x, y) is the world's (x, -z)";
     if (sort) {
         draw_depth_sort_view(sort->view(), r.batches, r.labels);
         detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
@@ -283,6 +296,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (scan) scanline_canvas(*scan, 0, 0, view_w, view_h);
     if (merge) zmerge_canvas(*merge, 0, 0, view_w, view_h);
     if (sort) depth_sort_canvas(*sort, 0, 0, view_w, view_h, lp.animate);
+    if (pvs || (portals && !lp.zbuffer_3d)) portal_plan_canvas(s, 0, 0, view_w, view_h, actions);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
@@ -293,6 +307,8 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (scan) scanline_state_panel(*scan, layout);
     if (merge) zmerge_state_panel(*merge, layout);
     if (sort) depth_sort_state_panel(*sort, layout);
+    if (pvs) pvs_state_panel(*pvs, layout);
+    if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }

@@ -94,7 +94,8 @@ std::string describe(const PortalEvent& event, const CellModel& m) {
                        ": the rest of the PVS is drawn against the whole view frustum.";
             },
             [&](const PortalRenderFinished& e) -> std::string {
-                return "Done: " + n(e.visits) + " cell visits, " + n(e.portals_passed) + " portals passed, " + n(e.drawn) + " polygons drawn, " +
+                return "Done: " + n(e.visits) + (e.visits == 1 ? " cell visit, " : " cell visits, ") + n(e.portals_passed) +
+                       (e.portals_passed == 1 ? " portal passed, " : " portals passed, ") + n(e.drawn) + " polygons drawn, " +
                        n(e.culled_back_face) + " back-face and " + n(e.culled_frustum) + " frustum culls.";
             },
         },

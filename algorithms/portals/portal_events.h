@@ -9,6 +9,8 @@
 #include <variant>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/plane.h"
 
 namespace hsr::algo {
@@ -25,11 +27,14 @@ struct SightlineTested {
     std::vector<std::uint32_t> portals;  // the sequence, out of `source` first
     bool found;                          // some line passes through every portal of the sequence, each its way
     double line_space_area;              // of the set of such lines (0: none, or only a grazing one)
+    glm::dvec2 point{0}, direction{0};   // found: one such sightline in the plan, for drawing
     bool operator==(const SightlineTested&) const = default;
 };
 struct CellReached {
     static constexpr std::string_view kind = "CellReached";
     std::uint32_t source, cell, depth;  // depth: portals from the source
+    std::uint32_t node;                 // its index in the source's stab tree
+    std::int32_t parent, portal;        // the parent node, and the portal from it into `cell`
     bool operator==(const CellReached&) const = default;
 };
 struct StabBoundReached {

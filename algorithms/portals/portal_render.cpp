@@ -12,6 +12,7 @@ namespace {
 
 struct Render {
     const CellModel* model;
+    Camera camera;
     const Pvs* pvs;
     PortalRenderOptions options;
     Vec3 eye, forward, right, up;
@@ -132,7 +133,7 @@ Steps<PortalEvent, bool> render_cell(Render* r, std::uint32_t c, std::vector<Pla
             // Stop, and stay conservative: draw the rest of the PVS row against the original frustum
             r->stopped = r->out.bounded = true;
             co_yield PortalBoundReached{portal.to, r->path.size() >= r->options.max_depth ? r->options.max_depth : r->options.max_visits};
-            const std::vector<Plane> all = view_frustum(r->model->camera);
+            const std::vector<Plane> all = view_frustum(r->camera);
             for (std::uint32_t cell : r->pvs->row(r->start)) {
                 std::vector<PortalEvent> rest;
                 draw_polygons(*r, cell, all, rest);
@@ -160,9 +161,8 @@ std::vector<Plane> view_frustum(const Camera& c) {
 }
 
 Steps<PortalEvent, PortalRenderResult> portal_render(const CellModel* model, const CellBsp* bsp, const Pvs* pvs,
-                                                      PortalRenderOptions options) {
-    const Camera& cam = model->camera;
-    Render r{model, pvs, options, cam.eye, glm::normalize(cam.target - cam.eye), {}, {}, 0, {}, {}, false};
+                                                      Camera cam, PortalRenderOptions options) {
+    Render r{model, cam, pvs, options, cam.eye, glm::normalize(cam.target - cam.eye), {}, {}, 0, {}, {}, false};
     r.right = glm::normalize(glm::cross(r.forward, cam.up));
     r.up = glm::cross(r.right, r.forward);
     r.out.drawn.assign(model->polygons.size(), 0);

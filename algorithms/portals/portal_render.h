@@ -40,8 +40,8 @@ struct PortalRenderResult {
 // The view frustum of a perspective camera as planes whose fronts are inside: left, right, bottom, top, near, far.
 std::vector<Plane> view_frustum(const Camera& camera);
 
-// Model, tree and PVS must outlive the machine. The eye is the model's camera's (perspective only: InvalidInput).
+// Model, tree and PVS must outlive the machine. The camera must be a perspective one (else InvalidInput).
 Steps<PortalEvent, PortalRenderResult> portal_render(const CellModel* model, const CellBsp* bsp, const Pvs* pvs,
-                                                      PortalRenderOptions options = {});
+                                                      Camera camera, PortalRenderOptions options = {});
 
 }  // namespace hsr::algo

@@ -1,6 +1,7 @@
 #include "portals/pvs.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include "portals/sightline.h"
 
@@ -38,7 +39,9 @@ Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, std::int32_t parent) {
     const bool found = b->portals.size() == 1 || lines.through(ends(last));
     ++b->pvs.sightline_tests;
     {
-        const PvsEvent tested = SightlineTested{b->source, b->portals, found, lines.area()};
+        SightlineTested t{b->source, b->portals, found, lines.area()};
+        if (found) std::tie(t.point, t.direction) = lines.example();
+        const PvsEvent tested = std::move(t);
         co_yield tested;
     }
     if (!found) co_return false;
@@ -48,7 +51,7 @@ Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, std::int32_t parent) {
     auto& tree = b->pvs.trees[b->source];
     const auto node = std::int32_t(tree.size());
     tree.push_back({cell, parent, std::int32_t(b->portals.back())});
-    co_yield CellReached{b->source, cell, std::uint32_t(b->portals.size())};
+    co_yield CellReached{b->source, cell, std::uint32_t(b->portals.size()), std::uint32_t(node), parent, std::int32_t(b->portals.back())};
     // Stab on through each portal out of it, not back into a cell on the way
     b->path.push_back(cell);
     for (std::uint32_t next : b->model->cells[cell].portals) {

@@ -189,7 +189,7 @@ TEST_CASE("portal_render draws every polygon a ray cast from the eye sees", "[po
                 const Vec2 eye = random_point_in(b.model.cells[c].outline, rng);
                 const double a = angle(rng);
                 look_from(b, eye, eye + Vec2(std::cos(a), std::sin(a)));
-                const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs, {.bounding_box_frusta = bbox}).run_to_end();
+                const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera, {.bounding_box_frusta = bbox}).run_to_end();
                 INFO("eye (" << eye.x << ", " << eye.y << ") in " << b.model.cells[c].name);
                 REQUIRE(r.eye_cell == std::int32_t(c));
                 const Coverage cover = coverage(b, r, {48, 36});
@@ -201,8 +201,8 @@ TEST_CASE("portal_render draws every polygon a ray cast from the eye sees", "[po
 
 TEST_CASE("narrowing pays: exact frusta draw fewer polygons than bounding-box ones, and the PVS alone more", "[portals][render]") {
     Built b = build(scene_named("cells_lecture.toml"));
-    const PortalRenderResult exact = portal_render(&b.model, &b.bsp, &b.pvs).run_to_end();
-    const PortalRenderResult boxed = portal_render(&b.model, &b.bsp, &b.pvs, {.bounding_box_frusta = true}).run_to_end();
+    const PortalRenderResult exact = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera).run_to_end();
+    const PortalRenderResult boxed = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera, {.bounding_box_frusta = true}).run_to_end();
     const auto count = [](const PortalRenderResult& r) { return std::count(r.drawn.begin(), r.drawn.end(), 1); };
     std::size_t in_pvs = 0;
     for (std::uint32_t c : b.pvs.row(std::uint32_t(exact.eye_cell))) in_pvs += b.model.cells[c].polygons.size();
@@ -215,7 +215,7 @@ TEST_CASE("portal extremes: an eye in an opening, a portal edge-on, an eye in a 
     SECTION("an eye standing in an opening sees into both cells") {
         Built b = build(scene_named("cells_lecture.toml"));
         look_from(b, {5.0, 2.0}, {5.0, 5.0});  // in the opening E→C, looking into C and B
-        const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs).run_to_end();
+        const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera).run_to_end();
         CHECK(r.eye_cell >= 0);
         CHECK(coverage(b, r, {48, 36}).missed == 0);
     }
@@ -225,7 +225,7 @@ TEST_CASE("portal extremes: an eye in an opening, a portal edge-on, an eye in a 
         // would see through the wall, in any renderer: the near plane cuts the wall away. Not tested here.)
         Built b = build(scene_named("cells_ring.toml"));
         look_from(b, {5.0, 2.0}, {0.0, 2.0});
-        auto m = portal_render(&b.model, &b.bsp, &b.pvs);
+        auto m = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera);
         bool edge_on_rejected = false;
         for (const auto& e : m)
             if (const auto* t = std::get_if<PortalTested>(&e); t && b.model.cells[b.model.portals[t->portal].to].name == "W")
@@ -236,13 +236,13 @@ TEST_CASE("portal extremes: an eye in an opening, a portal edge-on, an eye in a 
     SECTION("an eye in a wall or outside the plan is in no cell, and nothing is drawn") {
         Built b = build(scene_named("cells_ring.toml"));
         look_from(b, {3.0, 3.0}, {5, 5});  // inside the pillar
-        const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs).run_to_end();
+        const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera).run_to_end();
         CHECK(r.eye_cell == -1);
         CHECK(std::count(r.drawn.begin(), r.drawn.end(), 1) == 0);
     }
     SECTION("a cycle in the cell graph ends, the traversal never re-entering a cell on its way") {
         Built b = build(scene_named("cells_ring.toml"));
-        const auto machine = [&] { return portal_render(&b.model, &b.bsp, &b.pvs); };
+        const auto machine = [&] { return portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera); };
         std::size_t events = 0;
         auto m = machine();
         for (const auto& e : m) events += 1 + 0 * e.index();
@@ -251,7 +251,7 @@ TEST_CASE("portal extremes: an eye in an opening, a portal edge-on, an eye in a 
     }
     SECTION("a depth bound ends with its event and stays conservative") {
         Built b = build(scene_named("cells_lecture.toml"));
-        auto m = portal_render(&b.model, &b.bsp, &b.pvs, {.max_depth = 1});
+        auto m = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera, {.max_depth = 1});
         bool bound = false;
         for (const auto& e : m) bound |= std::holds_alternative<PortalBoundReached>(e);
         CHECK(bound);

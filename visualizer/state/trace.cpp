@@ -13,6 +13,7 @@
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
+#include "state/portal_session.h"
 #include "state/zmerge_session.h"
 
 namespace glm {
@@ -74,6 +75,7 @@ HSR_TO_JSON(FillStepBoundReached, max_pixel_tests)
 namespace glm {
 inline void to_json(nlohmann::json& j, const dvec3& v) { j = nlohmann::json::array({v.x, v.y, v.z}); }
 inline void to_json(nlohmann::json& j, const ivec3& v) { j = nlohmann::json::array({v.x, v.y, v.z}); }
+inline void to_json(nlohmann::json& j, const dvec2& v) { j = nlohmann::json::array({v.x, v.y}); }
 }  // namespace glm
 namespace hsr::algo {
 HSR_TO_JSON(RayStarted, x, y, origin, direction)
@@ -112,6 +114,22 @@ inline void to_json(nlohmann::json& j, SplitterRule r) { j = std::string(to_stri
 inline void to_json(nlohmann::json& j, BspBound b) { j = std::string(to_string(b)); }
 inline void to_json(nlohmann::json& j, Order o) { j = o == Order::back_to_front ? "back to front" : "front to back"; }
 inline void to_json(nlohmann::json& j, const Plane& p) { j = nlohmann::json::array({p.n.x, p.n.y, p.n.z, p.d}); }
+
+HSR_TO_JSON(StabTreeStarted, cell)
+HSR_TO_JSON(SightlineTested, source, portals, found, line_space_area, point, direction)
+HSR_TO_JSON(CellReached, source, cell, depth, node, parent, portal)
+HSR_TO_JSON(StabBoundReached, source, cell, limit, cells_assumed)
+HSR_TO_JSON(PvsBuilt, cells, visible_pairs, sightline_tests)
+inline void to_json(nlohmann::json& j, PortalVerdict v) { j = std::string(to_string(v)); }
+inline void to_json(nlohmann::json& j, CullReason r) { j = std::string(to_string(r)); }
+HSR_TO_JSON(EyeLocated, cell, path)
+HSR_TO_JSON(PvsRowRead, cell, visible)
+HSR_TO_JSON(CellVisited, cell, depth, frustum)
+HSR_TO_JSON(PortalTested, portal, verdict, visible_part, narrowed)
+HSR_TO_JSON(CellPolygonCulled, polygon, reason)
+HSR_TO_JSON(CellPolygonDrawn, polygon, visible_part)
+HSR_TO_JSON(PortalBoundReached, cell, limit)
+HSR_TO_JSON(PortalRenderFinished, visits, drawn, culled_back_face, culled_frustum, portals_passed)
 // A shared vertex list is written as its vertices (written by hand: ADL does not look in hsr::algo for a
 // std::shared_ptr, so the field macro cannot find a to_json for it).
 inline nlohmann::json vertices_json(const VertexList& v) {
@@ -184,6 +202,12 @@ std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const s
 std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
+std::string trace_line(std::uint64_t step, const algo::PvsEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::PortalEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
 std::string trace_line(std::uint64_t step, const algo::DepthSortEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
@@ -251,6 +275,17 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
         case algo::Family::depth_sort: {
             auto machine = algo::depth_sort(algo::sort_polygons(lesson.scene));
             return write_trace(machine, [](const algo::DepthSortEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::portals: {
+            const auto world = portal_world(lesson.scene);
+            const auto say = [&](const auto& e) { return algo::describe(e, world->model); };
+            if (lesson.algorithm.variant == 0) {
+                auto machine = algo::build_pvs(&world->model);
+                return write_trace(machine, say, out);
+            }
+            auto machine = algo::portal_render(&world->model, &world->bsp, &world->pvs, world->model.camera,
+                                               {.bounding_box_frusta = lesson.algorithm.variant == 2});
+            return write_trace(machine, say, out);
         }
         case algo::Family::zmerge: {
             const ZMergeView parts = zmerge_initial_view(lesson);  // the two parts' buffers, as the window builds them

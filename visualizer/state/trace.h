@@ -13,6 +13,7 @@
 #include "raycast/raycast_events.h"
 #include "zbuffer/scanline_events.h"
 #include "depth_sort/depth_sort_events.h"
+#include "portals/portal_events.h"
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_events.h"
 #include "core/steps.h"
@@ -39,6 +40,8 @@ std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const st
 std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::DepthSortEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::PvsEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::PortalEvent& e, const std::string& sentence);
 
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
 // to only count and hash.

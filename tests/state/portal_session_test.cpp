@@ -1,0 +1,63 @@
+// Cells-and-portals lessons: the PVS view folds to the machine's matrix, the runtime view to its drawn set; seeking
+// equals folding; dragging the eye reruns the traversal from the new place.
+#include "catch.h"
+#include "state/portal_session.h"
+
+using namespace hsr::viz;
+
+namespace {
+
+Lesson lesson(const char* file, const char* algorithm) {
+    Lesson l = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
+    l.algorithm = *hsr::algo::find_algorithm(algorithm);
+    return l;
+}
+
+}  // namespace
+
+TEST_CASE("the PVS lesson folds to the matrix and stab trees the machine builds", "[state][portals]") {
+    PvsSession s(lesson("18_portals_pvs.toml", "portal_pvs"));
+    s.seek_end();
+    CHECK(s.view().done);
+    CHECK(s.view().matrix == s.view().world->pvs.matrix);
+    // the stab tree folded for the last cell is the machine's
+    const auto& tree = s.view().tree;
+    const auto& want = s.view().world->pvs.trees[std::size_t(s.view().source)];
+    REQUIRE(tree.size() == want.size());
+    for (std::size_t i = 0; i < tree.size(); ++i) {
+        CHECK(tree[i].cell == want[i].cell);
+        CHECK(tree[i].parent == want[i].parent);
+    }
+}
+
+TEST_CASE("seeking a portal_render lesson equals folding it, and its drawn set is the machine's", "[state][portals]") {
+    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"), false);
+    PortalRenderSession fresh(lesson("19_portals_render.toml", "portal_render"), false);
+    s.seek_end();
+    const std::size_t n = s.cursor();
+    REQUIRE(s.view().done);
+    const auto& m = s.view().world->model;
+    const auto result = hsr::algo::portal_render(&m, &s.view().world->bsp, &s.view().world->pvs, m.camera).run_to_end();
+    for (std::size_t k = 0; k < m.polygons.size(); ++k) CHECK((s.view().fate[k] == PolygonFate::drawn) == (result.drawn[k] != 0));
+    CHECK(s.view().visits == 3);  // E, D, A: the lecture's runtime example
+    for (std::size_t k = 0; k <= n; ++k) {
+        s.seek(k);
+        INFO("step " << k);
+        REQUIRE(s.view().fate == fresh.view().fate);
+        REQUIRE(s.view().path == fresh.view().path);
+        REQUIRE(s.view().passed.size() == fresh.view().passed.size());
+        REQUIRE(s.view().cell == fresh.view().cell);
+        if (k < n) fresh.micro_step();
+    }
+}
+
+TEST_CASE("dragging the eye into another cell reruns portal_render from there", "[state][portals]") {
+    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"), false);
+    s.seek_end();
+    CHECK(s.view().eye_cell == 4);  // E
+    s.move_eye({5.0, 5.0});         // into B
+    s.seek_end();
+    CHECK(s.view().world->model.cells[std::size_t(s.view().eye_cell)].name == "B");
+    CHECK(s.view().camera.eye.x == 5.0);
+    CHECK(s.view().camera.eye.z == -5.0);
+}

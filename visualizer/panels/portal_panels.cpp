@@ -1,0 +1,267 @@
+// [SECTION] the floor plan: fitting, cells, walls and openings
+// [SECTION] what each lesson adds to the plan: the sightline being tested, or the eye and its frusta
+// [SECTION] the state panels: PVS matrix, stab tree, counts
+#include "panels/portal_panels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+#include "panels/fat_pixels.h"
+#include "panels/panel_style.h"
+
+namespace hsr::viz {
+namespace {
+
+using algo::Vec2;
+
+const ImU32 wall_colour = IM_COL32(200, 203, 210, 255);
+const ImU32 opening_colour = IM_COL32(86, 180, 233, 255);
+const ImU32 eye_colour = IM_COL32(240, 228, 66, 255);
+const ImU32 found_colour = IM_COL32(0, 200, 140, 255);
+const ImU32 blocked_colour = IM_COL32(213, 94, 0, 255);
+const ImU32 background = IM_COL32(26, 28, 33, 255);
+
+// ── [SECTION] the floor plan ────────────────────────────────────────────────────────────────────────────────
+struct PlanFit {
+    ImVec2 origin;  // screen point of plan (lo.x, hi.y)
+    double scale;
+    Vec2 lo, hi;
+    ImVec2 operator()(Vec2 p) const { return {origin.x + float((p.x - lo.x) * scale), origin.y + float((hi.y - p.y) * scale)}; }
+    Vec2 plan(ImVec2 s) const { return {lo.x + (s.x - origin.x) / scale, hi.y - (s.y - origin.y) / scale}; }
+};
+
+PlanFit fit(const algo::CellModel& m, float x, float y, float w, float h) {
+    Vec2 lo(1e300), hi(-1e300);
+    for (const auto& c : m.cells)
+        for (const Vec2& p : c.outline) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double margin = 40, scale = std::min((w - 2 * margin) / (hi.x - lo.x), (h - 2 * margin - 30) / (hi.y - lo.y));
+    const float pw = float((hi.x - lo.x) * scale), ph = float((hi.y - lo.y) * scale);
+    return {ImVec2(x + (w - pw) / 2, y + 30 + (h - 30 - ph) / 2), scale, lo, hi};
+}
+
+Vec2 mean_of(const std::vector<Vec2>& o) {
+    Vec2 m(0);
+    for (const Vec2& p : o) m += p / double(o.size());
+    return m;
+}
+
+// Cells filled by `fill(cell)`, their walls, the openings cut in them, and their names.
+template <class Fill>
+void draw_plan(ImDrawList* d, const PlanFit& f, const algo::CellModel& m, Fill fill) {
+    for (std::uint32_t c = 0; c < m.cells.size(); ++c) {
+        std::vector<ImVec2> pts;
+        for (const Vec2& p : m.cells[c].outline) pts.push_back(f(p));
+        d->AddConvexPolyFilled(pts.data(), int(pts.size()), fill(c));
+    }
+    for (const auto& c : m.cells)
+        for (std::size_t i = 0; i < c.outline.size(); ++i) d->AddLine(f(c.outline[i]), f(c.outline[(i + 1) % c.outline.size()]), wall_colour, 2);
+    for (std::size_t k = 0; k < m.portals.size(); k += 2) {  // each opening once
+        const auto& p = m.portals[k];
+        d->AddLine(f(p.left), f(p.right), background, 4);
+        d->AddLine(f(p.left), f(p.right), opening_colour, 1.5f);
+    }
+    if (m.cells.size() <= 64)
+        for (const auto& c : m.cells) {
+            const ImVec2 at = f(mean_of(c.outline));
+            const ImVec2 size = ImGui::CalcTextSize(c.name.c_str());
+            d->AddText(ImVec2(at.x - size.x / 2, at.y - size.y / 2), IM_COL32(235, 235, 235, 255), c.name.c_str());
+        }
+}
+
+// A line through the plan from p along d, as far as the plan's box reaches.
+void long_line(ImDrawList* d, const PlanFit& f, Vec2 p, Vec2 dir, ImU32 colour, float thickness, bool both_ways) {
+    const double reach = glm::length(f.hi - f.lo) * 1.5;
+    d->AddLine(f(both_ways ? p - dir * reach : p), f(p + dir * reach), colour, thickness);
+}
+
+// ── [SECTION] what each lesson adds ─────────────────────────────────────────────────────────────────────────
+void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
+    const PvsView& v = s.view();
+    const auto& m = v.world->model;
+    const auto n = v.world->pvs.cells;
+    draw_plan(d, f, m, [&](std::uint32_t c) {
+        if (v.source < 0) return IM_COL32(48, 51, 58, 255);
+        if (std::int32_t(c) == v.source) return IM_COL32(120, 110, 40, 255);
+        return v.matrix[std::size_t(v.source) * n + c] ? IM_COL32(30, 95, 75, 255) : IM_COL32(48, 51, 58, 255);
+    });
+    for (std::uint32_t k : v.sequence) {
+        const auto& p = m.portals[k];
+        d->AddLine(f(p.left), f(p.right), v.found ? found_colour : blocked_colour, 5);
+    }
+    if (v.found && !v.sequence.empty()) long_line(d, f, v.sight_point, v.sight_direction, found_colour, 1.5f, true);
+}
+
+void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) {
+    const PortalView& v = s.view();
+    const auto& m = v.world->model;
+    std::vector<std::uint8_t> in_pvs(m.cells.size(), 0);
+    for (std::uint32_t c : v.pvs_row) in_pvs[c] = 1;
+    draw_plan(d, f, m, [&](std::uint32_t c) {
+        if (std::int32_t(c) == v.cell) return IM_COL32(120, 110, 40, 255);
+        if (v.visited[c]) return IM_COL32(30, 95, 75, 255);
+        return in_pvs[c] ? IM_COL32(52, 60, 72, 255) : IM_COL32(36, 38, 43, 255);
+    });
+    // walls drawn (in their cell's colour) or culled (dim); floors are not shown in the plan
+    for (std::size_t k = 0; k < m.polygons.size(); ++k) {
+        const auto& p = m.polygons[k];
+        if (v.fate[k] == PolygonFate::untouched || p.plane.n.y > 0.5) continue;
+        Vec2 a(1e300), b(-1e300);  // a wall's ends in the plan: its extreme points along the wall
+        const Vec2 along(-p.plane.n.z, -p.plane.n.x);
+        double lo = 1e300, hi = -1e300;
+        for (const auto& q : p.vertices) {
+            const Vec2 pq = algo::plan_point(q);
+            const double t = glm::dot(pq, along);
+            if (t < lo) lo = t, a = pq;
+            if (t > hi) hi = t, b = pq;
+        }
+        const bool drawn = v.fate[k] == PolygonFate::drawn;
+        d->AddLine(f(a), f(b), drawn ? rgb(p.color) : IM_COL32(90, 60, 50, 255), drawn ? 4.0f : 2.0f);
+    }
+    // the frusta: the eye's, and each narrowing on the way to the cell being visited
+    const Vec2 eye = algo::plan_point(v.camera.eye), look = glm::normalize(algo::plan_point(v.camera.target) - eye);
+    const double half = std::atan(std::tan(v.camera.fov_y * M_PI / 360) * v.camera.aspect);
+    for (double side : {-half, half})
+        long_line(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
+                  IM_COL32(240, 228, 66, 120), 1, false);
+    const ImU32 wedge_colours[] = {IM_COL32(0, 200, 140, 200), IM_COL32(86, 180, 233, 200), IM_COL32(204, 121, 167, 200)};
+    for (std::size_t i = 0; i < v.passed.size(); ++i) {
+        double a0 = 1e300, a1 = -1e300;
+        Vec2 d0{}, d1{};
+        for (const auto& q : v.passed[i].visible_part) {  // the visible part's extreme directions from the eye
+            const Vec2 dir = glm::normalize(algo::plan_point(q) - eye);
+            const double a = std::atan2(look.x * dir.y - look.y * dir.x, glm::dot(look, dir));
+            if (a < a0) a0 = a, d0 = dir;
+            if (a > a1) a1 = a, d1 = dir;
+        }
+        for (const Vec2& dir : {d0, d1}) long_line(d, f, eye, dir, wedge_colours[i % 3], 2, false);
+    }
+    if (v.portal >= 0) {
+        const auto& p = m.portals[std::size_t(v.portal)];
+        d->AddLine(f(p.left), f(p.right), v.verdict == algo::PortalVerdict::passed ? found_colour : blocked_colour, 5);
+    }
+    d->AddCircleFilled(f(eye), 7, eye_colour);
+    d->AddLine(f(eye), f(eye + look * (24 / f.scale)), eye_colour, 3);
+}
+
+}  // namespace
+
+void portal_plan_canvas(const Session& s, float x, float y, float w, float h, UiActions& out) {
+    const auto* pvs = dynamic_cast<const PvsSession*>(&s);
+    const auto* render = dynamic_cast<const PortalRenderSession*>(&s);
+    if (!pvs && !render) return;
+    const algo::CellModel& m = pvs ? pvs->view().world->model : render->view().world->model;
+    place(x, y, w, h);
+    ImGui::Begin("##floor plan", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                                              ImGuiWindowFlags_NoBringToFrontOnFocus);
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    d->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), background);
+    const PlanFit f = fit(m, x, y, w, h);
+    if (pvs) pvs_plan(*pvs, d, f);
+    if (render) {
+        render_plan(*render, d, f);
+        // drag the eye: the traversal reruns from where it is dropped
+        ImGui::SetCursorScreenPos(ImVec2(x, y));
+        ImGui::InvisibleButton("plan", ImVec2(w, h));
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        if (ImGui::IsItemActive() && (ImGui::GetIO().MouseDelta.x != 0 || ImGui::GetIO().MouseDelta.y != 0)) {
+            const Vec2 p = f.plan(mouse);
+            out.move_eye = glm::dvec3(p.x, render->view().camera.eye.y, -p.y);
+        }
+    }
+    d->AddText(ImVec2(x + 16, y + 10), IM_COL32(160, 163, 170, 255),
+               render ? "floor plan · drag the eye · 3: the 3D walk-through" : "floor plan · green: in the PVS of the yellow cell");
+    ImGui::End();
+}
+
+// ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────
+namespace {
+
+void pvs_matrix(const algo::CellModel& m, const std::vector<std::uint8_t>& matrix, std::int32_t row) {
+    const std::size_t n = m.cells.size();
+    if (n > 16) {
+        std::size_t set = 0;
+        for (std::uint8_t x : matrix) set += x;
+        ImGui::TextColored(dim_text, "%zu cells: %zu of %zu entries set (too many to show as a table)", n, set, n * n);
+        return;
+    }
+    if (!ImGui::BeginTable("pvs", int(n) + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TableSetupColumn("");
+    for (const auto& c : m.cells) ImGui::TableSetupColumn(c.name.c_str());
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < n; ++i) {
+        ImGui::TableNextRow();
+        if (std::int32_t(i) == row) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(m.cells[i].name.c_str());
+        for (std::size_t j = 0; j < n; ++j) {
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(matrix[i * n + j] ? "1" : " ");
+        }
+    }
+    ImGui::EndTable();
+}
+
+void stab_tree(const algo::CellModel& m, const std::vector<algo::StabNode>& tree) {
+    // depth of each node from its parent chain; children follow their parent in the list (depth-first order)
+    std::vector<int> depth(tree.size(), 0);
+    for (std::size_t i = 0; i < tree.size(); ++i) {
+        if (tree[i].parent >= 0) depth[i] = depth[std::size_t(tree[i].parent)] + 1;
+        ImGui::Text("%*s%s", 3 * depth[i], "", m.cells[tree[i].cell].name.c_str());
+        if (i >= 200) {
+            ImGui::TextColored(dim_text, "… %zu more", tree.size() - i - 1);
+            break;
+        }
+    }
+}
+
+}  // namespace
+
+void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
+    place_in_column(l, 2);
+    const PvsView& v = s.view();
+    ImGui::Begin("PVS", nullptr, fixed);
+    ImGui::TextColored(dim_text, "%llu sightline tests%s", (unsigned long long)v.tests, v.bounded ? " · a bound was reached" : "");
+    if (ImGui::BeginTabBar("pvs tabs")) {
+        if (ImGui::BeginTabItem("PVS matrix")) {
+            pvs_matrix(v.world->model, v.matrix, v.source);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("stab tree")) {
+            if (v.source >= 0) stab_tree(v.world->model, v.tree);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelLayout& l, UiActions& out) {
+    place_in_column(l, 2);
+    const PortalView& v = s.view();
+    const auto& m = v.world->model;
+    ImGui::Begin("Portals", nullptr, fixed);
+    bool show_3d = three_d;
+    if (ImGui::Checkbox("3D walk-through", &show_3d)) out.toggle_3d = true;
+    ImGui::SameLine();
+    ImGui::TextColored(dim_text, "%s frusta", s.bounding_box_frusta() ? "bounding-box" : "exact");
+    ImGui::Text("drawn %u · back-face %u · frustum %u · visits %u · portals %u", v.drawn, v.culled_back_face, v.culled_frustum,
+                v.visits, v.portals_passed);
+    if (ImGui::BeginTabBar("portal tabs")) {
+        if (ImGui::BeginTabItem("PVS matrix")) {
+            pvs_matrix(m, v.world->pvs.matrix, v.eye_cell);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("stab tree")) {
+            if (v.eye_cell >= 0) stab_tree(m, v.world->pvs.trees[std::size_t(v.eye_cell)]);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+}  // namespace hsr::viz

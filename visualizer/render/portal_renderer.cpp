@@ -1,0 +1,55 @@
+#include "render/portal_renderer.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "render/palette.h"
+
+namespace hsr::viz {
+namespace {
+
+glm::vec4 colour(const algo::Color& c, float alpha) { return {c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha}; }
+
+void outline(LineBatch& out, const std::vector<algo::Vec3>& v, glm::vec4 c) {
+    for (std::size_t k = 0; k < v.size(); ++k) out.line(glm::vec3(v[k]), glm::vec3(v[(k + 1) % v.size()]), c);
+}
+
+}  // namespace
+
+void portal_view_bounds(const algo::CellModel& m, glm::vec3& centre, float& radius) {
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& p : m.polygons)
+        for (const auto& v : p.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    centre = glm::vec3((lo + hi) / 2.0);
+    radius = std::max(1.0f, float(glm::length(hi - lo) / 2));
+}
+
+void draw_portal_view(const PortalView& v, LineBatches& out, std::vector<Label>& labels) {
+    const auto& m = v.world->model;
+    for (std::size_t k = 0; k < m.polygons.size(); ++k) {
+        const auto& p = m.polygons[k];
+        if (v.fate[k] == PolygonFate::drawn) {
+            for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i)
+                out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[i]), glm::vec3(p.vertices[i + 1]), colour(p.color, 0.8f));
+            outline(out.faint, p.vertices, colour(p.color, 1));
+        } else {
+            outline(out.faint, p.vertices, colour(p.color, v.fate[k] == PolygonFate::untouched ? 0.25f : 0.12f));
+        }
+    }
+    for (std::size_t k = 0; k < m.portals.size(); k += 2) outline(out.faint, m.portals[k].opening, palette::plane_edge);
+    const glm::vec3 eye(v.camera.eye);
+    out.bold.point(eye, palette::eye);
+    labels.push_back({eye, "eye", palette::eye});
+    // the narrowed frusta: from the eye through each corner of each opening's visible part, a little beyond
+    for (const auto& n : v.passed)
+        for (const auto& q : n.visible_part) out.bold.line(eye, eye + (glm::vec3(q) - eye) * 1.6f, palette::inside);
+    if (v.cell >= 0) {
+        const auto& c = m.cells[std::size_t(v.cell)];
+        algo::Vec2 mean(0);
+        for (const auto& p : c.outline) mean += p / double(c.outline.size());
+        labels.push_back({glm::vec3(algo::world_point(mean, m.height)), "portal_render(" + c.name + ")", palette::current_edge});
+    }
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,204 @@
+#include "state/portal_session.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/overloaded.h"
+
+namespace hsr::viz {
+namespace {
+
+using namespace hsr::algo;
+
+constexpr std::array<std::string_view, 8> pvs_lines = {
+    "for each cell c:  StabTree(c)",
+    "StabTree(c):  c sees itself; for each portal P out of c: Stab(c, [P])",
+    "Stab(c, portals):",
+    "  if no sightline passes through all the portals: return",
+    "  add the cell c' behind the last portal to PVS(c)",
+    "  for each portal P' out of c' (not back on the way):",
+    "    Stab(c, portals + P')",
+    "the PVS matrix: row c = PVS(c)",
+};
+
+constexpr std::array<std::string_view, 14> render_lines = {
+    "main():",
+    "  determine cell c of viewpoint using BSP tree",
+    "  determine PVS of cell c using PVS matrix",
+    "  f = original view frustum; portal_render(c, f, PVS)",
+    "portal_render(cell c, frustum f, list PVS):",
+    "  for each polygon R in c:",
+    "    if (R is portal) & (c' in PVS):",
+    "      f' = clip_frustum(f, R)",
+    "      if (f' <> empty) portal_render(c', f', PVS)",
+    "    else if (R is portal) {}",
+    "    else:  /* R is not portal */",
+    "      if (!back_face(R)):",
+    "        R' = clip_poly(f, R)",
+    "        if (R' <> empty) render(R')",
+};
+
+PvsSession::PlayerType make_pvs_player(const Lesson& lesson, PlayerOptions options) {
+    auto world = portal_world(lesson.scene);
+    PvsView initial;
+    initial.world = world;
+    initial.matrix.assign(world->pvs.matrix.size(), 0);
+    return PvsSession::PlayerType(build_pvs(&world->model), std::move(initial), options);
+}
+
+}  // namespace
+
+std::shared_ptr<const PortalWorld> portal_world(const Scene& scene) {
+    auto w = std::make_shared<PortalWorld>();
+    w->model = cell_model(scene);
+    w->bsp = build_cell_bsp(w->model);
+    w->pvs = build_pvs(&w->model).run_to_end();
+    return w;
+}
+
+// ── [SECTION] the pre-processing ─────────────────────────────────────────────────────────────────────────────
+void reduce(PvsView& v, const PvsEvent& event) {
+    std::visit(overloaded{
+                   [&](const StabTreeStarted& e) {
+                       v.source = std::int32_t(e.cell), v.tree = {{e.cell, -1, -1}}, v.sequence.clear();
+                       v.matrix[std::size_t(e.cell) * v.world->pvs.cells + e.cell] = 1;
+                   },
+                   [&](const SightlineTested& e) {
+                       v.sequence = e.portals, v.found = e.found, ++v.tests;
+                       v.sight_point = e.point, v.sight_direction = e.direction;
+                   },
+                   [&](const CellReached& e) {
+                       v.matrix[std::size_t(e.source) * v.world->pvs.cells + e.cell] = 1;
+                       v.tree.push_back({e.cell, e.parent, e.portal});
+                   },
+                   [&](const StabBoundReached&) { v.bounded = true; },
+                   [&](const PvsBuilt&) { v.done = true, v.matrix = v.world->pvs.matrix; },
+               },
+               event);
+}
+
+std::size_t approx_bytes(const PvsView& v) {
+    return sizeof(PvsView) + v.matrix.capacity() + v.tree.capacity() * sizeof(StabNode) + v.sequence.capacity() * 4;
+}
+
+PvsSession::PvsSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_pvs_player(lesson, options)) {}
+
+std::span<const std::string_view> PvsSession::pseudocode() const { return pvs_lines; }
+
+std::string PvsSession::describe_event(const PvsEvent& e) const { return describe(e, view().world->model); }
+
+int PvsSession::line_of(const PvsEvent& event) const {
+    return std::visit(overloaded{
+                          [](const StabTreeStarted&) { return 1; },
+                          [](const SightlineTested& e) { return e.found ? 3 : 3; },
+                          [](const CellReached&) { return 4; },
+                          [](const StabBoundReached&) { return 6; },
+                          [](const PvsBuilt&) { return 7; },
+                      },
+                      event);
+}
+
+// A Step is a sightline tested (and what it adds); the cell reached is its micro-step.
+bool PvsSession::is_major(const PvsEvent& e) const { return !std::holds_alternative<CellReached>(e); }
+
+// ── [SECTION] the runtime ───────────────────────────────────────────────────────────────────────────────────
+void reduce(PortalView& v, const PortalEvent& event) {
+    std::visit(overloaded{
+                   [&](const EyeLocated& e) { v.eye_cell = e.cell, v.bsp_path = e.path; },
+                   [&](const PvsRowRead& e) { v.pvs_row = e.visible; },
+                   [&](const CellVisited& e) {
+                       // the way here: as deep as the depth, the narrowing that led here last
+                       v.path.resize(e.depth), v.passed.resize(std::min<std::size_t>(v.passed.size(), e.depth));
+                       v.path.push_back(e.cell);
+                       v.cell = std::int32_t(e.cell), v.frustum = e.frustum, v.visited[e.cell] = 1, ++v.visits;
+                       v.portal = -1;
+                   },
+                   [&](const PortalTested& e) {
+                       v.portal = std::int32_t(e.portal), v.verdict = e.verdict;
+                       if (e.verdict != PortalVerdict::passed) return;
+                       ++v.portals_passed;
+                       v.passed.resize(std::min(v.passed.size(), v.path.size() - 1));
+                       v.passed.push_back({e.portal, e.visible_part});
+                   },
+                   [&](const CellPolygonCulled& e) {
+                       if (v.fate[e.polygon] == PolygonFate::drawn) return;  // drawn through another portal already
+                       v.fate[e.polygon] = e.reason == CullReason::back_face ? PolygonFate::back_face : PolygonFate::frustum;
+                       ++(e.reason == CullReason::back_face ? v.culled_back_face : v.culled_frustum);
+                   },
+                   [&](const CellPolygonDrawn& e) {
+                       if (v.fate[e.polygon] != PolygonFate::drawn) ++v.drawn;
+                       v.fate[e.polygon] = PolygonFate::drawn;
+                   },
+                   [&](const PortalBoundReached&) { v.bounded = true; },
+                   [&](const PortalRenderFinished&) { v.done = true, v.cell = -1, v.portal = -1; },
+               },
+               event);
+}
+
+std::size_t approx_bytes(const PortalView& v) {
+    std::size_t b = sizeof(PortalView) + v.visited.capacity() + v.fate.capacity() + v.frustum.capacity() * sizeof(Plane) +
+                    (v.pvs_row.capacity() + v.path.capacity()) * 4 + v.bsp_path.capacity() * 4;
+    for (const auto& n : v.passed) b += sizeof(n) + n.visible_part.capacity() * sizeof(Vec3);
+    return b;
+}
+
+namespace {
+
+PortalRenderSession::PlayerType render_player(std::shared_ptr<const PortalWorld> world, const Camera& camera, bool bbox,
+                                              PlayerOptions options) {
+    PortalView initial;
+    initial.world = world;
+    initial.camera = camera;
+    initial.visited.assign(world->model.cells.size(), 0);
+    initial.fate.assign(world->model.polygons.size(), PolygonFate::untouched);
+    return PortalRenderSession::PlayerType(
+        portal_render(&world->model, &world->bsp, &world->pvs, camera, {.bounding_box_frusta = bbox}), std::move(initial), options);
+}
+
+}  // namespace
+
+PortalRenderSession::PortalRenderSession(Lesson lesson, bool bounding_box_frusta, PlayerOptions options)
+    : PlayerSession(lesson, [&] {
+          auto world = portal_world(lesson.scene);
+          return render_player(world, world->model.camera, bounding_box_frusta, options);
+      }()),
+      world_(view().world), bbox_(bounding_box_frusta), options_(options) {}
+
+PortalRenderSession::PlayerType PortalRenderSession::make_player(const Camera& camera) const {
+    return render_player(world_, camera, bbox_, options_);
+}
+
+void PortalRenderSession::move_eye(Vec2 plan) {
+    Camera c = view().camera;
+    const Vec3 look = c.target - c.eye;
+    c.eye = {plan.x, c.eye.y, -plan.y};
+    c.target = c.eye + look;
+    replace_player(make_player(c));
+}
+
+std::span<const std::string_view> PortalRenderSession::pseudocode() const { return render_lines; }
+
+std::string PortalRenderSession::describe_event(const PortalEvent& e) const { return describe(e, world_->model); }
+
+int PortalRenderSession::line_of(const PortalEvent& event) const {
+    return std::visit(overloaded{
+                          [](const EyeLocated&) { return 1; },
+                          [](const PvsRowRead&) { return 2; },
+                          [](const CellVisited& e) { return e.depth == 0 ? 3 : 8; },
+                          [](const PortalTested& e) {
+                              return e.verdict == PortalVerdict::not_in_pvs ? 9 : e.verdict == PortalVerdict::passed ? 7 : 8;
+                          },
+                          [](const CellPolygonCulled& e) { return e.reason == CullReason::back_face ? 11 : 13; },
+                          [](const CellPolygonDrawn&) { return 13; },
+                          [](const PortalBoundReached&) { return 8; },
+                          [](const PortalRenderFinished&) { return 3; },
+                      },
+                      event);
+}
+
+// A Step is a cell visited or a portal tested; each polygon's fate is a micro-step.
+bool PortalRenderSession::is_major(const PortalEvent& e) const {
+    return !std::holds_alternative<CellPolygonCulled>(e) && !std::holds_alternative<CellPolygonDrawn>(e);
+}
+
+}  // namespace hsr::viz

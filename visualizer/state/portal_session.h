@@ -1,0 +1,91 @@
+// Cells-and-portals lessons: the pre-processing (stab trees filling the PVS matrix) and the runtime portal_render
+// (the eye located, its PVS row, cells visited through narrowing frusta, polygons drawn or culled). The model, its
+// cell BSP and its PVS are built once per lesson (and again when the eye is dragged into a new place: only the
+// runtime reruns) and shared, read-only, by the views.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "portals/portal_render.h"
+#include "state/session.h"
+
+namespace hsr::viz {
+
+struct PortalWorld {
+    algo::CellModel model;
+    algo::CellBsp bsp;
+    algo::Pvs pvs;  // complete: the runtime reads it
+};
+std::shared_ptr<const PortalWorld> portal_world(const algo::Scene& scene);
+
+struct PvsView {
+    std::shared_ptr<const PortalWorld> world;
+    std::vector<std::uint8_t> matrix;      // as filled so far
+    std::int32_t source = -1;              // whose stab tree is being built
+    std::vector<algo::StabNode> tree;      // that tree so far
+    std::vector<std::uint32_t> sequence;   // the portals last tested
+    bool found = false;
+    algo::Vec2 sight_point{0}, sight_direction{0};
+    std::uint64_t tests = 0;
+    bool done = false, bounded = false;
+};
+void reduce(PvsView& view, const algo::PvsEvent& event);
+std::size_t approx_bytes(const PvsView& view);
+
+enum class PolygonFate : std::uint8_t { untouched, drawn, back_face, frustum };
+
+struct PortalView {
+    std::shared_ptr<const PortalWorld> world;
+    algo::Camera camera;                       // the eye this run is from
+    std::int32_t eye_cell = -1;
+    std::vector<std::int32_t> bsp_path;
+    std::vector<std::uint32_t> pvs_row;
+    std::int32_t cell = -1;                    // being visited
+    std::vector<algo::Plane> frustum;          // its frustum
+    std::vector<std::uint8_t> visited;         // per cell
+    std::vector<PolygonFate> fate;             // per polygon
+    struct Narrowing {
+        std::uint32_t portal;
+        std::vector<algo::Vec3> visible_part;  // of the opening, through which the frustum was narrowed
+    };
+    std::vector<Narrowing> passed;             // on the way to the cell being visited (a stack)
+    std::vector<std::uint32_t> path;           // the cells on the way (a stack)
+    std::int32_t portal = -1;                  // last tested
+    algo::PortalVerdict verdict = algo::PortalVerdict::passed;
+    std::uint32_t drawn = 0, culled_back_face = 0, culled_frustum = 0, visits = 0, portals_passed = 0;
+    bool done = false, bounded = false;
+};
+void reduce(PortalView& view, const algo::PortalEvent& event);
+std::size_t approx_bytes(const PortalView& view);
+
+class PvsSession : public PlayerSession<algo::PvsEvent, algo::Pvs, PvsView> {
+public:
+    explicit PvsSession(Lesson lesson, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+
+private:
+    std::string describe_event(const algo::PvsEvent& e) const override;
+    int line_of(const algo::PvsEvent& e) const override;
+    bool is_major(const algo::PvsEvent& e) const override;
+};
+
+class PortalRenderSession : public PlayerSession<algo::PortalEvent, algo::PortalRenderResult, PortalView> {
+public:
+    PortalRenderSession(Lesson lesson, bool bounding_box_frusta, PlayerOptions options = {});
+    std::span<const std::string_view> pseudocode() const override;
+    bool bounding_box_frusta() const { return bbox_; }
+    // Stand the eye at a new plan point (keeping its height and view direction) and rerun portal_render.
+    void move_eye(algo::Vec2 plan_point);
+
+private:
+    std::string describe_event(const algo::PortalEvent& e) const override;
+    int line_of(const algo::PortalEvent& e) const override;
+    bool is_major(const algo::PortalEvent& e) const override;
+    PlayerType make_player(const algo::Camera& camera) const;
+    std::shared_ptr<const PortalWorld> world_;
+    bool bbox_;
+    PlayerOptions options_;
+};
+
+}  // namespace hsr::viz
