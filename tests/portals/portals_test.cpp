@@ -53,14 +53,15 @@ std::vector<std::uint32_t> cells_seen_along(const CellModel& m, std::uint32_t ce
     return seen;
 }
 
-// Is p strictly inside the outline (by a margin)?
-Vec2 random_point_in(const std::vector<Vec2>& outline, std::mt19937& rng) {
+// A random point of the cell at least `margin` from its walls. (An eye nearer a wall than the camera's near
+// distance sees through it in any renderer, the near plane cutting the wall away: runtime tests keep clear of that.)
+Vec2 random_point_in(const std::vector<Vec2>& outline, std::mt19937& rng, double margin = 1e-6) {
     Vec2 lo(1e300), hi(-1e300);
     for (const Vec2& v : outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
     std::uniform_real_distribution<double> ux(lo.x, hi.x), uy(lo.y, hi.y);
     for (;;) {
-        const Vec2 p(ux(rng), uy(rng));
-        if (inside(outline, p, -1e-6)) return p;
+        const double px = ux(rng), py = uy(rng);  // in this order with every compiler
+        if (inside(outline, {px, py}, -margin)) return {px, py};
     }
 }
 
@@ -149,9 +150,9 @@ TEST_CASE("the from-region PVS is conservative: a ray from anywhere in a cell se
                 }
             }
         CHECK(outside_pvs == 0);
-        std::uint64_t slack = 0;  // in the PVS, never seen by these rays
-        for (std::size_t k = 0; k < ever.size(); ++k) slack += b.pvs.matrix[k] && !ever[k];
-        CHECK(slack <= 2);  // these plans are small: the rays find nearly every pair the PVS holds
+        std::uint64_t slack = 0, pairs = 0;  // in the PVS, never seen by these rays (the bench reports it too)
+        for (std::size_t k = 0; k < ever.size(); ++k) slack += b.pvs.matrix[k] && !ever[k], pairs += b.pvs.matrix[k];
+        CHECK(slack * 5 <= pairs);  // the rays find most pairs the PVS holds: it is not "everything visible"
     }
 }
 
@@ -186,7 +187,7 @@ TEST_CASE("portal_render draws every polygon a ray cast from the eye sees", "[po
         std::uniform_real_distribution<double> angle(0, 2 * M_PI);
         for (std::uint32_t c = 0; c < b.pvs.cells; ++c)
             for (int k = 0; k < 3; ++k) {
-                const Vec2 eye = random_point_in(b.model.cells[c].outline, rng);
+                const Vec2 eye = random_point_in(b.model.cells[c].outline, rng, 0.2);
                 const double a = angle(rng);
                 look_from(b, eye, eye + Vec2(std::cos(a), std::sin(a)));
                 const PortalRenderResult r = portal_render(&b.model, &b.bsp, &b.pvs, b.model.camera, {.bounding_box_frusta = bbox}).run_to_end();
