@@ -10,6 +10,7 @@
 //   [[segments]]  id = 2  color = "#56b4e9"  a = [-3, 0, 0]  b = [0.5, 0.2, -2]
 //   [[polygons]]  id = 3  color = "#009e73"  vertices = [[…], […], […]]  opacity = 0.5   # opacity: 0 … 1, default 1
 //   [[expect.clip]] id = 2  outcome = "clipped"  vertices = [[…, w], [… , w]]   # clip space
+//   [floor_plan] …  [expect.pvs] …   # cells and portals: see scene/load_floor_plan.h
 #pragma once
 
 #include <string>

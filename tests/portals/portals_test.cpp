@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "catch.h"
+#include "portals/plan_ray.h"
 #include "portals/portal_render.h"
 #include "raycast/nearest_hit.h"
 #include "raycast/ray_cast.h"
@@ -21,36 +22,6 @@ Scene scene_named(const std::string& name) { return load_scene(std::string(HSR_S
 
 std::uint32_t named(const CellModel& m, const std::string& name) {
     return std::uint32_t(std::find_if(m.cells.begin(), m.cells.end(), [&](const Cell& c) { return c.name == name; }) - m.cells.begin());
-}
-
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-
-// The cells a ray in the plan passes through from p (in `cell`) along d until it meets a wall: the truth a PVS
-// must hold. Leaving a convex cell, the ray goes on only where it crosses the wall inside an opening.
-std::vector<std::uint32_t> cells_seen_along(const CellModel& m, std::uint32_t cell, Vec2 p, Vec2 d) {
-    std::vector<std::uint32_t> seen{cell};
-    for (std::size_t guard = 0; guard < m.cells.size(); ++guard) {
-        const auto& o = m.cells[cell].outline;
-        double t_exit = 1e300;
-        for (std::size_t i = 0; i < o.size(); ++i) {  // where the ray leaves the cell
-            const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
-            const double denom = cross(d, e);
-            if (denom <= 0) continue;  // not leaving through this edge (the outline is counter-clockwise)
-            t_exit = std::min(t_exit, cross(a - p, e) / denom);
-        }
-        const Vec2 q = p + t_exit * d;
-        std::int64_t next = -1;
-        for (std::uint32_t k : m.cells[cell].portals) {
-            const Portal& portal = m.portals[k];
-            const Vec2 along = portal.left - portal.right;
-            const double s = glm::dot(q - portal.right, along) / glm::dot(along, along);
-            if (std::abs(cross(along, q - portal.right)) <= 1e-9 * glm::length(along) && s > 1e-9 && s < 1 - 1e-9) next = portal.to;
-        }
-        if (next < 0) break;
-        cell = std::uint32_t(next), p = q;
-        seen.push_back(cell);
-    }
-    return seen;
 }
 
 // A random point of the cell at least `margin` from its walls. (An eye nearer a wall than the camera's near
@@ -144,13 +115,13 @@ TEST_CASE("the from-region PVS is conservative: a ray from anywhere in a cell se
         for (std::uint32_t c = 0; c < b.pvs.cells; ++c)
             for (int k = 0; k < 2000; ++k) {
                 const double a = angle(rng);
-                for (std::uint32_t s : cells_seen_along(b.model, c, random_point_in(b.model.cells[c].outline, rng), {std::cos(a), std::sin(a)})) {
+                for (std::uint32_t s : cells_along_ray(b.model, c, random_point_in(b.model.cells[c].outline, rng), {std::cos(a), std::sin(a)})) {
                     outside_pvs += !b.pvs.visible(c, s);
                     ever[std::size_t(c) * b.pvs.cells + s] = 1;
                 }
             }
         CHECK(outside_pvs == 0);
-        std::uint64_t slack = 0, pairs = 0;  // in the PVS, never seen by these rays (the bench reports it too)
+        std::uint64_t slack = 0, pairs = 0;  // in the PVS, never seen by these rays (BM_PortalPvs reports it on mazes)
         for (std::size_t k = 0; k < ever.size(); ++k) slack += b.pvs.matrix[k] && !ever[k], pairs += b.pvs.matrix[k];
         CHECK(slack * 5 <= pairs);  // the rays find most pairs the PVS holds: it is not "everything visible"
     }

@@ -1,0 +1,40 @@
+#include "portals/plan_ray.h"
+
+#include <glm/geometric.hpp>
+
+namespace hsr::algo {
+namespace {
+
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+}  // namespace
+
+std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cell, Vec2 p, Vec2 d) {
+    std::vector<std::uint32_t> seen{cell};
+    for (std::size_t guard = 0; guard < m.cells.size(); ++guard) {  // a straight ray enters each convex cell once
+        // where the ray leaves the cell (the outline is counter-clockwise: it leaves where it crosses an edge rightwards)
+        const auto& o = m.cells[cell].outline;
+        double t_exit = 1e300;
+        for (std::size_t i = 0; i < o.size(); ++i) {
+            const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
+            const double denom = cross(d, e);
+            if (denom > 0) t_exit = std::min(t_exit, cross(a - p, e) / denom);
+        }
+        if (t_exit >= 1e300) break;
+        const Vec2 q = p + t_exit * d;
+        // through an opening (strictly inside it), or into a wall
+        std::int64_t next = -1;
+        for (std::uint32_t k : m.cells[cell].portals) {
+            const Portal& portal = m.portals[k];
+            const Vec2 along = portal.left - portal.right;
+            const double s = glm::dot(q - portal.right, along) / glm::dot(along, along);
+            if (std::abs(cross(along, q - portal.right)) <= m.tol.epsilon * glm::length(along) && s > 1e-9 && s < 1 - 1e-9) next = portal.to;
+        }
+        if (next < 0) break;
+        cell = std::uint32_t(next), p = q;
+        seen.push_back(cell);
+    }
+    return seen;
+}
+
+}  // namespace hsr::algo
