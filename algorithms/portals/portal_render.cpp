@@ -150,6 +150,23 @@ Steps<PortalEvent, bool> render_cell(Render* r, std::uint32_t c, std::vector<Pla
 
 }  // namespace
 
+std::vector<Vec3> frustum_section(const std::vector<Plane>& f, const Camera& c, double distance) {
+    const Vec3 forward = glm::normalize(c.target - c.eye), right = glm::normalize(glm::cross(forward, c.up));
+    const Vec3 up = glm::cross(right, forward), centre = c.eye + distance * forward;
+    const double r = 1e3 * distance;  // wider than any frustum of less than 179.9°
+    std::vector<Vec3> section = {centre - r * right - r * up, centre + r * right - r * up, centre + r * right + r * up, centre - r * right + r * up};
+    const Tolerance tol{1e-12 * distance};
+    for (std::size_t k = 0; k + 2 < f.size() && section.size() >= 3; ++k) {  // the side planes: all but near and far
+        switch (classify(f[k], section, tol)) {
+            case PolygonSide::back: section.clear(); break;
+            case PolygonSide::spanning: section = split(f[k], section, tol).front; break;
+            default: break;
+        }
+    }
+    if (section.size() < 3) section.clear();
+    return section;
+}
+
 std::vector<Plane> view_frustum(const Camera& c) {
     if (c.projection != Projection::perspective) throw InvalidInput("portal rendering needs a perspective camera");
     const Vec3 forward = glm::normalize(c.target - c.eye), right = glm::normalize(glm::cross(forward, c.up));

@@ -40,6 +40,11 @@ struct PortalRenderResult {
 // The view frustum of a perspective camera as planes whose fronts are inside: left, right, bottom, top, near, far.
 std::vector<Plane> view_frustum(const Camera& camera);
 
+// The cross-section of a frustum (its side planes, all through the camera's eye; near and far are ignored) with
+// the plane `distance` ahead of the eye along the view direction: a convex polygon, for drawing the frustum as
+// rays from the eye through its corners. Empty when the frustum is.
+std::vector<Vec3> frustum_section(const std::vector<Plane>& frustum, const Camera& camera, double distance);
+
 // Model, tree and PVS must outlive the machine. The camera must be a perspective one (else InvalidInput).
 Steps<PortalEvent, PortalRenderResult> portal_render(const CellModel* model, const CellBsp* bsp, const Pvs* pvs,
                                                       Camera camera, PortalRenderOptions options = {});

@@ -51,6 +51,19 @@ TEST_CASE("seeking a portal_render lesson equals folding it, and its drawn set i
     }
 }
 
+TEST_CASE("the way shown is the way to the cell being visited: after a return, the narrowing of the new way only", "[state][portals]") {
+    PortalRenderSession s(lesson("20_portals_bounding_box.toml", "portal_render"), false);
+    s.seek_end();
+    const auto& v = s.view();
+    const auto& m = v.world->model;
+    // H → R first, then back in H, H → T: the last way is H, T with the one narrowing into T
+    REQUIRE(v.path.size() == 2);
+    CHECK(m.cells[v.path[1]].name == "T");
+    REQUIRE(v.passed.size() == 1);
+    CHECK(m.cells[m.portals[v.passed[0].portal].to].name == "T");
+    CHECK(v.passed[0].section.size() >= 3);
+}
+
 TEST_CASE("dragging the eye into another cell reruns portal_render from there", "[state][portals]") {
     PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"), false);
     s.seek_end();

@@ -131,7 +131,7 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     for (std::size_t i = 0; i < v.passed.size(); ++i) {
         double a0 = 1e300, a1 = -1e300;
         Vec2 d0{}, d1{};
-        for (const auto& q : v.passed[i].visible_part) {  // the visible part's extreme directions from the eye
+        for (const auto& q : v.passed[i].section) {  // the narrowed frustum's extreme directions from the eye, in the plan
             const Vec2 dir = glm::normalize(algo::plan_point(q) - eye);
             const double a = std::atan2(look.x * dir.y - look.y * dir.x, glm::dot(look, dir));
             if (a < a0) a0 = a, d0 = dir;

@@ -41,9 +41,12 @@ void draw_portal_view(const PortalView& v, LineBatches& out, std::vector<Label>&
     const glm::vec3 eye(v.camera.eye);
     out.bold.point(eye, palette::eye);
     labels.push_back({eye, "eye", palette::eye});
-    // the narrowed frusta: from the eye through each corner of each opening's visible part, a little beyond
-    for (const auto& n : v.passed)
-        for (const auto& q : n.visible_part) out.bold.line(eye, eye + (glm::vec3(q) - eye) * 1.6f, palette::inside);
+    // the narrowed frusta (exact or bounding box): rays from the eye through the corners of each one's cross-section,
+    // as far as the opening it was narrowed to and a little beyond
+    for (const auto& n : v.passed) {
+        const float reach = 1.5f * float(glm::length(algo::centroid(n.visible_part) - v.camera.eye));
+        for (const auto& q : n.section) out.bold.line(eye, eye + glm::normalize(glm::vec3(q) - eye) * reach, palette::inside);
+    }
     if (v.cell >= 0) {
         const auto& c = m.cells[std::size_t(v.cell)];
         algo::Vec2 mean(0);

@@ -115,10 +115,17 @@ void reduce(PortalView& v, const PortalEvent& event) {
                    },
                    [&](const PortalTested& e) {
                        v.portal = std::int32_t(e.portal), v.verdict = e.verdict;
+                       // back in the cell the portal leads out of: the way here ends there
+                       const std::uint32_t from = v.world->model.portals[e.portal].from;
+                       const auto at = std::find(v.path.rbegin(), v.path.rend(), from);
+                       if (at != v.path.rend()) {
+                           const auto depth = std::size_t(v.path.rend() - at) - 1;
+                           v.path.resize(depth + 1), v.passed.resize(std::min(v.passed.size(), depth));
+                           v.cell = std::int32_t(from);
+                       }
                        if (e.verdict != PortalVerdict::passed) return;
                        ++v.portals_passed;
-                       v.passed.resize(std::min(v.passed.size(), v.path.size() - 1));
-                       v.passed.push_back({e.portal, e.visible_part});
+                       v.passed.push_back({e.portal, e.visible_part, frustum_section(e.narrowed, v.camera, 1.0)});
                    },
                    [&](const CellPolygonCulled& e) {
                        if (v.fate[e.polygon] == PolygonFate::drawn) return;  // drawn through another portal already

@@ -48,6 +48,7 @@ struct PortalView {
     struct Narrowing {
         std::uint32_t portal;
         std::vector<algo::Vec3> visible_part;  // of the opening, through which the frustum was narrowed
+        std::vector<algo::Vec3> section;       // the narrowed frustum's cross-section 1 unit ahead of the eye
     };
     std::vector<Narrowing> passed;             // on the way to the cell being visited (a stack)
     std::vector<std::uint32_t> path;           // the cells on the way (a stack)
