@@ -22,10 +22,6 @@ struct Render {
     bool stopped = false;
 };
 
-Plane plane_through(const Vec3& n, const Vec3& p) {
-    const Vec3 u = glm::normalize(n);
-    return {u, -glm::dot(u, p)};
-}
 
 // R' = clip_poly(f, R): the part of R inside every plane of f (empty when nothing is left, or no area).
 std::vector<Vec3> clip_poly(const std::vector<Plane>& f, std::vector<Vec3> poly, Tolerance tol) {
@@ -167,15 +163,6 @@ std::vector<Vec3> frustum_section(const std::vector<Plane>& f, const Camera& c, 
     return section;
 }
 
-std::vector<Plane> view_frustum(const Camera& c) {
-    if (c.projection != Projection::perspective) throw InvalidInput("portal rendering needs a perspective camera");
-    const Vec3 forward = glm::normalize(c.target - c.eye), right = glm::normalize(glm::cross(forward, c.up));
-    const Vec3 up = glm::cross(right, forward);
-    const double ty = std::tan(c.fov_y * M_PI / 360), tx = ty * c.aspect;
-    return {plane_through(right + tx * forward, c.eye), plane_through(tx * forward - right, c.eye),
-            plane_through(up + ty * forward, c.eye),    plane_through(ty * forward - up, c.eye),
-            plane_through(forward, c.eye + c.near * forward), plane_through(-forward, c.eye + c.far * forward)};
-}
 
 Steps<PortalEvent, PortalRenderResult> portal_render(const CellModel* model, const CellBsp* bsp, const Pvs* pvs,
                                                       Camera cam, PortalRenderOptions options) {
@@ -183,7 +170,8 @@ Steps<PortalEvent, PortalRenderResult> portal_render(const CellModel* model, con
     r.right = glm::normalize(glm::cross(r.forward, cam.up));
     r.up = glm::cross(r.right, r.forward);
     r.out.drawn.assign(model->polygons.size(), 0);
-    const std::vector<Plane> f = view_frustum(cam);  // checks the camera before the first event
+    if (cam.projection != Projection::perspective) throw InvalidInput("portal rendering needs a perspective camera");
+    const std::vector<Plane> f = view_frustum(cam);
     // determine cell c of the viewpoint using the BSP tree
     const CellLocation where = locate_cell(*bsp, plan_point(r.eye));
     const bool in_a_room = where.cell && r.eye.y > 0 && r.eye.y < model->height;

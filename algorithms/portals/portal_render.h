@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/steps.h"
+#include "culling/view_frustum.h"
 #include "portals/cell_bsp.h"
 #include "portals/cell_model.h"
 #include "portals/pvs.h"
@@ -36,9 +37,6 @@ struct PortalRenderResult {
     std::uint32_t visits = 0, draws = 0, culled_back_face = 0, culled_frustum = 0, portals_passed = 0;
     bool bounded = false;
 };
-
-// The view frustum of a perspective camera as planes whose fronts are inside: left, right, bottom, top, near, far.
-std::vector<Plane> view_frustum(const Camera& camera);
 
 // The cross-section of a frustum (its side planes, all through the camera's eye; near and far are ignored) with
 // the plane `distance` ahead of the eye along the view direction: a convex polygon, for drawing the frustum as

@@ -1,0 +1,129 @@
+#include "culling/bounding_volume.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace hsr::algo {
+
+void Aabb::add(const Vec3& p) { lo = glm::min(lo, p), hi = glm::max(hi, p); }
+void Aabb::add(const Aabb& b) {
+    if (!b.empty()) add(b.lo), add(b.hi);
+}
+double Aabb::volume() const {
+    if (empty()) return 0;
+    const Vec3 s = size();
+    return s.x * s.y * s.z;
+}
+bool Aabb::contains(const Aabb& b) const {
+    return b.lo.x >= lo.x && b.lo.y >= lo.y && b.lo.z >= lo.z && b.hi.x <= hi.x && b.hi.y <= hi.y && b.hi.z <= hi.z;
+}
+
+double Sphere::volume() const { return 4.0 / 3.0 * M_PI * radius * radius * radius; }
+
+Vec3 Obb::corner(int k) const {
+    return centre + axes[0] * (k & 1 ? half.x : -half.x) + axes[1] * (k & 2 ? half.y : -half.y) + axes[2] * (k & 4 ? half.z : -half.z);
+}
+
+Aabb aabb_of(std::span<const Vec3> points) {
+    Aabb b;
+    for (const Vec3& p : points) b.add(p);
+    return b;
+}
+
+Sphere sphere_of(std::span<const Vec3> points) {
+    if (points.empty()) return {};
+    // A first guess: the point farthest from an arbitrary one, and the point farthest from that
+    const auto farthest = [&](const Vec3& from) {
+        return *std::max_element(points.begin(), points.end(), [&](const Vec3& a, const Vec3& b) {
+            return glm::distance(a, from) < glm::distance(b, from);
+        });
+    };
+    const Vec3 a = farthest(points[0]), b = farthest(a);
+    Sphere s{(a + b) / 2.0, glm::distance(a, b) / 2};
+    // Grow it to take in each point outside: the new sphere touches the old one's far side and the point
+    for (const Vec3& p : points) {
+        const double d = glm::distance(p, s.centre);
+        if (d <= s.radius) continue;
+        const double r = (s.radius + d) / 2;
+        s.centre += (p - s.centre) * ((r - s.radius) / d);
+        s.radius = r;
+    }
+    s.radius *= 1 + 1e-12;  // rounding must not leave a point a hair outside
+    return s;
+}
+
+namespace {
+
+// Eigenvectors of a symmetric 3×3 matrix by cyclic Jacobi rotations (columns of v).
+void jacobi(double a[3][3], double v[3][3]) {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) v[i][j] = i == j;
+    for (int sweep = 0; sweep < 50; ++sweep) {
+        const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        if (off < 1e-30) return;
+        for (int p = 0; p < 2; ++p)
+            for (int q = p + 1; q < 3; ++q) {
+                if (std::abs(a[p][q]) < 1e-300) continue;
+                const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+                const double t = (theta >= 0 ? 1 : -1) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+                const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+                for (int k = 0; k < 3; ++k) {  // a = Jᵀ a J
+                    const double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - s * akq, a[k][q] = s * akp + c * akq;
+                }
+                for (int k = 0; k < 3; ++k) {
+                    const double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - s * aqk, a[q][k] = s * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; ++k) {
+                    const double vkp = v[k][p], vkq = v[k][q];
+                    v[k][p] = c * vkp - s * vkq, v[k][q] = s * vkp + c * vkq;
+                }
+            }
+    }
+}
+
+}  // namespace
+
+Obb obb_of(std::span<const Vec3> points) {
+    Obb box;
+    if (points.empty()) return box;
+    Vec3 mean(0);
+    for (const Vec3& p : points) mean += p / double(points.size());
+    double c[3][3] = {};
+    for (const Vec3& p : points) {
+        const Vec3 d = p - mean;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) c[i][j] += d[i] * d[j];
+    }
+    double v[3][3];
+    jacobi(c, v);
+    for (int k = 0; k < 3; ++k) box.axes[std::size_t(k)] = glm::normalize(Vec3(v[0][k], v[1][k], v[2][k]));
+    box.axes[2] = glm::normalize(glm::cross(box.axes[0], box.axes[1]));  // orthonormal and right-handed
+    box.axes[1] = glm::cross(box.axes[2], box.axes[0]);
+    Vec3 lo(1e300), hi(-1e300);
+    for (const Vec3& p : points)
+        for (int k = 0; k < 3; ++k) {
+            const double t = glm::dot(p, box.axes[std::size_t(k)]);
+            lo[k] = std::min(lo[k], t), hi[k] = std::max(hi[k], t);
+        }
+    box.half = (hi - lo) / 2.0;
+    const Vec3 mid = (hi + lo) / 2.0;
+    box.centre = box.axes[0] * mid.x + box.axes[1] * mid.y + box.axes[2] * mid.z;
+    return box;
+}
+
+double enclosed_volume(std::span<const std::vector<Vec3>> polygons) {
+    double six = 0;
+    for (const auto& p : polygons)
+        for (std::size_t k = 1; k + 1 < p.size(); ++k) six += glm::dot(p[0], glm::cross(p[k], p[k + 1]));
+    return six / 6;
+}
+
+double void_fraction(double bounding_volume, double object_volume) {
+    return bounding_volume > 0 ? 1 - object_volume / bounding_volume : 0;
+}
+
+}  // namespace hsr::algo

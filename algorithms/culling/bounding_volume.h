@@ -1,0 +1,55 @@
+// Bounding volumes of a group of primitives (the lecture: "simple shapes that enclose an object": the axis-aligned
+// box, the sphere, the oriented box), and the void space each leaves: the part of its volume the object does not
+// fill, which is what makes a cheap test say "maybe visible" for an object that is not.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/plane.h"
+
+namespace hsr::algo {
+
+struct Aabb {
+    Vec3 lo{1e300}, hi{-1e300};  // empty until something is added
+    void add(const Vec3& p);
+    void add(const Aabb& b);
+    [[nodiscard]] bool empty() const { return lo.x > hi.x; }
+    [[nodiscard]] Vec3 centre() const { return (lo + hi) / 2.0; }
+    [[nodiscard]] Vec3 size() const { return hi - lo; }
+    [[nodiscard]] double volume() const;
+    [[nodiscard]] Vec3 corner(int k) const { return {k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z}; }
+    [[nodiscard]] bool contains(const Aabb& b) const;
+};
+
+struct Sphere {
+    Vec3 centre{0};
+    double radius = 0;
+    [[nodiscard]] double volume() const;
+};
+
+struct Obb {
+    Vec3 centre{0};
+    std::array<Vec3, 3> axes{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};  // orthonormal
+    Vec3 half{0};                                                          // half-extents along the axes
+    [[nodiscard]] double volume() const { return 8 * half.x * half.y * half.z; }
+    [[nodiscard]] Vec3 corner(int k) const;
+};
+
+Aabb aabb_of(std::span<const Vec3> points);
+// Ritter's sphere (two passes: a first guess from distant points, grown to take in every point): within ~5–20 % of
+// the smallest.
+Sphere sphere_of(std::span<const Vec3> points);
+// Axes from the principal components of the points (eigenvectors of their covariance, by Jacobi rotations), then
+// the extents along them.
+Obb obb_of(std::span<const Vec3> points);
+
+// The volume a closed, consistently outward-wound triangle or polygon mesh encloses (the divergence theorem: the
+// sum of signed tetrahedra from the origin). 0 for an open surface is not guaranteed: call it only on closed meshes.
+double enclosed_volume(std::span<const std::vector<Vec3>> polygons);
+
+// The share of a bounding volume the object does not fill: 1 − object volume / bounding volume.
+double void_fraction(double bounding_volume, double object_volume);
+
+}  // namespace hsr::algo
