@@ -8,11 +8,8 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
     const bool per_pixel = o.detail == EventDetail::pixel;
     const int w = o.viewport.width, h = o.viewport.height;
     // Initialise: every depth at the far plane, every colour the background
-    FrameDepth out{Image(w, h, o.background), {}, {}};
-    const auto far = far_code(o.format, o.range);
-    out.depth.assign(std::size_t(w) * std::size_t(h), std::uint32_t(far));
-    out.polygon.assign(out.depth.size(), -1);
-    co_yield BufferCleared{w, h, far};
+    FrameDepth out = cleared_buffers(o);
+    co_yield BufferCleared{w, h, far_code(o.format, o.range)};
 
     for (std::uint32_t index = 0; index < polygons.size(); ++index) {
         const ScreenPolygon& p = polygons[index];
@@ -58,6 +55,33 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
     }
     co_yield FillFinished{polygons.size(), out.tested, out.written};
     co_return out;
+}
+
+FrameDepth cleared_buffers(const ZBufferOptions& o) {
+    FrameDepth out{Image(o.viewport.width, o.viewport.height, o.background), {}, {}};
+    out.depth.assign(std::size_t(o.viewport.width) * std::size_t(o.viewport.height), std::uint32_t(far_code(o.format, o.range)));
+    out.polygon.assign(out.depth.size(), -1);
+    return out;
+}
+
+std::uint64_t fill_polygon(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, const ZBufferOptions& o) {
+    if (p.status != ScreenStatus::drawn) return 0;
+    std::uint64_t written = 0;
+    double row_depth = p.plane.at(0, pixel_centre(p.row_begin));
+    for (int y = p.row_begin; y < p.row_end; ++y, row_depth += p.plane.per_y) {
+        const Span span = span_on_row(p, y, o.viewport);
+        double z = row_depth + p.plane.per_x * pixel_centre(span.begin);
+        for (int x = span.begin; x < span.end; ++x, z += p.plane.per_x) {
+            const std::size_t k = std::size_t(y) * std::size_t(o.viewport.width) + std::size_t(x);
+            const std::uint64_t incoming = code_of_window_depth(o.format, z, o.range, o.perspective);
+            ++out.tested;
+            if (incoming >= out.depth[k]) continue;
+            out.depth[k] = std::uint32_t(incoming), out.polygon[k] = index, out.image.ids[k] = p.id;
+            out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
+            ++written, ++out.written;
+        }
+    }
+    return written;
 }
 
 ZBufferOptions zbuffer_options(const Scene& scene, Viewport viewport, DepthFormat format, EventDetail detail) {

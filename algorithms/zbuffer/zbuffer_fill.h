@@ -42,6 +42,13 @@ struct FrameDepth {
 
 Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons, ZBufferOptions options);
 
+// The same fill for one polygon into buffers already there, without events, for renderers that draw in batches
+// and look at the buffers between them (the hierarchical z-buffer). `index` is what FrameDepth::polygon records.
+// Returns the pixels written. A test holds it to the machine's answer.
+std::uint64_t fill_polygon(FrameDepth& buffers, const ScreenPolygon& polygon, std::int32_t index, const ZBufferOptions& options);
+// Cleared buffers: every depth at the far plane, every colour the background.
+FrameDepth cleared_buffers(const ZBufferOptions& options);
+
 // ZBufferOptions for a scene's camera (near, far, projection) and a viewport.
 ZBufferOptions zbuffer_options(const Scene& scene, Viewport viewport, DepthFormat format,
                                EventDetail detail = EventDetail::pixel);
