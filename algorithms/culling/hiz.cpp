@@ -120,7 +120,7 @@ std::string describe(const HizEvent& event) {
                       event);
 }
 
-Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZBufferOptions o) {
+Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZBufferOptions o, std::vector<std::uint8_t> enabled) {
     HizResult out{cleared_buffers(o), std::vector<std::uint8_t>(h->boxes.size(), 0), 0, 0, 0};
     ZPyramid pyramid(out.buffers.depth, o.viewport.width, o.viewport.height);
     const std::vector<Plane> frustum = view_frustum(scene->camera);
@@ -152,6 +152,7 @@ Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZB
         // render each primitive of N and update Zp over what it covered
         PixelRect touched{o.viewport.width, o.viewport.height, 0, 0};
         for (std::uint32_t p : node.primitives) {
+            if (!enabled.empty() && !enabled[p]) continue;
             const ScenePolygon& poly = scene->polygons[p];
             const ScreenPolygon sp = project_polygon(poly.id, poly.color, [&] {
                 std::vector<glm::dvec4> clip;

@@ -86,6 +86,8 @@ struct HizResult {
 };
 
 // Cull_or_Render over an octree (or BVH) of the scene's polygons. The scene and hierarchy must outlive the machine.
-Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* hierarchy, ZBufferOptions options);
+// `enabled` (per polygon; empty: all) leaves out what earlier stages culled.
+Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* hierarchy, ZBufferOptions options,
+                                      std::vector<std::uint8_t> enabled = {});
 
 }  // namespace hsr::algo

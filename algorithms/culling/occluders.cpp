@@ -1,0 +1,138 @@
+#include "culling/occluders.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "core/overloaded.h"
+#include "culling/view_frustum.h"
+
+namespace hsr::algo {
+namespace {
+
+std::vector<Vec3> world_vertices(const ScenePolygon& p) {
+    std::vector<Vec3> v;
+    for (const auto& q : p.vertices) v.emplace_back(q);
+    return v;
+}
+
+// The occlusion frustum of a convex polygon seen from the eye: inside when behind the polygon, within its edges.
+std::vector<Plane> occlusion_frustum(const std::vector<Vec3>& poly, const Vec3& eye, double eps) {
+    std::vector<Plane> f;
+    const Vec3 centre = centroid(poly);
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        Plane p = plane_through(glm::cross(poly[i] - eye, poly[(i + 1) % poly.size()] - eye), eye);
+        if (p.distance(centre) < 0) p = {-p.n, -p.d};
+        f.push_back(p);
+    }
+    Plane own;
+    plane_of(poly, own);
+    if (own.distance(eye) > 0) own = {-own.n, -own.d};  // the far side of the occluder is inside
+    own.d -= eps;  // strictly behind it: the occluder (and what lies in its plane) is not culled by itself
+    f.push_back(own);
+    return f;
+}
+
+bool wholly_inside(const Aabb& box, const std::vector<Plane>& f) {
+    return std::all_of(f.begin(), f.end(), [&](const Plane& p) { return box_side(box, p) > 0; });
+}
+bool wholly_outside(const Aabb& box, const std::vector<Plane>& f) {
+    return std::any_of(f.begin(), f.end(), [&](const Plane& p) { return box_side(box, p) < 0; });
+}
+
+}  // namespace
+
+double occluder_rank(const std::vector<Vec3>& poly, const Vec3& eye) {
+    Plane p;
+    if (!plane_of(poly, p)) return 0;
+    const Vec3 v = centroid(poly) - eye;
+    const double len2 = glm::dot(v, v);
+    if (len2 == 0) return 0;
+    return std::max(0.0, -measure(poly) * glm::dot(p.n, v / std::sqrt(len2)) / len2);
+}
+
+std::string describe(const OcclusionEvent& event) {
+    return std::visit(overloaded{
+                          [](const OccluderChosen& e) -> std::string {
+                              return "Occluder: polygon #" + std::to_string(e.polygon) + ", rank f = " + std::to_string(e.rank) + ".";
+                          },
+                          [](const OcclusionTested& e) -> std::string {
+                              const std::string what = e.node >= 0 ? "node " + std::to_string(e.node) : "primitive #" + std::to_string(e.primitive);
+                              switch (e.outcome) {
+                                  case OcclusionOutcome::occluded: return what + ": inside the frustum of occluder " + std::to_string(e.occluder) + ", culled.";
+                                  case OcclusionOutcome::partly: return what + ": partly inside an occlusion frustum: its children are tested.";
+                                  case OcclusionOutcome::visible: break;
+                              }
+                              return what + ": not inside any occlusion frustum, passed on.";
+                          },
+                          [](const OcclusionFinished& e) -> std::string {
+                              return "Done: " + std::to_string(e.occluders) + " occluders; " + std::to_string(e.culled) + " primitives culled, " +
+                                     std::to_string(e.passed) + " passed on.";
+                          },
+                      },
+                      event);
+}
+
+Steps<OcclusionEvent, OcclusionCull> occlusion_cull(const Scene* scene, const Hierarchy* h, OcclusionOptions o) {
+    OcclusionCull out;
+    const std::size_t n = scene->polygons.size();
+    out.kept = o.candidates.empty() ? std::vector<std::uint8_t>(n, 1) : o.candidates;
+    const Vec3 eye = scene->camera.eye;
+    // Choose the occluders: the best ranked polygons
+    std::vector<std::pair<double, std::uint32_t>> ranked;
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (out.kept[i])
+            if (const double f = occluder_rank(world_vertices(scene->polygons[i]), eye); f > 0) ranked.push_back({f, i});
+    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    double extent = 1;
+    for (const Aabb& b : h->boxes) extent = std::max({extent, std::abs(b.lo.x), std::abs(b.hi.x), std::abs(b.lo.y), std::abs(b.hi.y), std::abs(b.lo.z), std::abs(b.hi.z)});
+    for (std::size_t k = 0; k < ranked.size() && k < o.max_occluders; ++k) {
+        const auto poly = world_vertices(scene->polygons[ranked[k].second]);
+        out.occluders.push_back({ranked[k].second, ranked[k].first, occlusion_frustum(poly, eye, 1e-9 * extent)});
+        co_yield OccluderChosen{ranked[k].second, ranked[k].first, measure(poly)};
+    }
+    // Cull top-down: a box wholly inside one occlusion frustum goes with its subtree
+    const auto inside_one = [&](const Aabb& box) -> std::int32_t {
+        for (std::size_t k = 0; k < out.occluders.size(); ++k)
+            if (wholly_inside(box, out.occluders[k].frustum)) return std::int32_t(k);
+        return -1;
+    };
+    const auto cull_below = [&](std::uint32_t top) {
+        std::vector<std::uint32_t> stack{top};
+        while (!stack.empty()) {
+            const std::uint32_t m = stack.back();
+            stack.pop_back();
+            for (std::uint32_t p : h->nodes[m].primitives) out.culled += out.kept[p], out.kept[p] = 0;
+            for (std::uint32_t c : h->nodes[m].children) stack.push_back(c);
+        }
+    };
+    std::vector<std::uint32_t> stack;
+    if (!h->nodes.empty() && !out.occluders.empty()) stack.push_back(0);
+    while (!stack.empty()) {
+        const std::uint32_t m = stack.back();
+        stack.pop_back();
+        const HierarchyNode& node = h->nodes[m];
+        if (const std::int32_t k = inside_one(node.box); k >= 0) {
+            cull_below(m);
+            co_yield OcclusionTested{std::int32_t(m), -1, OcclusionOutcome::occluded, k};
+            continue;
+        }
+        const bool touches = std::any_of(out.occluders.begin(), out.occluders.end(),
+                                         [&](const Occluder& oc) { return !wholly_outside(node.box, oc.frustum); });
+        co_yield OcclusionTested{std::int32_t(m), -1, touches ? OcclusionOutcome::partly : OcclusionOutcome::visible, -1};
+        if (!touches) continue;  // outside every occlusion frustum: all of it is passed on
+        for (std::uint32_t p : node.primitives) {
+            if (!out.kept[p]) continue;
+            const std::int32_t k = inside_one(h->boxes[p]);
+            if (k >= 0) out.kept[p] = 0, ++out.culled;
+            co_yield OcclusionTested{-1, std::int32_t(p), k >= 0 ? OcclusionOutcome::occluded : OcclusionOutcome::visible, k};
+        }
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back(*it);
+    }
+    std::uint32_t passed = 0;
+    for (std::uint8_t k : out.kept) passed += k;
+    co_yield OcclusionFinished{std::uint32_t(out.occluders.size()), out.culled, passed};
+    co_return out;
+}
+
+}  // namespace hsr::algo

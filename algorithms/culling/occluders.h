@@ -1,0 +1,71 @@
+// From-point occlusion culling with planar occluders (the lecture, after Coorg and Teller):
+//
+//   choose occluders:   rank the front-facing polygons by f = −A (n̂ · v̂) / |v|², keep the best few
+//                       (A its area, n̂ its normal, v from the viewpoint to its centre)
+//   occlusion frustum:  the planes through the viewpoint and each edge of an occluder, and the occluder's own plane
+//   cull:               from the top of the hierarchy, a box wholly inside one occlusion frustum is rejected with
+//                       its subtree; a box partly inside is split into its children; each primitive left is culled
+//                       when its box lies wholly inside one frustum, else passed on to hidden-surface elimination
+//
+// One occluder at a time: an object hidden only by two adjacent occluders together (the partial occlusion
+// problem) is not in either frustum, so it is passed on.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/steps.h"
+#include "culling/hierarchy.h"
+
+namespace hsr::algo {
+
+struct OccluderChosen {
+    static constexpr std::string_view kind = "OccluderChosen";
+    std::uint32_t polygon;  // index into the scene's polygons
+    double rank, area;      // f = −A (n̂ · v̂) / |v|²
+    bool operator==(const OccluderChosen&) const = default;
+};
+enum class OcclusionOutcome : std::uint8_t { occluded, partly, visible };
+struct OcclusionTested {
+    static constexpr std::string_view kind = "OcclusionTested";
+    std::int32_t node;       // −1: a primitive's own box, tested at the leaf that holds it
+    std::int32_t primitive;  // −1: a node
+    OcclusionOutcome outcome;
+    std::int32_t occluder;   // occluded: which (index into the chosen ones); else −1
+    bool operator==(const OcclusionTested&) const = default;
+};
+struct OcclusionFinished {
+    static constexpr std::string_view kind = "OcclusionFinished";
+    std::uint32_t occluders, culled, passed;
+    bool operator==(const OcclusionFinished&) const = default;
+};
+using OcclusionEvent = std::variant<OccluderChosen, OcclusionTested, OcclusionFinished>;
+std::string describe(const OcclusionEvent& e);
+
+struct Occluder {
+    std::uint32_t polygon;
+    double rank;
+    std::vector<Plane> frustum;  // fronts inside: the edge planes, then the occluder's plane (its far side inside)
+};
+
+struct OcclusionOptions {
+    std::uint32_t max_occluders = 8;
+    std::vector<std::uint8_t> candidates;  // per polygon: may it be tested at all (earlier stages); empty: all
+};
+
+struct OcclusionCull {
+    std::vector<Occluder> occluders;
+    std::vector<std::uint8_t> kept;  // per polygon
+    std::uint32_t culled = 0;
+};
+
+// The hierarchy is over the scene's polygons (in order); both must outlive the machine.
+Steps<OcclusionEvent, OcclusionCull> occlusion_cull(const Scene* scene, const Hierarchy* hierarchy, OcclusionOptions options = {});
+
+// The rank of a polygon as an occluder from `eye` (0 when it faces away).
+double occluder_rank(const std::vector<Vec3>& polygon, const Vec3& eye);
+
+}  // namespace hsr::algo

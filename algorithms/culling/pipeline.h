@@ -1,0 +1,52 @@
+// The culling pipeline of the lectures: cheap tests leave out what cannot be seen before the expensive
+// hidden-surface algorithm runs. Stages, in order (a scene or lesson names those it needs; the others are shown as
+// left out of the pipeline):
+//   back-face → frustum (hierarchical) → detail → occlusion (planar occluders, or the hierarchical z-buffer) → HSE
+// (portals are their own lessons: a floor plan's cells.) Each stage reports the primitives it got, left out and
+// passed on, and its time; the hidden-surface stage is the z-buffer, and the hierarchical z-buffer renders as it
+// culls.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "culling/hierarchy.h"
+#include "zbuffer/zbuffer_fill.h"
+
+namespace hsr::algo {
+
+enum class Stage : std::uint8_t { back_face, frustum, detail, occluders, hiz, hse };
+inline constexpr Stage all_stages[] = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::hiz, Stage::hse};
+std::string_view to_string(Stage s);
+// "back-face,frustum,detail,occluders" → stages; InvalidInput naming an unknown one.
+std::vector<Stage> parse_stages(std::string_view list);
+
+struct PipelineOptions {
+    std::vector<Stage> stages;       // which to run (hse always runs, last)
+    Viewport viewport{640, 480};
+    DepthFormat format = DepthFormat::int24;
+    HierarchyKind hierarchy = HierarchyKind::octree;
+    double detail_pixels = 2;        // the detail stage's threshold
+    std::uint32_t max_occluders = 8;
+};
+
+struct StageReport {
+    Stage stage;
+    bool ran = false;
+    std::uint32_t in = 0, left_out = 0, passed = 0;
+    double milliseconds = 0;
+};
+
+struct PipelineResult {
+    std::vector<StageReport> stages;  // one per stage in pipeline order, those not run marked so
+    std::vector<std::uint8_t> kept;   // per polygon: reached the hidden-surface stage
+    FrameDepth frame{Image(0, 0), {}, {}};
+    double hierarchy_milliseconds = 0;
+};
+
+PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& options);
+
+}  // namespace hsr::algo

@@ -1,0 +1,30 @@
+// Generated scenes for the culling pipeline, reproducible from a seed, at any size: closed meshes wound outwards
+// (counter-clockwise seen from outside), as triangles.
+//   city:    blocks of buildings along streets, seen from the street: most of it is hidden behind the nearest
+//            buildings (occlusion matters)
+//   field:   small closed objects all round the camera, near and far: most are behind or beside it (the frustum
+//            matters) or a few pixels across (detail matters)
+//   spheres: closed spheres in front of the camera: half of every sphere faces away (back-face culling matters)
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene.h"
+
+namespace hsr::algo {
+
+struct GeneratedScene {
+    std::size_t triangles = 1000;  // about this many
+    std::uint32_t seed = 1;
+};
+
+Scene city_scene(GeneratedScene options);
+Scene field_scene(GeneratedScene options);
+Scene spheres_scene(GeneratedScene options);
+
+// A box from lo to hi as 12 triangles wound outwards; ids from `first_id`.
+void add_box(Scene& scene, glm::dvec3 lo, glm::dvec3 hi, Color color, SceneId& next_id);
+// A UV sphere (slices × stacks quads, as triangles) wound outwards.
+void add_sphere(Scene& scene, glm::dvec3 centre, double radius, int slices, int stacks, Color color, SceneId& next_id);
+
+}  // namespace hsr::algo
