@@ -33,11 +33,12 @@ int main(int argc, char** argv) {
     trace_cmd->add_option("--algorithm", trace.algorithm, "Override the lesson's algorithm");
     hsr::viz::RenderOptions render;
     CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
-    render_cmd->add_option("scene", render.scene, "Scene file (world coordinates)")->required()->check(CLI::ExistingFile);
+    render_cmd->add_option("scene", render.scene, "Scene file (world coordinates), or a generated scene: city:N, field:N, spheres:N (N triangles)")->required();
     render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, raycast, depth-sort");
     render_cmd->add_option("--format", render.format, "Depth format for zbuffer and scanline: int16, int24 (default), int32, float32, float32-reversed, linear24");
     render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");
+    render_cmd->add_option("--cull", render.cull, "zbuffer: culling stages first, from back-face,frustum,detail,occluders,hiz");
     render_cmd->add_option("--eye", render.eye, "Eye position X,Y,Z (default: the scene camera's)");
     render_cmd->add_option("--size", render.size, "Image size WxH (default 512x512)");
     render_cmd->add_option("--out", render.out, "Colour image (PNG)")->required();

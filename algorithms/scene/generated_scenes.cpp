@@ -62,8 +62,10 @@ Scene city_scene(GeneratedScene o) {
             add_box(s, {x + inset(rng), 0, z - lot + inset(rng)}, {x + lot - inset(rng), height(rng), z - inset(rng)}, random_color(rng), id);
         }
     const double along = double(blocks) * (lot + street);
-    s.camera = {.eye = {street / 2, 1.7, -2}, .target = {street / 2 + 2, 2.5, -along}, .fov_y = 60, .aspect = 4.0 / 3,
-                .near = 0.5, .far = 2 * along + 10};
+    add_quad(s, {0, 0, 0}, {along + street, 0, 0}, {along + street, 0, -along - street}, {0, 0, -along - street}, {90, 92, 98}, id);  // the ground
+    // in the street between the first two rows of blocks, looking along it
+    const double x = blocks > 1 ? lot + street + street / 2 : street / 2;
+    s.camera = {.eye = {x, 1.7, -2}, .target = {x + 1.5, 2.5, -along}, .fov_y = 60, .aspect = 4.0 / 3, .near = 0.5, .far = 2 * along + 10};
     return s;
 }
 

@@ -1,6 +1,7 @@
 #include "cli/render_command.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -9,8 +10,10 @@
 #include "bsp/bsp_tree.h"
 #include "cli/png_io.h"
 #include "core/image.h"
+#include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
 #include "raycast/ray_cast.h"
+#include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
@@ -69,7 +72,25 @@ algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::V
     return image;
 }
 
+// The culling pipeline, then the z-buffer on what is left: one line per stage.
+algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    const auto start = Clock::now();
+    algo::PipelineResult r = algo::run_pipeline(scene, {.stages = algo::parse_stages(*o.cull), .viewport = vp, .format = format_named(o.format)});
+    const double total = ms_since(start);
+    std::printf("hierarchy (octree) built in %.3f ms\n", r.hierarchy_milliseconds);
+    for (const algo::StageReport& s : r.stages) {
+        const std::string name(to_string(s.stage));
+        if (!s.ran && s.stage == algo::Stage::hse && r.frame.image.width > 0)
+            std::printf("%-10s done by hiz, which renders as it culls\n", name.c_str());
+        else if (!s.ran) std::printf("%-10s left out of the pipeline\n", name.c_str());
+        else std::printf("%-10s in %u, left out %u, passed on %u, %.3f ms\n", name.c_str(), s.in, s.left_out, s.passed, s.milliseconds);
+    }
+    std::printf("frame: %zu polygons, %llu depth tests, %.3f ms in all\n", scene.polygons.size(), (unsigned long long)r.frame.tested, total);
+    return std::move(r.frame.image);
+}
+
 algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+    if (o.cull) return render_culled(scene, o, vp);
     const algo::DepthFormat format = format_named(o.format);
     const auto start = Clock::now();
     algo::FrameDepth f =
@@ -120,11 +141,26 @@ algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, al
     return image;
 }
 
+// "city:20000" and its kind → a generated scene; anything else is a scene file.
+algo::Scene generated_or_loaded(const std::string& name) {
+    const std::size_t colon = name.find(':');
+    const std::string kind = name.substr(0, colon);
+    if (colon != std::string::npos && (kind == "city" || kind == "field" || kind == "spheres")) {
+        char* end = nullptr;
+        const unsigned long long n = std::strtoull(name.c_str() + colon + 1, &end, 10);
+        if (*end != 0 || n < 12 || n > 20'000'000) throw std::runtime_error(name + ": expected " + kind + ":N with N from 12 to 20000000 triangles");
+        const algo::GeneratedScene g{.triangles = std::size_t(n)};
+        return kind == "city" ? algo::city_scene(g) : kind == "field" ? algo::field_scene(g) : algo::spheres_scene(g);
+    }
+    return algo::load_scene(name);
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& o) {
     try {
-        algo::Scene scene = algo::load_scene(o.scene);
+        algo::Scene scene = generated_or_loaded(o.scene);
+        if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
         if (scene.coordinates != algo::Coordinates::world)
             throw std::runtime_error(o.scene + ": render needs world coordinates");
         int w = 0, h = 0;
