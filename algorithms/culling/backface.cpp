@@ -1,5 +1,7 @@
 #include "culling/backface.h"
 
+#include <cmath>
+
 #include <cstdio>
 
 #include <glm/geometric.hpp>
@@ -73,12 +75,13 @@ Steps<CullEvent, std::vector<std::int32_t>> cull_machine(std::vector<Face> faces
 Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> faces, Camera camera, BackfaceTest test) {
     std::vector<Plane> planes;
     for (const Face& f : faces) {
-        const std::string name = "face " + std::to_string(f.id);
-        if (f.vertices.size() < 3) throw InvalidInput(name + " has fewer than 3 vertices");
+        const auto name = [&] { return "face " + std::to_string(f.id); };  // made only for an error: scenes run to 10^6 faces
+        if (f.vertices.size() < 3) throw InvalidInput(name() + " has fewer than 3 vertices");
         for (std::size_t i = 0; i < f.vertices.size(); ++i)
-            require_finite(glm::dvec4(f.vertices[i], 1.0), name + " vertex " + std::to_string(i));
+            if (!std::isfinite(f.vertices[i].x) || !std::isfinite(f.vertices[i].y) || !std::isfinite(f.vertices[i].z))
+                require_finite(glm::dvec4(f.vertices[i], 1.0), name() + " vertex " + std::to_string(i));
         Plane p;
-        if (!plane_of(f.vertices, p)) throw InvalidInput(name + " is degenerate (it has no area)");
+        if (!plane_of(f.vertices, p)) throw InvalidInput(name() + " is degenerate (it has no area)");
         planes.push_back(p);
     }
     require_finite(glm::dvec4(camera.eye, 1.0), "camera eye");

@@ -1,0 +1,49 @@
+// Figures for the culling issue: for each generated scene and size (10^3 to 10^6 triangles), the primitives each
+// stage leaves out and its time, and the frame time with the whole pipeline against the z-buffer alone.
+//   build/tests/bench/hsr_bench --benchmark_filter=Culling --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include "culling/pipeline.h"
+#include "scene/generated_scenes.h"
+
+using namespace hsr::algo;
+
+namespace {
+
+Scene scene_for(int kind, std::int64_t triangles) {
+    const GeneratedScene g{.triangles = std::size_t(triangles), .seed = 3};
+    return kind == 0 ? city_scene(g) : kind == 1 ? field_scene(g) : spheres_scene(g);
+}
+
+void BM_CullingPipeline(benchmark::State& state) {
+    const Scene scene = scene_for(int(state.range(0)), state.range(1));
+    const PipelineOptions o{.stages = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::hiz}, .viewport = {640, 480}};
+    PipelineResult r;
+    for (auto _ : state) r = run_pipeline(scene, o);
+    state.SetLabel(scene.name);
+    state.counters["polygons"] = double(scene.polygons.size());
+    state.counters["tree_ms"] = r.hierarchy_milliseconds;
+    const char* short_names[] = {"bf", "fr", "dt", "oc", "hz", "hse"};
+    for (const StageReport& s : r.stages) {
+        if (!s.ran) continue;
+        state.counters[std::string(short_names[int(s.stage)]) + "_out"] = s.left_out;
+        state.counters[std::string(short_names[int(s.stage)]) + "_ms"] = s.milliseconds;
+    }
+    state.counters["drawn"] = double(r.stages.back().in);
+}
+void BM_CullingNone(benchmark::State& state) {
+    const Scene scene = scene_for(int(state.range(0)), state.range(1));
+    PipelineResult r;
+    for (auto _ : state) r = run_pipeline(scene, {.stages = {}, .viewport = {640, 480}});
+    state.SetLabel(scene.name + ", z-buffer alone");
+    state.counters["polygons"] = double(scene.polygons.size());
+}
+void sizes(benchmark::internal::Benchmark* b) {
+    for (int kind = 0; kind < 3; ++kind)
+        for (std::int64_t n : {1000, 10000, 100000, 1000000}) b->Args({kind, n});
+    b->Unit(benchmark::kMillisecond)->Iterations(1);
+}
+BENCHMARK(BM_CullingPipeline)->Apply(sizes);
+BENCHMARK(BM_CullingNone)->Apply(sizes);
+
+}  // namespace
