@@ -7,7 +7,7 @@
 
 namespace hsr::algo {
 
-enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast, scanline, zmerge, depth_sort, portals };
+enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast, scanline, zmerge, depth_sort, portals, culling };
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

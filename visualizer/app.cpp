@@ -25,6 +25,7 @@
 #include "panels/scanline_panels.h"
 #include "panels/depth_sort_panels.h"
 #include "panels/portal_panels.h"
+#include "panels/culling_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "panels/zmerge_panels.h"
 #include "render/bsp_renderer.h"
@@ -32,6 +33,7 @@
 #include "render/cull_renderer.h"
 #include "render/depth_sort_renderer.h"
 #include "render/portal_renderer.h"
+#include "render/culling_renderer.h"
 #include "render/frustum.h"
 #include "render/raycast_renderer.h"
 #include "render/zbuffer_renderer.h"
@@ -47,6 +49,7 @@
 #include "state/cull_session.h"
 #include "state/depth_sort_session.h"
 #include "state/portal_session.h"
+#include "state/culling_session.h"
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
@@ -81,6 +84,10 @@ struct Lessonplay {
             if (const auto* cull = dynamic_cast<const CullSession*>(session.get()))
                 cull_view_bounds(cull->view(), centre, radius);
             if (const auto* zb = dynamic_cast<const ZBufferSession*>(session.get())) scene_bounds(zb->lesson().scene, centre, radius);
+            if (const auto* culling = dynamic_cast<const CullingLesson*>(session.get())) {
+                culling_view_bounds(culling->culling_view(), centre, radius);
+                camera.yaw = 0.6f, camera.pitch = 0.7f;  // from above and aside: the camera's frustum and what it leaves out
+            }
             if (const auto* portals = dynamic_cast<const PortalRenderSession*>(session.get())) {
                 portal_view_bounds(portals->view().world->model, centre, radius);
                 camera.yaw = 0.3f, camera.pitch = 0.9f;  // from above, to look into the rooms (they have no ceilings)
@@ -246,6 +253,12 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     const auto* portals = dynamic_cast<const PortalRenderSession*>(&s);
     if (portals && lp.zbuffer_3d) draw_portal_view(portals->view(), r.batches, r.labels);
     if (pvs || portals) detail = "cells and portals · plan (x, y) is the world's (x, -z)";
+    const auto* culling = dynamic_cast<const CullingLesson*>(&s);
+    if (culling) {
+        draw_culling_view(culling->culling_view(), r.batches, r.labels);
+        detail = std::to_string(culling->culling_view().world->scene.polygons.size()) + " primitives · " +
+                 (culling->culling_view().world->hierarchy.kind == algo::HierarchyKind::bvh ? "BVH" : "octree") + " · god's-eye view";
+    }
     if (sort) {
         draw_depth_sort_view(sort->view(), r.batches, r.labels);
         detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
@@ -297,6 +310,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (merge) zmerge_canvas(*merge, 0, 0, view_w, view_h);
     if (sort) depth_sort_canvas(*sort, 0, 0, view_w, view_h, lp.animate);
     if (pvs || (portals && !lp.zbuffer_3d)) portal_plan_canvas(s, 0, 0, view_w, view_h, actions);
+    if (culling) culling_canvas(*culling, 0, 0, view_w, view_h);
     lesson_panel(s, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
@@ -308,6 +322,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (merge) zmerge_state_panel(*merge, layout);
     if (sort) depth_sort_state_panel(*sort, layout);
     if (pvs) pvs_state_panel(*pvs, layout);
+    if (culling) culling_state_panel(*culling, layout);
     if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);

@@ -1,6 +1,9 @@
 #include "scene/generated_scenes.h"
 
 #include <cmath>
+#include <cstdlib>
+
+#include "core/numeric.h"
 #include <random>
 
 namespace hsr::algo {
@@ -44,6 +47,18 @@ void add_sphere(Scene& s, glm::dvec3 centre, double r, int slices, int stacks, C
             else if (j == stacks - 1) add_triangle(s, a, b, d, color, id);  // b and c are the other pole
             else add_quad(s, a, b, c, d, color, id);
         }
+}
+
+std::optional<Scene> generated_scene(const std::string& name) {
+    const std::size_t colon = name.find(':');
+    const std::string kind = name.substr(0, colon);
+    if (colon == std::string::npos || (kind != "city" && kind != "field" && kind != "spheres")) return std::nullopt;
+    char* end = nullptr;
+    const unsigned long long n = std::strtoull(name.c_str() + colon + 1, &end, 10);
+    if (colon + 1 == name.size() || *end != 0 || n < 12 || n > 20'000'000)
+        throw InvalidInput(name + ": expected " + kind + ":N with N from 12 to 20000000 triangles");
+    const GeneratedScene g{.triangles = std::size_t(n)};
+    return kind == "city" ? city_scene(g) : kind == "field" ? field_scene(g) : spheres_scene(g);
 }
 
 Scene city_scene(GeneratedScene o) {

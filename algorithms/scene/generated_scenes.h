@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "scene/scene.h"
 
@@ -21,6 +23,10 @@ struct GeneratedScene {
 Scene city_scene(GeneratedScene options);
 Scene field_scene(GeneratedScene options);
 Scene spheres_scene(GeneratedScene options);
+
+// "city:N", "field:N" or "spheres:N" (about N triangles, seed 1) → the generated scene; nullopt for any other name.
+// InvalidInput when the kind is one of those but N is not a count from 12 to 20,000,000.
+std::optional<Scene> generated_scene(const std::string& name);
 
 // A box from lo to hi as 12 triangles wound outwards; ids from `first_id`.
 void add_box(Scene& scene, glm::dvec3 lo, glm::dvec3 hi, Color color, SceneId& next_id);

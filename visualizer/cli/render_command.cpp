@@ -141,17 +141,8 @@ algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, al
     return image;
 }
 
-// "city:20000" and its kind → a generated scene; anything else is a scene file.
 algo::Scene generated_or_loaded(const std::string& name) {
-    const std::size_t colon = name.find(':');
-    const std::string kind = name.substr(0, colon);
-    if (colon != std::string::npos && (kind == "city" || kind == "field" || kind == "spheres")) {
-        char* end = nullptr;
-        const unsigned long long n = std::strtoull(name.c_str() + colon + 1, &end, 10);
-        if (*end != 0 || n < 12 || n > 20'000'000) throw std::runtime_error(name + ": expected " + kind + ":N with N from 12 to 20000000 triangles");
-        const algo::GeneratedScene g{.triangles = std::size_t(n)};
-        return kind == "city" ? algo::city_scene(g) : kind == "field" ? algo::field_scene(g) : algo::spheres_scene(g);
-    }
+    if (auto generated = algo::generated_scene(name)) return std::move(*generated);
     return algo::load_scene(name);
 }
 

@@ -4,6 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/numeric.h"
+#include "culling/pipeline.h"
+#include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 #include "scene/toml_reader.h"
 
@@ -39,7 +42,7 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull"});
     lesson.title = r.text(root, "title", "");
     lesson.summary = r.text(root, "summary", "", "");
     lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);
@@ -51,6 +54,12 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
     if (lesson.splitter != "first" && lesson.splitter != "balanced" && lesson.splitter != "fewest-splits" &&
         lesson.splitter != "weighted")
         r.fail(root.get("splitter"), "splitter", "expected first, balanced, fewest-splits or weighted");
+    lesson.cull = r.text(root, "cull", "", lesson.cull);
+    try {
+        algo::parse_stages(lesson.cull);
+    } catch (const algo::InvalidInput& e) {
+        r.fail(root.get("cull"), "cull", e.what());
+    }
     const std::string format = r.text(root, "format", "", "int24");
     bool known_format = false;
     for (auto f : {algo::DepthFormat::int16, algo::DepthFormat::int24, algo::DepthFormat::int32, algo::DepthFormat::float32,
@@ -65,6 +74,14 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         lesson.grid = {int(g.x), int(g.y)};
     }
     const std::string scene = r.text(root, "scene", "");
+    try {  // a generated scene by name: city:N, field:N, spheres:N
+        if (auto generated = algo::generated_scene(scene)) {
+            lesson.scene = std::move(*generated);
+            return lesson;
+        }
+    } catch (const algo::InvalidInput& e) {
+        r.fail(root.get("scene"), "scene", e.what());
+    }
     const auto scene_path = std::filesystem::path(path).parent_path() / scene;
     if (!std::filesystem::exists(scene_path))
         r.fail(root.get("scene"), "scene", "no such file: " + scene_path.string());

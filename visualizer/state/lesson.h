@@ -35,6 +35,7 @@ struct Lesson {
     std::string splitter = "first";  // BSP lessons: first, balanced, fewest-splits or weighted
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
+    std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
     algo::Scene scene;
 };
 

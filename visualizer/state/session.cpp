@@ -3,6 +3,7 @@
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
 #include "state/cull_session.h"
+#include "state/culling_session.h"
 #include "state/depth_sort_session.h"
 #include "state/portal_session.h"
 #include "state/raycast_session.h"
@@ -22,6 +23,7 @@ std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options) {
         case algo::Family::scanline: return std::make_unique<ScanLineSession>(std::move(lesson), options);
         case algo::Family::zmerge: return std::make_unique<ZMergeSession>(std::move(lesson), options);
         case algo::Family::depth_sort: return std::make_unique<DepthSortSession>(std::move(lesson), options);
+        case algo::Family::culling: return make_culling_session(std::move(lesson), options);
         case algo::Family::portals: {
             const int variant = lesson.algorithm.variant;  // 0 PVS, 1 exact frusta, 2 bounding-box frusta
             if (variant == 0) return std::make_unique<PvsSession>(std::move(lesson), options);

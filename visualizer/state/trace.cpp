@@ -13,6 +13,7 @@
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_fill.h"
 #include "state/bsp_view.h"
+#include "state/culling_session.h"
 #include "state/portal_session.h"
 #include "state/zmerge_session.h"
 
@@ -130,6 +131,26 @@ HSR_TO_JSON(CellPolygonCulled, polygon, reason)
 HSR_TO_JSON(CellPolygonDrawn, polygon, visible_part)
 HSR_TO_JSON(PortalBoundReached, cell, limit)
 HSR_TO_JSON(PortalRenderFinished, visits, drawn, culled_back_face, culled_frustum, portals_passed)
+
+inline void to_json(nlohmann::json& j, const Aabb& b) { j = {{"lo", {b.lo.x, b.lo.y, b.lo.z}}, {"hi", {b.hi.x, b.hi.y, b.hi.z}}}; }
+inline void to_json(nlohmann::json& j, const PixelRect& r) { j = nlohmann::json::array({r.x0, r.y0, r.x1, r.y1}); }
+inline void to_json(nlohmann::json& j, LeafReason r) { j = std::string(to_string(r)); }
+inline void to_json(nlohmann::json& j, NodeOutcome o) { j = std::string(to_string(o)); }
+inline void to_json(nlohmann::json& j, OcclusionOutcome o) {
+    j = o == OcclusionOutcome::occluded ? "occluded" : o == OcclusionOutcome::partly ? "partly" : "visible";
+}
+inline void to_json(nlohmann::json& j, HizOutcome o) {
+    j = o == HizOutcome::outside_frustum ? "outside the frustum" : o == HizOutcome::occluded ? "occluded" : "rendered";
+}
+HSR_TO_JSON(HierarchyNodeBuilt, node, parent, depth, primitives, box, leaf)
+HSR_TO_JSON(HierarchyBuilt, nodes, leaves, depth)
+HSR_TO_JSON(NodeCulled, node, outcome, planes_tested, mask_after, plane, pixels, primitives)
+HSR_TO_JSON(HierarchyCullFinished, nodes_tested, plane_tests, kept, outside, too_small)
+HSR_TO_JSON(OccluderChosen, polygon, rank, area)
+HSR_TO_JSON(OcclusionTested, node, primitive, outcome, occluder)
+HSR_TO_JSON(OcclusionFinished, occluders, culled, passed)
+HSR_TO_JSON(HizNodeTested, node, outcome, footprint, near, texels_tested, primitives_rendered, subtree_primitives)
+HSR_TO_JSON(HizFinished, nodes, occluded_nodes, rendered, left_out)
 // A shared vertex list is written as its vertices (written by hand: ADL does not look in hsr::algo for a
 // std::shared_ptr, so the field macro cannot find a to_json for it).
 inline nlohmann::json vertices_json(const VertexList& v) {
@@ -200,6 +221,18 @@ std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const s
     return line_of(step, e, sentence);
 }
 std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::HierarchyEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::HierarchyCullEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::OcclusionEvent& e, const std::string& sentence) {
+    return line_of(step, e, sentence);
+}
+std::string trace_line(std::uint64_t step, const algo::HizEvent& e, const std::string& sentence) {
     return line_of(step, e, sentence);
 }
 std::string trace_line(std::uint64_t step, const algo::PvsEvent& e, const std::string& sentence) {
@@ -275,6 +308,34 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
         case algo::Family::depth_sort: {
             auto machine = algo::depth_sort(algo::sort_polygons(lesson.scene));
             return write_trace(machine, [](const algo::DepthSortEvent& e) { return algo::describe(e); }, out);
+        }
+        case algo::Family::culling: {
+            const auto world = culling_world(lesson);
+            const auto say = [](const auto& e) { return algo::describe(e); };
+            const algo::Hierarchy* h = &world->hierarchy;
+            switch (lesson.algorithm.variant) {
+                case 0: {
+                    auto machine = algo::build_hierarchy(h->boxes, {.kind = h->kind});
+                    return write_trace(machine, say, out);
+                }
+                case 1:
+                case 2: {
+                    const algo::HierarchyCullOptions o = lesson.algorithm.variant == 1
+                                                             ? algo::HierarchyCullOptions{.frustum = true}
+                                                             : algo::HierarchyCullOptions{.frustum = false, .detail_pixels = world->detail_pixels,
+                                                                                          .viewport_height = lesson.grid.height};
+                    auto machine = algo::cull_hierarchy(h, world->scene.camera, o);
+                    return write_trace(machine, say, out);
+                }
+                case 3: {
+                    auto machine = algo::occlusion_cull(&world->scene, h, {.max_occluders = 4});
+                    return write_trace(machine, say, out);
+                }
+                default: {
+                    auto machine = algo::hiz_render(&world->scene, h, world->zbuffer);
+                    return write_trace(machine, say, out);
+                }
+            }
         }
         case algo::Family::portals: {
             const auto world = portal_world(lesson.scene);

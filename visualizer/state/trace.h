@@ -14,6 +14,8 @@
 #include "zbuffer/scanline_events.h"
 #include "depth_sort/depth_sort_events.h"
 #include "portals/portal_events.h"
+#include "culling/hiz.h"
+#include "culling/occluders.h"
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_events.h"
 #include "core/steps.h"
@@ -41,6 +43,10 @@ std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const s
 std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::DepthSortEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::PvsEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::HierarchyEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::HierarchyCullEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::OcclusionEvent& e, const std::string& sentence);
+std::string trace_line(std::uint64_t step, const algo::HizEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::PortalEvent& e, const std::string& sentence);
 
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null

@@ -1,0 +1,148 @@
+#include "panels/culling_panels.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include <imgui.h>
+
+#include "panels/panel_style.h"
+
+namespace hsr::viz {
+namespace {
+
+void pipeline_table(const CullingView& v) {
+    if (!ImGui::BeginTable("pipeline", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) return;
+    ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthFixed, 90);
+    ImGui::TableSetupColumn("in", ImGuiTableColumnFlags_WidthFixed, 60);
+    ImGui::TableSetupColumn("left out", ImGuiTableColumnFlags_WidthFixed, 70);
+    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 50);
+    ImGui::TableSetupColumn("");
+    ImGui::TableHeadersRow();
+    for (const algo::StageReport& r : v.world->pipeline) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(std::string(algo::to_string(r.stage)).c_str());
+        if (!r.ran) {
+            ImGui::TableNextColumn();
+            ImGui::TextColored(dim_text, "not needed: left out of the pipeline");
+            continue;
+        }
+        ImGui::TableNextColumn();
+        ImGui::Text("%u", r.in);
+        ImGui::TableNextColumn();
+        ImGui::Text("%u", r.left_out);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", r.milliseconds);
+        ImGui::TableNextColumn();
+        ImGui::ProgressBar(r.in ? float(r.left_out) / float(r.in) : 0.0f, ImVec2(-1, 0), "");
+    }
+    ImGui::EndTable();
+}
+
+// Per object (scene ids grouped by hundreds): the share of each bounding volume the object does not fill.
+void void_table(const CullingView& v) {
+    std::map<int, std::vector<std::vector<algo::Vec3>>> objects;
+    for (const auto& p : v.world->scene.polygons) {
+        std::vector<algo::Vec3> w;
+        for (const auto& q : p.vertices) w.emplace_back(q);
+        objects[p.id / 100].push_back(std::move(w));
+    }
+    if (objects.size() > 12) {
+        ImGui::TextColored(dim_text, "(void space is shown for scenes of a few objects)");
+        return;
+    }
+    if (!ImGui::BeginTable("void", 4, ImGuiTableFlags_BordersInnerH)) return;
+    for (const char* c : {"object", "AABB void", "sphere void", "OBB void"}) ImGui::TableSetupColumn(c);
+    ImGui::TableHeadersRow();
+    for (const auto& [group, polys] : objects) {
+        std::vector<algo::Vec3> points;
+        for (const auto& p : polys) points.insert(points.end(), p.begin(), p.end());
+        const double volume = algo::enclosed_volume(polys);
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%dxx", group);
+        for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points).volume()}) {
+            ImGui::TableNextColumn();
+            ImGui::Text("%.0f %%", 100 * algo::void_fraction(bv, volume));
+        }
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace
+
+void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
+    place_in_column(l, 2);
+    const CullingView& v = s.culling_view();
+    ImGui::Begin("Culling", nullptr, fixed);
+    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far", std::string(s.machine()).c_str(), v.kept, v.left_out);
+    if (s.machine() == "frustum") {
+        ImGui::SameLine();
+        ImGui::TextColored(dim_text, "· %u plane tests", v.plane_tests);
+    }
+    if (s.machine() == "hiz") {
+        ImGui::SameLine();
+        ImGui::TextColored(dim_text, "· %u texels tested", v.texels);
+    }
+    if (ImGui::BeginTabBar("culling tabs")) {
+        if (s.machine() == "bounds" && ImGui::BeginTabItem("void space")) {
+            void_table(v);
+            ImGui::EndTabItem();
+        }
+        if (ImGui::BeginTabItem("pipeline")) {
+            pipeline_table(v);
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
+}
+
+void culling_canvas(const CullingLesson& s, float x, float y, float w, float h) {
+    if (s.machine() != "hiz") return;
+    const CullingView& v = s.culling_view();
+    // The depth buffer of what has been rendered so far, and its pyramid (cached while the step stays)
+    struct Cache {
+        const CullingView* view = nullptr;
+        std::size_t rendered = SIZE_MAX;
+        std::vector<std::uint32_t> depth;
+    };
+    static Cache cache;
+    const algo::ZBufferOptions& o = v.world->zbuffer;
+    if (cache.view != &v || cache.rendered != v.rendered.size()) {
+        algo::FrameDepth f = algo::cleared_buffers(o);
+        for (std::uint32_t p : v.rendered) {
+            const auto& poly = v.world->scene.polygons[p];
+            std::vector<glm::dvec4> clip;
+            for (const auto& q : poly.vertices) clip.push_back(algo::to_clip(v.world->scene, q));
+            algo::fill_polygon(f, algo::project_polygon(poly.id, poly.color, std::move(clip), o.viewport), std::int32_t(p), o);
+        }
+        cache = {&v, v.rendered.size(), std::move(f.depth)};
+    }
+    const algo::ZPyramid pyramid(cache.depth, o.viewport.width, o.viewport.height);
+    const std::uint64_t far = algo::far_code(o.format, o.range);
+    ImDrawList* d = begin_canvas("##zpyramid", x, y, w, h);
+    const float cell = 2;
+    float left = x + 12;
+    const float top = y + h - 20 - cell * float(o.viewport.height);
+    d->AddText(ImVec2(left, top - 20), IM_COL32(220, 220, 220, 255), "Z-pyramid: levels 0 to 3 (bright = near, dark = far)");
+    for (std::size_t l = 0; l < std::min<std::size_t>(4, pyramid.levels()); ++l) {
+        const float c = cell * float(1 << l);
+        d->AddRectFilled(ImVec2(left - 2, top - 2), ImVec2(left + c * float(pyramid.width(l)) + 2, top + c * float(pyramid.height(l)) + 2),
+                         IM_COL32(60, 62, 68, 255));
+        for (int py = 0; py < pyramid.height(l); ++py)
+            for (int px = 0; px < pyramid.width(l); ++px) {
+                const std::uint32_t z = pyramid.at(l, px, py);
+                // near codes bunch up against the far end in perspective: stretch by the square root
+                const float g = z >= far ? 0.0f : 1.0f - std::sqrt(float(double(z) / double(far)));
+                const auto k = ImU32(40 + 215 * std::clamp(g * 4, 0.0f, 1.0f));
+                d->AddRectFilled(ImVec2(left + c * float(px), top + c * float(py)), ImVec2(left + c * float(px + 1), top + c * float(py + 1)),
+                                 IM_COL32(k, k, k, 255));
+            }
+        left += c * float(pyramid.width(l)) + 16;
+    }
+    ImGui::End();
+}
+
+}  // namespace hsr::viz

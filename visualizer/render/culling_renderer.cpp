@@ -1,0 +1,85 @@
+#include "render/culling_renderer.h"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "render/frustum.h"
+#include "render/palette.h"
+
+namespace hsr::viz {
+namespace {
+
+glm::vec4 mark_colour(NodeMark m) {
+    switch (m) {
+        case NodeMark::outside: return {0.84f, 0.37f, 0.0f, 0.9f};
+        case NodeMark::inside: return {0.0f, 0.62f, 0.45f, 0.9f};
+        case NodeMark::partial: return {0.94f, 0.89f, 0.26f, 0.8f};
+        case NodeMark::too_small: return {0.55f, 0.56f, 0.6f, 0.8f};
+        case NodeMark::occluded: return {0.8f, 0.47f, 0.65f, 0.9f};
+        case NodeMark::visible: return {0.34f, 0.71f, 0.91f, 0.9f};
+        case NodeMark::built: return {0.75f, 0.77f, 0.8f, 0.6f};
+        case NodeMark::untouched: break;
+    }
+    return {0, 0, 0, 0};
+}
+
+void box_lines(LineBatch& out, const algo::Aabb& b, glm::vec4 c) {
+    for (int i = 0; i < 8; ++i)
+        for (int axis = 1; axis < 8; axis <<= 1)
+            if (!(i & axis)) out.line(glm::vec3(b.corner(i)), glm::vec3(b.corner(i | axis)), c);
+}
+
+}  // namespace
+
+void culling_view_bounds(const CullingView& v, glm::vec3& centre, float& radius) {
+    algo::Aabb all;
+    for (const auto& b : v.world->hierarchy.boxes) all.add(b);
+    all.add(v.world->scene.camera.eye);
+    centre = glm::vec3(all.centre());
+    radius = std::max(1.0f, float(glm::length(all.size()) / 2));
+}
+
+void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label>& labels) {
+    const auto& scene = v.world->scene;
+    const auto& h = v.world->hierarchy;
+    draw_frustum(scene.camera, out.faint, {0.94f, 0.89f, 0.26f, 0.6f});
+    out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
+    labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
+    // primitives: kept solid, left out faint, not yet decided as outlines
+    const bool many = scene.polygons.size() > 20000;
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+        const auto& p = scene.polygons[i];
+        const glm::vec4 c(p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, 1);
+        const PrimitiveMark m = v.primitives[i];
+        if (m == PrimitiveMark::kept)
+            for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+                out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]), c * glm::vec4(1, 1, 1, 0.85f));
+        else if (!many)
+            for (std::size_t k = 0; k < p.vertices.size(); ++k)
+                out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
+                               c * glm::vec4(1, 1, 1, m == PrimitiveMark::left_out ? 0.12f : 0.35f));
+    }
+    // the hierarchy's boxes, by what happened to them (the current one bold)
+    for (std::size_t n = 0; n < h.nodes.size(); ++n)
+        if (v.nodes[n] != NodeMark::untouched) box_lines(out.faint, h.nodes[n].box, mark_colour(v.nodes[n]));
+    if (v.current >= 0) box_lines(out.bold, h.nodes[std::size_t(v.current)].box, mark_colour(v.nodes[std::size_t(v.current)]));
+    // occluders and the rays of their occlusion frusta
+    for (std::size_t k = 0; k < v.occluders.size(); ++k) {
+        const auto& p = scene.polygons[v.occluders[k]];
+        const glm::vec3 eye(scene.camera.eye);
+        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+            const glm::vec3 a(p.vertices[i]), b(p.vertices[(i + 1) % p.vertices.size()]);
+            out.bold.line(a, b, palette::intersection);
+            out.faint.line(a, a + (a - eye) * 1.5f, {0.9f, 0.62f, 0.0f, 0.5f});
+        }
+        labels.push_back({glm::vec3(algo::centroid([&] {
+                              std::vector<algo::Vec3> w;
+                              for (const auto& q : p.vertices) w.emplace_back(q);
+                              return w;
+                          }())),
+                          "occluder " + std::to_string(k + 1), palette::intersection});
+    }
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,18 @@
+// The 3D view of a culling lesson, from above and behind the camera (a god's-eye view): the camera's frustum, the
+// primitives kept solid and those left out faint, the hierarchy's boxes coloured by what happened to them
+// (outside red, inside green, partly inside yellow, too small grey, occluded purple, visible blue), and the
+// occluders with the rays of their occlusion frusta.
+#pragma once
+
+#include <vector>
+
+#include "render/label.h"
+#include "render/line_batch.h"
+#include "state/culling_session.h"
+
+namespace hsr::viz {
+
+void draw_culling_view(const CullingView& view, LineBatches& batches, std::vector<Label>& labels);
+void culling_view_bounds(const CullingView& view, glm::vec3& centre, float& radius);
+
+}  // namespace hsr::viz

@@ -1,0 +1,302 @@
+// [SECTION] the world and the view
+// [SECTION] each machine's pseudocode, lines and steps
+// [SECTION] the sessions
+#include "state/culling_session.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/overloaded.h"
+#include "culling/view_frustum.h"
+
+namespace hsr::viz {
+namespace {
+
+using namespace hsr::algo;
+
+std::vector<Aabb> boxes_of(const Scene& s) {
+    std::vector<Aabb> out;
+    for (const auto& p : s.polygons) {
+        Aabb b;
+        for (const auto& v : p.vertices) b.add(Vec3(v));
+        out.push_back(b);
+    }
+    return out;
+}
+
+void mark_subtree(CullingView& v, std::uint32_t node, NodeMark mark, PrimitiveMark prims) {
+    const Hierarchy& h = v.world->hierarchy;
+    std::vector<std::uint32_t> stack{node};
+    while (!stack.empty()) {
+        const std::uint32_t n = stack.back();
+        stack.pop_back();
+        v.nodes[n] = mark;
+        for (std::uint32_t p : h.nodes[n].primitives) v.primitives[p] = prims;
+        for (std::uint32_t c : h.nodes[n].children) stack.push_back(c);
+    }
+}
+
+void count(CullingView& v) {
+    v.kept = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::kept));
+    v.left_out = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::left_out));
+}
+
+}  // namespace
+
+// ── [SECTION] the world and the view ────────────────────────────────────────────────────────────────────────
+std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
+    auto w = std::make_shared<CullingWorld>();
+    w->scene = lesson.scene;
+    w->scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
+    const HierarchyKind kind = lesson.algorithm.variant == 0 ? HierarchyKind::bvh : HierarchyKind::octree;
+    w->hierarchy = build_hierarchy(boxes_of(w->scene), {.kind = kind}).run_to_end();
+    w->zbuffer = zbuffer_options(w->scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
+    w->detail_pixels = 4;
+    w->frustum = view_frustum(w->scene.camera);
+    w->pipeline = run_pipeline(w->scene, {.stages = parse_stages(lesson.cull), .viewport = lesson.grid, .hierarchy = kind,
+                                          .detail_pixels = w->detail_pixels})
+                      .stages;
+    return w;
+}
+
+std::size_t approx_bytes(const CullingView& v) {
+    return sizeof(CullingView) + v.nodes.capacity() + v.primitives.capacity() + (v.occluders.capacity() + v.rendered.capacity()) * 4;
+}
+
+void reduce(CullingView& v, const HierarchyEvent& event) {
+    std::visit(overloaded{
+                   [&](const HierarchyNodeBuilt& e) { v.nodes[e.node] = NodeMark::built, v.current = std::int32_t(e.node); },
+                   [&](const HierarchyBuilt&) { v.done = true, v.current = -1; },
+               },
+               event);
+}
+
+void reduce(CullingView& v, const HierarchyCullEvent& event) {
+    std::visit(overloaded{
+                   [&](const NodeCulled& e) {
+                       v.current = std::int32_t(e.node), v.plane_tests += e.planes_tested;
+                       switch (e.outcome) {
+                           case NodeOutcome::outside: mark_subtree(v, e.node, NodeMark::outside, PrimitiveMark::left_out); break;
+                           case NodeOutcome::too_small: mark_subtree(v, e.node, NodeMark::too_small, PrimitiveMark::left_out); break;
+                           case NodeOutcome::inside:
+                           case NodeOutcome::partial: {
+                               v.nodes[e.node] = e.outcome == NodeOutcome::inside ? NodeMark::inside : NodeMark::partial;
+                               const auto& node = v.world->hierarchy.nodes[e.node];
+                               // its own primitives: kept unless their boxes fail a plane still to test
+                               const auto& frustum = v.world->frustum;
+                               for (std::uint32_t p : node.primitives) {
+                                   bool in = true;
+                                   for (int k = 0; k < 6; ++k)
+                                       if (e.mask_after & (1 << k)) in = in && box_side(v.world->hierarchy.boxes[p], frustum[std::size_t(k)]) >= 0;
+                                   v.primitives[p] = in ? PrimitiveMark::kept : PrimitiveMark::left_out;
+                               }
+                               break;
+                           }
+                       }
+                       count(v);
+                   },
+                   [&](const HierarchyCullFinished&) {
+                       v.done = true, v.current = -1;
+                       for (auto& p : v.primitives)  // what an accepted subtree held without a visit
+                           if (p == PrimitiveMark::untouched) p = PrimitiveMark::kept;
+                       count(v);
+                   },
+               },
+               event);
+}
+
+void reduce(CullingView& v, const OcclusionEvent& event) {
+    std::visit(overloaded{
+                   [&](const OccluderChosen& e) { v.occluders.push_back(e.polygon); },
+                   [&](const OcclusionTested& e) {
+                       if (e.node >= 0) {
+                           v.current = e.node;
+                           if (e.outcome == OcclusionOutcome::occluded) mark_subtree(v, std::uint32_t(e.node), NodeMark::occluded, PrimitiveMark::left_out);
+                           else v.nodes[std::size_t(e.node)] = e.outcome == OcclusionOutcome::partly ? NodeMark::partial : NodeMark::visible;
+                       } else {
+                           v.primitives[std::size_t(e.primitive)] = e.outcome == OcclusionOutcome::occluded ? PrimitiveMark::left_out : PrimitiveMark::kept;
+                       }
+                       count(v);
+                   },
+                   [&](const OcclusionFinished&) {
+                       v.done = true, v.current = -1;
+                       for (auto& p : v.primitives)
+                           if (p == PrimitiveMark::untouched) p = PrimitiveMark::kept;
+                       count(v);
+                   },
+               },
+               event);
+}
+
+void reduce(CullingView& v, const HizEvent& event) {
+    std::visit(overloaded{
+                   [&](const HizNodeTested& e) {
+                       v.current = std::int32_t(e.node), v.texels += e.texels_tested;
+                       if (e.outcome == HizOutcome::rendered) {
+                           v.nodes[e.node] = NodeMark::visible;
+                           for (std::uint32_t p : v.world->hierarchy.nodes[e.node].primitives) {
+                               v.primitives[p] = PrimitiveMark::kept;
+                               v.rendered.push_back(p);
+                           }
+                       } else {
+                           mark_subtree(v, e.node, e.outcome == HizOutcome::occluded ? NodeMark::occluded : NodeMark::outside, PrimitiveMark::left_out);
+                       }
+                       count(v);
+                   },
+                   [&](const HizFinished&) { v.done = true, v.current = -1; },
+               },
+               event);
+}
+
+// ── [SECTION] each machine's pseudocode, lines and steps ────────────────────────────────────────────────────
+namespace {
+
+constexpr std::array<std::string_view, 6> bounds_lines = {
+    "BuildBVH(primitives):",
+    "  node.box = the box round its primitives",
+    "  if few primitives (or the depth bound): a leaf",
+    "  else split at the median centre along the longest axis",
+    "       BuildBVH(each half)",
+    "bounding volumes: AABB, sphere, OBB; void = 1 - object / volume",
+};
+constexpr std::array<std::string_view, 8> frustum_lines = {
+    "Cull(node, planes):            planes: those the parent was not inside",
+    "  for each plane: IntersectionTest(node.box, plane)",
+    "    wholly outside: reject node and its subtree",
+    "    wholly inside: drop the plane for the subtree",
+    "  no plane left: accept node and its subtree",
+    "  projected size < threshold: leave it out (detail)",
+    "  keep node's primitives; Cull(child, planes) for each child",
+    "done",
+};
+constexpr std::array<std::string_view, 7> occluder_lines = {
+    "choose occluders: f = -A (n . v) / |v|^2, the best first",
+    "occlusion frustum: eye and the occluder's edges, and its plane",
+    "Cull(node):",
+    "  wholly inside one occlusion frustum: cull node and subtree",
+    "  partly inside: test its primitives; Cull(each child)",
+    "  outside them all: pass it on to hidden-surface elimination",
+    "done",
+};
+constexpr std::array<std::string_view, 9> hiz_lines = {
+    "Cull_or_Render(N):",
+    "  if N is outside the view frustum: return",
+    "  if isOccluded(N, Zp): return",
+    "  for each primitive p in N: render p and update Zp",
+    "  for each child C of N, front to back: Cull_or_Render(C)",
+    "isOccluded(g, Zp):",
+    "  if nearZ(g) is behind Zp.z: return true",
+    "  else return isOccluded(g, each child texel under g)",
+    "done",
+};
+
+template <class Event>
+struct Machine;
+
+template <>
+struct Machine<HierarchyEvent> {
+    static std::span<const std::string_view> lines() { return bounds_lines; }
+    static int line_of(const HierarchyEvent& e) {
+        const auto* b = std::get_if<HierarchyNodeBuilt>(&e);
+        return !b ? 5 : b->leaf == LeafReason::not_a_leaf ? 3 : 2;
+    }
+    static bool major(const HierarchyEvent&) { return true; }
+};
+template <>
+struct Machine<HierarchyCullEvent> {
+    static std::span<const std::string_view> lines() { return frustum_lines; }
+    static int line_of(const HierarchyCullEvent& e) {
+        const auto* n = std::get_if<NodeCulled>(&e);
+        if (!n) return 7;
+        switch (n->outcome) {
+            case NodeOutcome::outside: return 2;
+            case NodeOutcome::inside: return 4;
+            case NodeOutcome::too_small: return 5;
+            case NodeOutcome::partial: return 6;
+        }
+        return 6;
+    }
+    static bool major(const HierarchyCullEvent&) { return true; }
+};
+template <>
+struct Machine<OcclusionEvent> {
+    static std::span<const std::string_view> lines() { return occluder_lines; }
+    static int line_of(const OcclusionEvent& e) {
+        return std::visit(overloaded{[](const OccluderChosen&) { return 0; },
+                                     [](const OcclusionTested& t) {
+                                         return t.outcome == OcclusionOutcome::occluded ? 3 : t.outcome == OcclusionOutcome::partly ? 4 : 5;
+                                     },
+                                     [](const OcclusionFinished&) { return 6; }},
+                          e);
+    }
+    static bool major(const OcclusionEvent& e) {  // a primitive's own test is a micro-step
+        const auto* t = std::get_if<OcclusionTested>(&e);
+        return !t || t->node >= 0;
+    }
+};
+template <>
+struct Machine<HizEvent> {
+    static std::span<const std::string_view> lines() { return hiz_lines; }
+    static int line_of(const HizEvent& e) {
+        const auto* n = std::get_if<HizNodeTested>(&e);
+        if (!n) return 8;
+        return n->outcome == HizOutcome::outside_frustum ? 1 : n->outcome == HizOutcome::occluded ? 2 : 3;
+    }
+    static bool major(const HizEvent&) { return true; }
+};
+
+// ── [SECTION] the sessions ──────────────────────────────────────────────────────────────────────────────────
+template <class Event, class Result>
+class CullingSession final : public PlayerSession<Event, Result, CullingView>, public CullingLesson {
+public:
+    using Base = PlayerSession<Event, Result, CullingView>;
+    CullingSession(Lesson lesson, typename Base::PlayerType player, std::string_view name)
+        : Base(std::move(lesson), std::move(player)), name_(name) {}
+    std::span<const std::string_view> pseudocode() const override { return Machine<Event>::lines(); }
+    const CullingView& culling_view() const override { return this->view(); }
+    std::string_view machine() const override { return name_; }
+
+private:
+    std::string describe_event(const Event& e) const override { return describe(e); }
+    int line_of(const Event& e) const override { return Machine<Event>::line_of(e); }
+    bool is_major(const Event& e) const override { return Machine<Event>::major(e); }
+    std::string_view name_;
+};
+
+}  // namespace
+
+std::unique_ptr<Session> make_culling_session(Lesson lesson, PlayerOptions options) {
+    const auto world = culling_world(lesson);
+    CullingView initial;
+    initial.world = world;
+    initial.nodes.assign(world->hierarchy.nodes.size(), NodeMark::untouched);
+    initial.primitives.assign(world->scene.polygons.size(), PrimitiveMark::untouched);
+    const Scene* scene = &world->scene;
+    const Hierarchy* h = &world->hierarchy;
+    switch (lesson.algorithm.variant) {
+        case 0: {
+            using S = CullingSession<HierarchyEvent, Hierarchy>;
+            return std::make_unique<S>(lesson, S::PlayerType(build_hierarchy(h->boxes, {.kind = h->kind}), initial, options), "bounds");
+        }
+        case 1:
+        case 2: {
+            using S = CullingSession<HierarchyCullEvent, HierarchyCull>;
+            const HierarchyCullOptions o = lesson.algorithm.variant == 1
+                                               ? HierarchyCullOptions{.frustum = true}
+                                               : HierarchyCullOptions{.frustum = false, .detail_pixels = world->detail_pixels,
+                                                                      .viewport_height = lesson.grid.height};
+            return std::make_unique<S>(lesson, S::PlayerType(cull_hierarchy(h, scene->camera, o), initial, options),
+                                       lesson.algorithm.variant == 1 ? "frustum" : "detail");
+        }
+        case 3: {
+            using S = CullingSession<OcclusionEvent, OcclusionCull>;
+            return std::make_unique<S>(lesson, S::PlayerType(occlusion_cull(scene, h, {.max_occluders = 4}), initial, options), "occluders");
+        }
+        default: {
+            using S = CullingSession<HizEvent, HizResult>;
+            return std::make_unique<S>(lesson, S::PlayerType(hiz_render(scene, h, world->zbuffer), initial, options), "hiz");
+        }
+    }
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,59 @@
+// Culling lessons: a hierarchy built node by node (bounding volumes), culled against the frustum or for detail,
+// occluders and their frusta, or Cull_or_Render with the Z-pyramid. One view serves them all: what happened to
+// each node and each primitive so far. Every culling lesson also runs the whole pipeline once (the stages its
+// scene needs) for the pipeline panel: what each stage leaves out.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "culling/hiz.h"
+#include "culling/occluders.h"
+#include "culling/pipeline.h"
+#include "state/session.h"
+
+namespace hsr::viz {
+
+struct CullingWorld {
+    algo::Scene scene;
+    algo::Hierarchy hierarchy;                 // complete (a bounds lesson folds its build event by event)
+    std::vector<algo::StageReport> pipeline;   // the whole pipeline on this scene, once
+    algo::ZBufferOptions zbuffer;              // the lesson's grid, for the Z-pyramid
+    std::vector<algo::Plane> frustum;          // the camera's view frustum
+    double detail_pixels = 0;
+};
+
+enum class NodeMark : std::uint8_t { untouched, built, outside, inside, partial, too_small, occluded, visible };
+enum class PrimitiveMark : std::uint8_t { untouched, kept, left_out };
+
+struct CullingView {
+    std::shared_ptr<const CullingWorld> world;
+    std::vector<NodeMark> nodes;
+    std::vector<PrimitiveMark> primitives;
+    std::vector<std::uint32_t> occluders;       // polygons chosen, best first
+    std::vector<std::uint32_t> rendered;        // Hi-Z: primitives rendered, in order (the pyramid is rebuilt from them)
+    std::int32_t current = -1;                  // the node last touched
+    std::uint32_t kept = 0, left_out = 0, plane_tests = 0, texels = 0;
+    bool done = false;
+};
+std::size_t approx_bytes(const CullingView& view);
+void reduce(CullingView& view, const algo::HierarchyEvent& event);
+void reduce(CullingView& view, const algo::HierarchyCullEvent& event);
+void reduce(CullingView& view, const algo::OcclusionEvent& event);
+void reduce(CullingView& view, const algo::HizEvent& event);
+
+// The world a culling lesson plays in (its hierarchy: a BVH for the bounds lesson, else an octree).
+std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson);
+
+// What the window draws of a culling lesson, whichever machine it plays.
+class CullingLesson {
+public:
+    virtual ~CullingLesson() = default;
+    virtual const CullingView& culling_view() const = 0;
+    virtual std::string_view machine() const = 0;  // "bounds", "frustum", "detail", "occluders", "hiz"
+};
+
+// Makes the session of a culling lesson (family culling), by its algorithm's variant.
+std::unique_ptr<Session> make_culling_session(Lesson lesson, PlayerOptions options);
+
+}  // namespace hsr::viz
