@@ -7,6 +7,7 @@
 
 #include "core/plane.h"
 #include "scene/load_floor_plan.h"
+#include "scene/load_mesh.h"
 
 namespace hsr::algo {
 namespace {
@@ -64,18 +65,6 @@ Camera read_camera(const TomlReader& r, const toml::table* t) {
     return c;
 }
 
-// Newell's normal is zero for a polygon with no area; "zero" relative to the polygon's size, so that collinear
-// vertices given with rounding still count.
-bool has_area(const std::vector<glm::dvec4>& vertices) {
-    std::vector<Vec3> v;
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (const auto& x : vertices) {
-        v.emplace_back(x);
-        lo = glm::min(lo, glm::dvec3(x)), hi = glm::max(hi, glm::dvec3(x));
-    }
-    const double size = glm::length(hi - lo);
-    return size > 0 && measure(v) > 1e-12 * size * size;
-}
 
 template <class Each>
 void for_each_table(const TomlReader& r, const toml::table& root, std::string_view key, Each each) {
@@ -150,9 +139,22 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
 
 }  // namespace
 
+// Newell's normal is zero for a polygon with no area; "zero" relative to the polygon's size, so that collinear
+// vertices given with rounding still count.
+bool has_area(const std::vector<glm::dvec4>& vertices) {
+    std::vector<Vec3> v;
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const auto& x : vertices) {
+        v.emplace_back(x);
+        lo = glm::min(lo, glm::dvec3(x)), hi = glm::max(hi, glm::dvec3(x));
+    }
+    const double size = glm::length(hi - lo);
+    return size > 0 && measure(v) > 1e-12 * size * size;
+}
+
 Scene read_scene(const TomlReader& r) {
     const toml::table& root = r.root();
-    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "floor_plan", "expect"});
+    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "meshes", "floor_plan", "expect"});
     Scene s;
     s.source = r.path();
     s.name = r.text(root, "name", "", "untitled scene");
@@ -200,6 +202,10 @@ Scene read_scene(const TomlReader& r) {
                    "the polygon has no area (its vertices are on one line or at one point)");
         s.polygons.push_back(std::move(p));
     });
+    read_meshes(r, s);
+    for (std::size_t i = ids.size(); i < s.polygons.size(); ++i)  // mesh faces take ids too: none may be used twice
+        if (!ids.insert(s.polygons[i].id).second)
+            r.fail(root.get("meshes"), "meshes", "id " + std::to_string(s.polygons[i].id) + " is used twice");
     s.floor_plan = read_floor_plan(r, r.table(root, "floor_plan", "", false));
     if (s.floor_plan.eye) {  // the viewer of a floor plan stands in it: the camera follows
         const FloorPlan& plan = s.floor_plan;

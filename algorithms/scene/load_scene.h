@@ -15,6 +15,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/scene.h"
 #include "scene/toml_reader.h"
@@ -24,5 +25,7 @@ namespace hsr::algo {
 Scene load_scene(const std::string& path);                          // throws LoadError
 Scene load_scene_text(const std::string& path, std::string_view text);  // throws LoadError
 Scene read_scene(const TomlReader& toml);
+// Does a polygon (3 or more vertices) have area, relative to its size? (Collinear vertices with rounding do not.)
+bool has_area(const std::vector<glm::dvec4>& vertices);
 
 }  // namespace hsr::algo

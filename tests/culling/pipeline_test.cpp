@@ -9,6 +9,7 @@
 #include "culling/occluders.h"
 #include "culling/pipeline.h"
 #include "scene/generated_scenes.h"
+#include "scene/load_scene.h"
 
 using namespace hsr::algo;
 
@@ -138,4 +139,26 @@ TEST_CASE("the partial occlusion problem: hidden by two occluders together, cull
 TEST_CASE("culling stages by name, and an unknown one named in the error", "[culling][pipeline][errors]") {
     CHECK(parse_stages("back-face,frustum,hiz") == std::vector<Stage>{Stage::back_face, Stage::frustum, Stage::hiz});
     CHECK_THROWS_WITH(parse_stages("frustum,occlusion"), Catch::Contains("\"occlusion\""));
+}
+
+TEST_CASE("OBJ meshes load as closed polygons, placed and numbered, and back-face culling halves them", "[culling][meshes]") {
+    const Scene s = load_scene(HSR_SOURCE_DIR "/assets/scenes/meshes_demo.toml");
+    REQUIRE(s.polygons.size() == 128 + 128 + 6);
+    CHECK(s.polygons[0].id == 100);
+    CHECK(s.polygons[128].id == 300);
+    CHECK(s.polygons.back().id == 505);
+    const auto cube = polygons_of(s);
+    CHECK(enclosed_volume({cube.end() - 6, cube.end()}) == Approx(1.5 * 1.5 * 1.5));  // scaled, turned, moved: still 3.375
+    const auto r = run_pipeline(s, {.stages = {Stage::back_face}, .viewport = {96, 64}});
+    CHECK(report(r, Stage::back_face).left_out > s.polygons.size() / 3);
+    CHECK(report(r, Stage::back_face).left_out < s.polygons.size() * 2 / 3);
+    const auto all = run_pipeline(s, {.stages = {}, .viewport = {96, 64}});
+    CHECK(real_differences(s, r.frame, all.frame) == 0);
+}
+
+TEST_CASE("a mesh that cannot be read names the scene file, line and field", "[culling][meshes][errors]") {
+    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"../meshes/none.obj\"\n"),
+                      Catch::Contains("x.toml:2") && Catch::Contains("meshes[0].file") && Catch::Contains("none.obj"));
+    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"../meshes/cube.obj\"\nid = 65533\n"),
+                      Catch::Contains("ids from 1 to 65535"));
 }

@@ -1,0 +1,60 @@
+#include "scene/load_mesh.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include <tiny_obj_loader.h>
+
+#include "core/plane.h"
+#include "scene/load_scene.h"
+
+namespace hsr::algo {
+
+void read_meshes(const TomlReader& r, Scene& scene) {
+    const toml::array* meshes = r.array(r.root(), "meshes", "", false);
+    if (!meshes) return;
+    for (std::size_t m = 0; m < meshes->size(); ++m) {
+        const std::string f = index("meshes", m);
+        const toml::table* t = meshes->get(m)->as_table();
+        if (!t) r.fail(meshes->get(m), f, "expected a table");
+        r.only_keys(*t, f, {"file", "id", "color", "translate", "scale", "turn"});
+        const std::string file = r.text(*t, "file", f);
+        const auto path = (std::filesystem::path(r.path()).parent_path() / file).lexically_normal();
+        tinyobj::ObjReader obj;
+        tinyobj::ObjReaderConfig config;
+        config.triangulate = false;  // keep quads and n-gons as the file has them
+        if (!obj.ParseFromFile(path.string(), config)) r.fail(t->get("file"), join(f, "file"), "cannot read " + path.string() + ": " + obj.Error());
+        std::int64_t id = r.integer(*t, "id", f, 1);
+        const double scale = r.number(*t, "scale", f, 1.0), turn = r.number(*t, "turn", f, 0.0) * M_PI / 180;
+        if (!(scale > 0)) r.fail(t->get("scale"), join(f, "scale"), "expected a scale > 0");
+        const glm::dvec4 move = t->get("translate") ? r.vector(*t->get("translate"), join(f, "translate"), 3, 3) : glm::dvec4(0, 0, 0, 1);
+        Color color{200, 200, 200};
+        if (t->contains("color")) {
+            const std::string hex = r.text(*t, "color", f);
+            unsigned rgb = 0;
+            if (hex.size() != 7 || hex[0] != '#' || std::sscanf(hex.c_str() + 1, "%6x", &rgb) != 1)
+                r.fail(t->get("color"), join(f, "color"), "expected a colour \"#rrggbb\"");
+            color = {std::uint8_t(rgb >> 16), std::uint8_t(rgb >> 8), std::uint8_t(rgb)};
+        }
+        const auto& v = obj.GetAttrib().vertices;
+        for (const tinyobj::shape_t& shape : obj.GetShapes()) {
+            std::size_t at = 0;
+            for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+                ScenePolygon p{SceneId(id), color, {}};
+                if (id < 1 || id > 65535) r.fail(t->get("id"), join(f, "id"), "the mesh's faces need ids from 1 to 65535");
+                ++id;
+                for (std::size_t k = 0; k < shape.mesh.num_face_vertices[face]; ++k) {
+                    const auto vi = std::size_t(shape.mesh.indices[at++].vertex_index);
+                    const glm::dvec3 q = glm::dvec3(v[3 * vi], v[3 * vi + 1], v[3 * vi + 2]) * scale;
+                    p.vertices.emplace_back(q.x * std::cos(turn) + q.z * std::sin(turn) + move.x, q.y + move.y,
+                                            -q.x * std::sin(turn) + q.z * std::cos(turn) + move.z, 1.0);
+                }
+                if (!has_area(p.vertices))
+                    r.fail(t->get("file"), join(f, "file"), path.filename().string() + ": face " + std::to_string(face + 1) + " has no area");
+                scene.polygons.push_back(std::move(p));
+            }
+        }
+    }
+}
+
+}  // namespace hsr::algo
