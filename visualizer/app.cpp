@@ -191,7 +191,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_HOME: a.to_start = true; break;
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
-        case SDLK_3: a.toggle_3d = true; break;  // z-buffer lessons: fat pixels or 3D
+        case SDLK_3: a.toggle_3d = true; break;  // z-buffer: fat pixels or 3D; portals: plan or 3D; culling: god's eye or camera
         default: break;
     }
 }
@@ -257,7 +257,8 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (culling) {
         draw_culling_view(culling->culling_view(), r.batches, r.labels);
         detail = std::to_string(culling->culling_view().world->scene.polygons.size()) + " primitives · " +
-                 (culling->culling_view().world->hierarchy.kind == algo::HierarchyKind::bvh ? "BVH" : "octree") + " · god's-eye view";
+                 (culling->culling_view().world->hierarchy.kind == algo::HierarchyKind::bvh ? "BVH" : "octree") +
+                 (lp.zbuffer_3d ? " · from the camera" : " · god's-eye view");
     }
     if (sort) {
         draw_depth_sort_view(sort->view(), r.batches, r.labels);
@@ -295,7 +296,12 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     }
     // the 3D view fills the space left of the panels and above the timeline (GL's y axis points up)
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));
-    const glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
+    glm::mat4 vp = lp.camera.view_projection(view_w / view_h);
+    if (culling && lp.zbuffer_3d) {  // key 3 in a culling lesson: the view from the scene's own camera
+        algo::Camera eye = culling->culling_view().world->scene.camera;
+        eye.aspect = view_w / view_h;
+        vp = glm::mat4(algo::view_projection(eye));
+    }
     r.view_projection = vp;
     r.view_w = view_w;
     r.view_h = view_h;

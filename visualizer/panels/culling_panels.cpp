@@ -76,7 +76,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     place_in_column(l, 2);
     const CullingView& v = s.culling_view();
     ImGui::Begin("Culling", nullptr, fixed);
-    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far", std::string(s.machine()).c_str(), v.kept, v.left_out);
+    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · 3: god's eye / camera", std::string(s.machine()).c_str(), v.kept, v.left_out);
     if (s.machine() == "frustum") {
         ImGui::SameLine();
         ImGui::TextColored(dim_text, "· %u plane tests", v.plane_tests);
