@@ -21,6 +21,7 @@ struct Aabb {
     [[nodiscard]] double volume() const;
     [[nodiscard]] Vec3 corner(int k) const { return {k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z}; }
     [[nodiscard]] bool contains(const Aabb& b) const;
+    bool operator==(const Aabb&) const = default;
 };
 
 struct Sphere {
