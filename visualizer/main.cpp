@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--format", render.format, "Depth format for zbuffer and scanline: int16, int24 (default), int32, float32, float32-reversed, linear24");
     render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");
-    render_cmd->add_option("--cull", render.cull, "zbuffer: culling stages first, from back-face,frustum,detail,occluders,hiz");
+    render_cmd->add_option("--cull", render.cull, "zbuffer: culling stages first, from back-face,frustum,detail,occluders,portals,hiz");
     render_cmd->add_option("--eye", render.eye, "Eye position X,Y,Z (default: the scene camera's)");
     render_cmd->add_option("--size", render.size, "Image size WxH (default 512x512)");
     render_cmd->add_option("--out", render.out, "Colour image (PNG)")->required();

@@ -1,11 +1,13 @@
 #include "culling/pipeline.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "culling/backface.h"
 #include "culling/hiz.h"
 #include "culling/occluders.h"
 #include "core/numeric.h"
+#include "portals/portal_render.h"
 
 namespace hsr::algo {
 namespace {
@@ -32,6 +34,7 @@ std::string_view to_string(Stage s) {
         case Stage::frustum: return "frustum";
         case Stage::detail: return "detail";
         case Stage::occluders: return "occluders";
+        case Stage::portals: return "portals";
         case Stage::hiz: return "hiz";
         case Stage::hse: return "hse";
     }
@@ -45,14 +48,19 @@ std::vector<Stage> parse_stages(std::string_view list) {
         const std::string_view name = list.substr(0, comma);
         const auto* s = std::find_if(std::begin(all_stages), std::end(all_stages), [&](Stage x) { return to_string(x) == name; });
         if (s == std::end(all_stages))
-            throw InvalidInput("unknown culling stage \"" + std::string(name) + "\" (expected back-face, frustum, detail, occluders, hiz)");
+            throw InvalidInput("unknown culling stage \"" + std::string(name) + "\" (expected back-face, frustum, detail, occluders, portals, hiz)");
         out.push_back(*s);
         list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
     }
     return out;
 }
 
-PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& o) {
+PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
+    // A floor plan plays as its rooms' walls, floors and objects
+    std::optional<CellModel> model;
+    if (!given.floor_plan.cells.empty()) model = cell_model(given);
+    const Scene rooms = model ? model_scene(*model) : Scene{};
+    const Scene& scene = model ? rooms : given;
     const std::size_t n = scene.polygons.size();
     const auto wanted = [&](Stage s) { return s == Stage::hse || std::find(o.stages.begin(), o.stages.end(), s) != o.stages.end(); };
     PipelineResult out;
@@ -66,7 +74,7 @@ PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& o) {
     for (const Stage stage : all_stages) {
         StageReport r{stage};
         r.in = std::uint32_t(std::count(out.kept.begin(), out.kept.end(), 1));
-        if (!wanted(stage) || (stage == Stage::hse && rendered)) {
+        if (!wanted(stage) || (stage == Stage::hse && rendered) || (stage == Stage::portals && !model)) {
             r.passed = r.in;
             out.stages.push_back(r);
             continue;
@@ -98,6 +106,12 @@ PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& o) {
             case Stage::occluders:
                 keep = occlusion_cull(&scene, &hierarchy, {.max_occluders = o.max_occluders, .candidates = out.kept}).run_to_end().kept;
                 break;
+            case Stage::portals: {  // what portal_render draws through the PVS and the narrowing frusta
+                const CellBsp bsp = build_cell_bsp(*model);
+                const Pvs pvs = build_pvs(&*model).run_to_end();
+                keep = portal_render(&*model, &bsp, &pvs, model->camera).run_to_end().drawn;
+                break;
+            }
             case Stage::hiz: {
                 HizResult hiz = hiz_render(&scene, &hierarchy, zo, out.kept).run_to_end();
                 keep = std::move(hiz.rendered);

@@ -1,8 +1,9 @@
 // The culling pipeline of the lectures: cheap tests leave out what cannot be seen before the expensive
 // hidden-surface algorithm runs. Stages, in order (a scene or lesson names those it needs; the others are shown as
 // left out of the pipeline):
-//   back-face → frustum (hierarchical) → detail → occlusion (planar occluders, or the hierarchical z-buffer) → HSE
-// (portals are their own lessons: a floor plan's cells.) Each stage reports the primitives it got, left out and
+//   back-face → frustum (hierarchical) → detail → occluders → portals → hierarchical z-buffer → HSE
+// A floor-plan scene plays as its rooms' polygons (cell_model), and its portals stage keeps what portal_render draws
+// from the camera; other scenes have no portals stage to run. Each stage reports the primitives it got, left out and
 // passed on, and its time; the hidden-surface stage is the z-buffer, and the hierarchical z-buffer renders as it
 // culls.
 #pragma once
@@ -18,8 +19,8 @@
 
 namespace hsr::algo {
 
-enum class Stage : std::uint8_t { back_face, frustum, detail, occluders, hiz, hse };
-inline constexpr Stage all_stages[] = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::hiz, Stage::hse};
+enum class Stage : std::uint8_t { back_face, frustum, detail, occluders, portals, hiz, hse };
+inline constexpr Stage all_stages[] = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::portals, Stage::hiz, Stage::hse};
 std::string_view to_string(Stage s);
 // "back-face,frustum,detail,occluders" → stages; InvalidInput naming an unknown one.
 std::vector<Stage> parse_stages(std::string_view list);
@@ -42,7 +43,7 @@ struct StageReport {
 
 struct PipelineResult {
     std::vector<StageReport> stages;  // one per stage in pipeline order, those not run marked so
-    std::vector<std::uint8_t> kept;   // per polygon: reached the hidden-surface stage
+    std::vector<std::uint8_t> kept;   // per polygon (of the scene, or of a floor plan's rooms): reached the last stage
     FrameDepth frame{Image(0, 0), {}, {}};
     double hierarchy_milliseconds = 0;
 };

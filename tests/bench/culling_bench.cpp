@@ -23,7 +23,7 @@ void BM_CullingPipeline(benchmark::State& state) {
     state.SetLabel(scene.name);
     state.counters["polygons"] = double(scene.polygons.size());
     state.counters["tree_ms"] = r.hierarchy_milliseconds;
-    const char* short_names[] = {"bf", "fr", "dt", "oc", "hz", "hse"};
+    const char* short_names[] = {"bf", "fr", "dt", "oc", "pt", "hz", "hse"};
     for (const StageReport& s : r.stages) {
         if (!s.ran) continue;
         state.counters[std::string(short_names[int(s.stage)]) + "_out"] = s.left_out;

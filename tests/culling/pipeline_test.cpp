@@ -8,6 +8,7 @@
 #include "catch.h"
 #include "culling/occluders.h"
 #include "culling/pipeline.h"
+#include "portals/cell_model.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 
@@ -161,4 +162,17 @@ TEST_CASE("a mesh that cannot be read names the scene file, line and field", "[c
                       Catch::Contains("x.toml:2") && Catch::Contains("meshes[0].file") && Catch::Contains("none.obj"));
     CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"../meshes/cube.obj\"\nid = 65533\n"),
                       Catch::Contains("ids from 1 to 65535"));
+}
+
+TEST_CASE("a floor plan runs through the pipeline with its portals stage, conservatively", "[culling][pipeline][portals]") {
+    const Scene plan = load_scene(HSR_SOURCE_DIR "/assets/scenes/cells_lecture.toml");
+    const PipelineResult culled = run_pipeline(plan, {.stages = {Stage::back_face, Stage::frustum, Stage::portals}, .viewport = {96, 72}});
+    const PipelineResult all = run_pipeline(plan, {.stages = {}, .viewport = {96, 72}});
+    CHECK(report(culled, Stage::portals).ran);
+    CHECK(report(culled, Stage::portals).left_out > 0);
+    const CellModel model = cell_model(plan);
+    CHECK(real_differences(model_scene(model), culled.frame, all.frame) == 0);
+    // a scene without cells has no portals stage to run
+    const PipelineResult city = run_pipeline(city_scene({.triangles = 600}), {.stages = {Stage::portals}, .viewport = {32, 24}});
+    CHECK_FALSE(report(city, Stage::portals).ran);
 }
