@@ -85,7 +85,7 @@ algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo
         else if (!s.ran) std::printf("%-10s left out of the pipeline\n", name.c_str());
         else std::printf("%-10s in %u, left out %u, passed on %u, %.3f ms\n", name.c_str(), s.in, s.left_out, s.passed, s.milliseconds);
     }
-    std::printf("frame: %zu polygons, %llu depth tests, %.3f ms in all\n", scene.polygons.size(), (unsigned long long)r.frame.tested, total);
+    std::printf("frame: %zu polygons, %llu depth tests, %.3f ms in all\n", r.kept.size(), (unsigned long long)r.frame.tested, total);
     return std::move(r.frame.image);
 }
 
