@@ -31,6 +31,9 @@ int main(int argc, char** argv) {
     trace_cmd->add_option("input", trace.input, "Lesson or scene file")->required()->check(CLI::ExistingFile);
     trace_cmd->add_option("--out", trace.out, "JSON Lines file to write (one event per line)")->required();
     trace_cmd->add_option("--algorithm", trace.algorithm, "Override the lesson's algorithm");
+    std::vector<std::string> check_files;
+    CLI::App* check_cmd = cli.add_subcommand("check", "Validate lessons and scenes: schema, references, chapters, questions");
+    check_cmd->add_option("files", check_files, "Lesson or scene files (default: every shipped one)");
     hsr::viz::RenderOptions render;
     CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
     render_cmd->add_option("scene", render.scene, "Scene file (world coordinates), or a generated scene: city:N, field:N, spheres:N (N triangles)")->required();
@@ -46,6 +49,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(cli, argc, argv);
 
     if (*trace_cmd) return hsr::viz::run_trace(trace);
+    if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());
     if (*render_cmd) return hsr::viz::run_render(render);
 
     // The window: the default lesson unless one is named.

@@ -1,8 +1,11 @@
 #include "cli/commands.h"
 
 #include <cstdio>
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 
+#include "state/lesson_check.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -23,6 +26,27 @@ int run_trace(const TraceOptions& o) {
         std::fprintf(stderr, "hsrviz: %s\n", e.what());
         return 1;
     }
+}
+
+int run_check(std::vector<std::string> files, const std::string& root) {
+    if (files.empty())
+        for (const char* dir : {"lessons", "assets/scenes"})
+            for (const auto& e : std::filesystem::recursive_directory_iterator(std::filesystem::path(root) / dir))
+                if (e.path().extension() == ".toml") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    int bad = 0;
+    for (const std::string& f : files) {
+        const CheckResult r = check_file(f);
+        if (r.problems.empty()) {
+            std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", f.c_str(), r.events, r.chapters, r.questions);
+            continue;
+        }
+        ++bad;
+        std::printf("FAIL  %s\n", f.c_str());
+        for (const std::string& p : r.problems) std::printf("      %s\n", p.c_str());
+    }
+    std::printf("%zu files checked, %d with problems\n", files.size(), bad);
+    return bad == 0 ? 0 : 1;
 }
 
 }  // namespace hsr::viz

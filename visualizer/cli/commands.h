@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hsr::viz {
 
@@ -14,5 +15,9 @@ struct TraceOptions {
 
 // Runs the machine to completion, writes the trace, prints the event count and the trace hash. Exit code.
 int run_trace(const TraceOptions& o);
+
+// Checks lesson and scene files (state/lesson_check.h); with none, every shipped lesson and scene under `root`.
+// Prints one line per file (and one per problem); exit code 1 when any file has a problem.
+int run_check(std::vector<std::string> files, const std::string& root);
 
 }  // namespace hsr::viz

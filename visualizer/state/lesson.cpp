@@ -42,7 +42,8 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "languages", "chapters"});
+    lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.title = r.text(root, "title", "");
     lesson.summary = r.text(root, "summary", "", "");
     lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);

@@ -9,6 +9,8 @@
 //   splitter = "balanced"                  # BSP lessons only
 //   format = "int16"                       # z-buffer lessons: the depth format (depth_format.h's format_id)
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
+//   cull = "back-face,frustum"             # culling lessons: the stages the scene needs
+//   languages = ["en", "de"]  [[chapters]] …   # narration, pauses and questions: state/chapters.h
 //
 // A scene file given where a lesson is expected plays as a lesson of its own, with the algorithm the caller names
 // (or the one that fits its geometry: Sutherland–Hodgman for polygons, Cohen–Sutherland otherwise).
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "registry.h"
+#include "state/chapters.h"
 #include "core/screen_polygon.h"
 #include "scene/scene.h"
 #include "zbuffer/depth_format.h"
@@ -36,6 +39,8 @@ struct Lesson {
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
+    std::vector<std::string> languages{"en"};                  // of the narration; the first is the default
+    std::vector<Chapter> chapters;                             // state/chapters.h
     algo::Scene scene;
 };
 

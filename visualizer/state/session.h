@@ -10,6 +10,7 @@
 
 #include "state/lesson.h"
 #include "state/player.h"
+#include "state/trace.h"
 
 namespace hsr::viz {
 
@@ -36,6 +37,7 @@ public:
     virtual void prefetch(std::size_t n) = 0;
 
     virtual std::string sentence(std::size_t k) const = 0;  // describe(event k)
+    virtual std::string event_line(std::size_t k) const = 0;  // event k as its trace writes it (JSON)
     std::string narration() const { return cursor() == 0 ? std::string() : sentence(cursor() - 1); }
     virtual std::span<const std::string_view> pseudocode() const = 0;
     virtual int current_line() const = 0;  // of pseudocode(), −1 at the start
@@ -69,6 +71,7 @@ public:
     void seek_end() override { player_.seek_end(); }
     void prefetch(std::size_t n) override { player_.prefetch(n); }
     std::string sentence(std::size_t k) const override { return describe_event(player_.event(k)); }
+    std::string event_line(std::size_t k) const override { return trace_line(k, player_.event(k), sentence(k)); }
     int current_line() const override {
         const auto e = player_.last_applied();
         return e ? line_of(*e) : -1;

@@ -260,6 +260,36 @@ std::string hex(std::uint64_t hash) {
     return buf;
 }
 
+namespace {
+template <class V>
+struct KindsOf;
+template <class... E>
+struct KindsOf<std::variant<E...>> {
+    static std::vector<std::string> list() { return {std::string(E::kind)...}; }
+};
+}  // namespace
+
+std::vector<std::string> event_kinds(const Lesson& lesson) {
+    const int v = lesson.algorithm.variant;
+    switch (lesson.algorithm.family) {
+        case algo::Family::clipping: return KindsOf<algo::ClipEvent>::list();
+        case algo::Family::bsp: return KindsOf<algo::BspEvent>::list();
+        case algo::Family::backface: return KindsOf<algo::CullEvent>::list();
+        case algo::Family::zbuffer: return KindsOf<algo::ZBufferEvent>::list();
+        case algo::Family::raycast: return KindsOf<algo::RayCastEvent>::list();
+        case algo::Family::scanline: return KindsOf<algo::ScanLineEvent>::list();
+        case algo::Family::zmerge: return KindsOf<algo::ZMergeEvent>::list();
+        case algo::Family::depth_sort: return KindsOf<algo::DepthSortEvent>::list();
+        case algo::Family::portals: return v == 0 ? KindsOf<algo::PvsEvent>::list() : KindsOf<algo::PortalEvent>::list();
+        case algo::Family::culling:
+            return v == 0 ? KindsOf<algo::HierarchyEvent>::list()
+                   : v <= 2 ? KindsOf<algo::HierarchyCullEvent>::list()
+                   : v == 3 ? KindsOf<algo::OcclusionEvent>::list()
+                            : KindsOf<algo::HizEvent>::list();
+    }
+    return {};
+}
+
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
     switch (lesson.algorithm.family) {
         case algo::Family::clipping: {

@@ -49,6 +49,9 @@ std::string trace_line(std::uint64_t step, const algo::OcclusionEvent& e, const 
 std::string trace_line(std::uint64_t step, const algo::HizEvent& e, const std::string& sentence);
 std::string trace_line(std::uint64_t step, const algo::PortalEvent& e, const std::string& sentence);
 
+// The kinds of event the lesson's machine can tell (its event variant's alternatives).
+std::vector<std::string> event_kinds(const Lesson& lesson);
+
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
 // to only count and hash.
 template <class Event, class Result, class Describe>

@@ -1,0 +1,80 @@
+// Chapters and questions: every shipped lesson and scene checks out (chapters start, questions are answered by the
+// machine, answers are among the choices); a question answered wrongly on purpose gets "wrong" with the machine's
+// own answer and sentence; playback pauses at a chapter; a teacher's typo names the file and line.
+#include <filesystem>
+#include <fstream>
+
+#include "catch.h"
+#include "state/classroom.h"
+#include "state/lesson_check.h"
+
+using namespace hsr::viz;
+
+TEST_CASE("every shipped lesson and scene checks out", "[lesson][check]") {
+    int files = 0, questions = 0;
+    for (const char* dir : {"/lessons", "/assets/scenes"})
+        for (const auto& e : std::filesystem::recursive_directory_iterator(std::string(HSR_SOURCE_DIR) + dir)) {
+            if (e.path().extension() != ".toml") continue;
+            const CheckResult r = check_file(e.path().string());
+            INFO(e.path().string());
+            for (const auto& p : r.problems) INFO(p);
+            CHECK(r.problems.empty());
+            ++files, questions += int(r.questions);
+        }
+    CHECK(files > 50);
+    CHECK(questions >= 3);
+}
+
+TEST_CASE("a question is judged by the machine's next event, right or wrong, and scored", "[lesson][classroom]") {
+    auto s = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
+    s->prefetch(prefetch_events);
+    Classroom room;
+    room.attach(*s);
+    CHECK(room.questions() == 3);
+    CHECK(room.language() == "en");
+    // play from the start: the first pausing chapter stops playback where segment 3 starts
+    std::size_t before = s->cursor();
+    while (!room.crossed_a_pause(*s, before)) {
+        before = s->cursor();
+        s->step();
+    }
+    REQUIRE(room.open_question(*s) != nullptr);
+    CHECK(room.open_question(*s)->ask.at("en") == "How does segment 3 end?");
+    const auto wrong = room.answer(*s, "clipped");  // on purpose
+    REQUIRE(wrong);
+    CHECK_FALSE(wrong->right);
+    CHECK(wrong->answer == "inside");
+    CHECK_THAT(wrong->because, Catch::Contains("segment 3 inside"));
+    CHECK(room.verdict(*s).has_value());
+    CHECK(room.open_question(*s) == nullptr);  // answered: asked no more
+    // the next chapter's question, answered right
+    room.next_chapter(*s);
+    REQUIRE(room.open_question(*s) != nullptr);
+    const auto right = room.answer(*s, "000010");
+    REQUIRE(right);
+    CHECK(right->right);
+    CHECK(room.right() == 1);
+    CHECK(room.answered() == 2);
+    // languages: English, then German
+    room.next_language();
+    CHECK(room.language() == "de");
+    const auto c = room.chapter(*s);
+    REQUIRE(c);
+    CHECK_THAT(in_language(s->lesson().chapters[*c].narration, room.language(), s->lesson().languages), Catch::Contains("Segment 4"));
+}
+
+TEST_CASE("a chapter naming an event the machine never tells is a problem with file and line", "[lesson][check][errors]") {
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_check_test";
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "typo.toml";
+    std::ofstream(file) << "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" << HSR_SOURCE_DIR
+                        << "/assets/scenes/cs_segments.toml\"\n\n[[chapters]]\nwhen = \"OutcodeComputd\"\nnarration = \"x\"\n";
+    const CheckResult r = check_file(file.string());
+    REQUIRE(r.problems.size() == 1);
+    CHECK_THAT(r.problems[0], Catch::Contains("typo.toml:5") && Catch::Contains("OutcodeComputd") && Catch::Contains("OutcodeComputed"));
+    std::ofstream(file) << "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" << HSR_SOURCE_DIR
+                        << "/assets/scenes/cs_segments.toml\"\n\n[[chapters]]\nstep = 2\nnarrative = \"x\"\n";
+    const CheckResult bad_key = check_file(file.string());
+    REQUIRE(bad_key.problems.size() == 1);
+    CHECK_THAT(bad_key.problems[0], Catch::Contains("typo.toml:7") && Catch::Contains("narrative"));
+}

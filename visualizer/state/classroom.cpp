@@ -1,0 +1,79 @@
+#include "state/classroom.h"
+
+#include <algorithm>
+
+namespace hsr::viz {
+
+void Classroom::attach(const Session& s) {
+    script_.emplace(s);
+    const Lesson& l = s.lesson();
+    if (languages_ != l.languages) {  // a new lesson: its languages, its default first; answers start afresh
+        languages_ = l.languages;
+        language_ = languages_.front();
+        answers_.clear(), right_ = 0;
+    }
+    questions_ = int(std::count_if(l.chapters.begin(), l.chapters.end(), [](const Chapter& c) { return c.question.has_value(); }));
+}
+
+int Classroom::questions() const { return questions_; }
+
+std::optional<std::size_t> Classroom::chapter(const Session& s) const {
+    return script_ ? script_->chapter_at(s.cursor()) : std::nullopt;
+}
+
+bool Classroom::crossed_a_pause(const Session& s, std::size_t before) const {
+    if (!script_ || s.cursor() <= before) return false;
+    const auto& chapters = s.lesson().chapters;
+    for (std::size_t c = 0; c < chapters.size(); ++c) {
+        const auto& start = script_->places()[c].starts;
+        if (start && *start > before && *start <= s.cursor() && (chapters[c].pause || chapters[c].question)) return true;
+    }
+    return false;
+}
+
+const Question* Classroom::open_question(const Session& s) const {
+    const auto c = chapter(s);
+    if (!c || answers_.contains(*c)) return nullptr;
+    const auto& ch = s.lesson().chapters[*c];
+    return ch.question && script_->places()[*c].answered ? &*ch.question : nullptr;
+}
+
+std::optional<Verdict> Classroom::answer(Session& s, const std::string& given) {
+    const auto c = chapter(s);
+    if (!c || !open_question(s)) return std::nullopt;
+    const ChapterPlace& place = script_->places()[*c];
+    const Verdict v = judge(place, given);
+    answers_[*c] = v;
+    right_ += v.right;
+    s.seek(*place.answered);  // the next events decide: show the one that answered
+    return v;
+}
+
+std::optional<Verdict> Classroom::verdict(const Session& s) const {
+    // the last chapter answered at or before this step
+    if (!script_) return std::nullopt;
+    std::optional<Verdict> out;
+    std::size_t latest = 0;
+    for (const auto& [c, v] : answers_) {
+        const auto& p = script_->places()[c];
+        if (p.answered && *p.answered <= s.cursor() && *p.answered >= latest) latest = *p.answered, out = v;
+    }
+    return out;
+}
+
+void Classroom::next_language() {
+    const auto it = std::find(languages_.begin(), languages_.end(), language_);
+    language_ = (it == languages_.end() || it + 1 == languages_.end()) ? languages_.front() : *(it + 1);
+}
+
+void Classroom::next_chapter(Session& s) const {
+    if (!script_) return;
+    if (const auto c = script_->next_chapter(s.cursor())) s.seek(*script_->places()[*c].starts);
+}
+
+void Classroom::previous_chapter(Session& s) const {
+    if (!script_) return;
+    if (const auto c = script_->previous_chapter(s.cursor())) s.seek(*script_->places()[*c].starts);
+}
+
+}  // namespace hsr::viz

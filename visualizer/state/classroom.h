@@ -1,0 +1,47 @@
+// The classroom side of a lesson being played: which chapter shows, the language, the questions answered and the
+// score. Playback pauses where a chapter asks it to (or asks a question); an answer is judged by the machine's own
+// event, which the player then steps to so that the student sees it.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+#include "state/lesson_script.h"
+
+namespace hsr::viz {
+
+class Classroom {
+public:
+    // After a lesson is (re)loaded or its machine reruns.
+    void attach(const Session& session);
+    // After playback moved from `before` to the session's cursor: true when it crossed the start of a chapter that
+    // pauses (or asks a question), so playing should stop there.
+    bool crossed_a_pause(const Session& session, std::size_t before) const;
+
+    std::optional<std::size_t> chapter(const Session& session) const;  // showing now
+    // The question of the chapter showing, if it has one not yet answered.
+    const Question* open_question(const Session& session) const;
+    // Answers the open question with choice `index` (or text); the player steps to the answering event.
+    std::optional<Verdict> answer(Session& session, const std::string& given);
+    std::optional<Verdict> verdict(const Session& session) const;  // of the chapter showing, once answered
+    void next_language();
+    // PageDown / PageUp: to the next or previous chapter's start.
+    void next_chapter(Session& session) const;
+    void previous_chapter(Session& session) const;
+
+    const std::string& language() const { return language_; }
+    int right() const { return right_; }
+    int answered() const { return int(answers_.size()); }
+    int questions() const;
+    const LessonScript* script() const { return script_ ? &*script_ : nullptr; }
+
+private:
+    std::optional<LessonScript> script_;
+    std::vector<std::string> languages_{"en"};
+    std::string language_ = "en";
+    std::map<std::size_t, Verdict> answers_;  // by chapter
+    int right_ = 0, questions_ = 0;
+};
+
+}  // namespace hsr::viz
