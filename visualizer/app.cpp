@@ -26,6 +26,7 @@
 #include "panels/depth_sort_panels.h"
 #include "panels/portal_panels.h"
 #include "panels/culling_panels.h"
+#include "panels/chapter_panels.h"
 #include "panels/zbuffer_panels.h"
 #include "panels/zmerge_panels.h"
 #include "render/bsp_renderer.h"
@@ -55,6 +56,8 @@
 #include "state/zbuffer_session.h"
 #include "state/zmerge_session.h"
 #include "state/trace.h"
+#include "state/classroom.h"
+#include "state/file_watch.h"
 
 namespace hsr::viz {
 namespace {
@@ -70,11 +73,19 @@ struct Lessonplay {
     static constexpr double tween_seconds = 0.25;
     bool animate = true;             // off for screenshots and recordings: they show each step as it ends
     bool zbuffer_3d = false;         // z-buffer and portal lessons: the scene in 3D instead of the pixels or the plan
+    Classroom classroom;             // chapters, questions, language, score
+    FileWatch watch;                 // the lesson and scene files: edited on disk, reloaded
 
     void load(const AppOptions& o) {
+        const std::size_t keep = session ? session->cursor() : 0;  // a reload stays at its step where it still exists
+        watch.watch({o.lesson_path});
         try {
-            session = make_session(load_lesson(o.lesson_path, o.algorithm));
+            const Lesson lesson = load_lesson(o.lesson_path, o.algorithm);
+            if (lesson.scene.source != o.lesson_path && std::filesystem::exists(lesson.scene.source))
+                watch.watch({o.lesson_path, lesson.scene.source});
+            session = make_session(lesson);
             session->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
+            classroom.attach(*session);
             error.clear();
             before.reset();
             glm::vec3 centre(0);
@@ -113,6 +124,7 @@ struct Lessonplay {
             }
             camera.target = centre;
             camera.distance = radius * 2.4f;
+            session->seek(std::min(keep, session->known()));
         } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
             session.reset();
             error = e.what();
@@ -121,13 +133,28 @@ struct Lessonplay {
     }
 
     void update(const UiActions& a, double dt, const AppOptions& o) {
-        if (a.reload) load(o);
+        if (a.reload || watch.changed(dt)) load(o);
         if (!session) return;
+        // the classroom: a number answers an open question (else 3 is the 3D key), chapters, language
+        std::optional<std::string> answer = a.answer;
+        bool toggle_3d = a.toggle_3d || (a.digit == 3 && !classroom.open_question(*session));
+        if (a.digit)
+            if (const Question* q = classroom.open_question(*session); q && *a.digit >= 1 && std::size_t(*a.digit) <= q->choices.size())
+                answer = q->choices[std::size_t(*a.digit - 1)], toggle_3d = a.toggle_3d;
+        if (answer) {
+            if (const auto v = classroom.answer(*session, *answer))
+                std::printf("hsrviz: answered \"%s\": %s, the machine says \"%s\"\n", answer->c_str(), v->right ? "right" : "wrong", v->answer.c_str());
+            playback.playing = false;
+        }
+        if (a.next_chapter) classroom.next_chapter(*session), playback.playing = false;
+        if (a.previous_chapter) classroom.previous_chapter(*session), playback.playing = false;
+        if (a.next_language) classroom.next_language();
         if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
             if (auto* portals = dynamic_cast<PortalRenderSession*>(session.get())) portals->move_eye(algo::plan_point(*a.move_eye));
+            classroom.attach(*session);
         }
-        if (a.toggle_3d) zbuffer_3d = !zbuffer_3d;
+        if (toggle_3d) zbuffer_3d = !zbuffer_3d;
         if (auto* zb = dynamic_cast<ZBufferSession*>(session.get())) {
             if (a.depth_format) zb->set_format(*a.depth_format);
             if (a.depth_range) zb->set_range(*a.depth_range);
@@ -158,6 +185,12 @@ struct Lessonplay {
                 if (p.at_end()) playback.playing = false;
             }
         }
+        // a step forward stops where a chapter pauses, so that its question is asked before the events answer it
+        if (a.step || a.micro_step || playback.playing)
+            if (const auto stop = classroom.first_pause_crossed(p, cursor)) {
+                p.seek(*stop);
+                playback.playing = false;
+            }
         if (p.cursor() != cursor && shown) {  // a step was taken (either way): slide from what was shown
             before = std::move(shown);
             tween = 0;
@@ -191,8 +224,12 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_HOME: a.to_start = true; break;
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
-        case SDLK_3: a.toggle_3d = true; break;  // z-buffer: fat pixels or 3D; portals: plan or 3D; culling: god's eye or camera
-        default: break;
+        case SDLK_PAGEDOWN: a.next_chapter = true; break;
+        case SDLK_PAGEUP: a.previous_chapter = true; break;
+        case SDLK_l: a.next_language = true; break;
+        default:  // 1 … 9: a question's choice; 3 alone: z-buffer fat pixels or 3D, portals plan or 3D, culling god's eye or camera
+            if (e.key.keysym.sym >= SDLK_1 && e.key.keysym.sym <= SDLK_9) a.digit = int(e.key.keysym.sym - SDLK_0);
+            break;
     }
 }
 
@@ -317,7 +354,8 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (sort) depth_sort_canvas(*sort, 0, 0, view_w, view_h, lp.animate);
     if (pvs || (portals && !lp.zbuffer_3d)) portal_plan_canvas(s, 0, 0, view_w, view_h, actions);
     if (culling) culling_canvas(*culling, 0, 0, view_w, view_h);
-    lesson_panel(s, detail, layout);
+    if (s.lesson().chapters.empty()) lesson_panel(s, detail, layout);
+    else chapter_lesson_panel(s, lp.classroom, detail, layout);
     pseudocode_panel(s, layout);
     if (clip) clip_state_panel(*clip, layout);
     if (bsp) bsp_state_panel(*bsp, layout);
@@ -330,6 +368,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (pvs) pvs_state_panel(*pvs, layout);
     if (culling) culling_state_panel(*culling, layout);
     if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
+    question_panel(s, lp.classroom, 0, 0, view_w, view_h, actions);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }
@@ -482,6 +521,9 @@ int run_app(const AppOptions& o) {
                     std::printf("hsrviz: at step %zu of %zu%s, %s\n", lp.session->cursor(), lp.session->known(),
                                 lp.session->complete() ? "" : "+",
                                 lp.playback.playing ? "playing" : "paused");
+                if (lp.session && lp.classroom.questions() > 0)
+                    std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
+                                lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
                 if (!write_png(*o.screenshot, width, height)) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
                     exit_code = 1;

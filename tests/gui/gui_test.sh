@@ -110,6 +110,19 @@ case "$case" in
     grep -q '"kind":"CellEntered"' 09_ray_casting_grid.jsonl
     grep -q '"kind":"EdgeCrossed"' 10_scan_line.jsonl
     grep -q '"kind":"PixelMerged"' 12_z_merge.jsonl ;;
+  classroom)  # chapters and questions: answer wrongly, then rightly, with number keys; switch language; check
+    lesson="$src/lessons/01_cohen_sutherland.toml"
+    "$hsrviz" "$lesson" --screenshot q.png --frames 10 --keys PageDown,PageDown,2,PageDown,2,L > out.txt
+    grep -q 'answered "clipped": wrong, the machine says "inside"' out.txt
+    grep -q 'answered "000010": right' out.txt
+    grep -q "score 1 of 2 answered, 3 questions, language de" out.txt
+    "$png_check" q.png 1280 800
+    "$hsrviz" check "$lesson" > check.txt
+    grep -q "ok .*01_cohen_sutherland.toml (64 events, 4 chapters, 3 questions)" check.txt
+    printf 'title = "t"\nalgorithm = "cohen_sutherland"\nscene = "%s"\n[[chapters]]\nwhen = "Nope"\nnarration = "x"\n' \
+      "$src/assets/scenes/cs_segments.toml" > typo.toml
+    if "$hsrviz" check typo.toml > check.txt; then exit 1; fi
+    grep -q 'typo.toml:4: chapters\[0\].when: the machine never tells "Nope"' check.txt ;;
   help)
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"

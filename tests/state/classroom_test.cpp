@@ -6,6 +6,7 @@
 
 #include "catch.h"
 #include "state/classroom.h"
+#include "state/file_watch.h"
 #include "state/lesson_check.h"
 
 using namespace hsr::viz;
@@ -40,6 +41,8 @@ TEST_CASE("a question is judged by the machine's next event, right or wrong, and
     }
     REQUIRE(room.open_question(*s) != nullptr);
     CHECK(room.open_question(*s)->ask.at("en") == "How does segment 3 end?");
+    CHECK(room.first_pause_crossed(*s, 0) == s->cursor());  // a jump over it would stop here, the question not yet answered
+    CHECK(s->cursor() < *room.script()->places()[1].answered);
     const auto wrong = room.answer(*s, "clipped");  // on purpose
     REQUIRE(wrong);
     CHECK_FALSE(wrong->right);
@@ -77,4 +80,18 @@ TEST_CASE("a chapter naming an event the machine never tells is a problem with f
     const CheckResult bad_key = check_file(file.string());
     REQUIRE(bad_key.problems.size() == 1);
     CHECK_THAT(bad_key.problems[0], Catch::Contains("typo.toml:7") && Catch::Contains("narrative"));
+}
+
+TEST_CASE("a file edited on disk is noticed once, and not before half a second", "[lesson][watch]") {
+    const auto file = std::filesystem::temp_directory_path() / "hsrviz_watch_test.toml";
+    std::ofstream(file) << "title = \"a\"\n";
+    FileWatch watch;
+    watch.watch({file.string()});
+    CHECK_FALSE(watch.changed(1.0));
+    std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(2));
+    CHECK_FALSE(watch.changed(0.1));  // looked at no more than twice a second
+    CHECK(watch.changed(0.5));
+    CHECK_FALSE(watch.changed(1.0));  // once per change
+    std::filesystem::remove(file);
+    CHECK(watch.changed(1.0));        // gone (being rewritten) is a change too
 }

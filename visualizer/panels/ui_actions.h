@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 
 #include <glm/vec3.hpp>
 
@@ -23,6 +24,9 @@ struct UiActions {
     std::optional<algo::DepthFormat> depth_format;  // z-buffer lessons: rerun with this format
     std::optional<algo::DepthRange> depth_range;    // z-buffer lessons: rerun with this near and far
     bool toggle_3d = false;                         // z-buffer lessons: the fat pixels, or the scene in 3D
+    std::optional<int> digit;                       // a number key: a question's choice when one is open, else its own use
+    std::optional<std::string> answer;              // a question's choice, clicked
+    bool next_chapter = false, previous_chapter = false, next_language = false;
 };
 
 struct PlaybackState {

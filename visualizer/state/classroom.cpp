@@ -21,14 +21,18 @@ std::optional<std::size_t> Classroom::chapter(const Session& s) const {
     return script_ ? script_->chapter_at(s.cursor()) : std::nullopt;
 }
 
-bool Classroom::crossed_a_pause(const Session& s, std::size_t before) const {
-    if (!script_ || s.cursor() <= before) return false;
+bool Classroom::crossed_a_pause(const Session& s, std::size_t before) const { return first_pause_crossed(s, before).has_value(); }
+
+std::optional<std::size_t> Classroom::first_pause_crossed(const Session& s, std::size_t before) const {
+    if (!script_ || s.cursor() <= before) return std::nullopt;
     const auto& chapters = s.lesson().chapters;
+    std::optional<std::size_t> first;
     for (std::size_t c = 0; c < chapters.size(); ++c) {
         const auto& start = script_->places()[c].starts;
-        if (start && *start > before && *start <= s.cursor() && (chapters[c].pause || chapters[c].question)) return true;
+        if (start && *start > before && *start <= s.cursor() && (chapters[c].pause || chapters[c].question) && (!first || *start < *first))
+            first = *start;
     }
-    return false;
+    return first;
 }
 
 const Question* Classroom::open_question(const Session& s) const {

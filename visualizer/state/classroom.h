@@ -18,6 +18,8 @@ public:
     // After playback moved from `before` to the session's cursor: true when it crossed the start of a chapter that
     // pauses (or asks a question), so playing should stop there.
     bool crossed_a_pause(const Session& session, std::size_t before) const;
+    // The first such start crossed (where a step should stop, so that a question is asked before it is answered).
+    std::optional<std::size_t> first_pause_crossed(const Session& session, std::size_t before) const;
 
     std::optional<std::size_t> chapter(const Session& session) const;  // showing now
     // The question of the chapter showing, if it has one not yet answered.

@@ -1,0 +1,16 @@
+// The classroom in the window: the chapter showing (its title and narration in the chosen language) above the
+// lesson's summary, and the open question over the view with a button per choice (keys 1 to 9), then the verdict
+// with the machine's own sentence, and the score.
+#pragma once
+
+#include "panels/lesson_panels.h"
+#include "state/classroom.h"
+
+namespace hsr::viz {
+
+// Replaces the lesson panel when the lesson has chapters.
+void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& layout);
+// Over the view area, bottom left: the open question (out.answer on a click) or the last verdict.
+void question_panel(const Session& s, const Classroom& room, float x, float y, float w, float h, UiActions& out);
+
+}  // namespace hsr::viz
