@@ -75,6 +75,7 @@ struct Lessonplay {
     bool zbuffer_3d = false;         // z-buffer and portal lessons: the scene in 3D instead of the pixels or the plan
     Classroom classroom;             // chapters, questions, language, score
     FileWatch watch;                 // the lesson and scene files: edited on disk, reloaded
+    bool show_keys = false;          // F1
 
     void load(const AppOptions& o) {
         const std::size_t keep = session ? session->cursor() : 0;  // a reload stays at its step where it still exists
@@ -149,6 +150,8 @@ struct Lessonplay {
         if (a.next_chapter) classroom.next_chapter(*session), playback.playing = false;
         if (a.previous_chapter) classroom.previous_chapter(*session), playback.playing = false;
         if (a.next_language) classroom.next_language();
+        if (a.toggle_keys) show_keys = !show_keys;
+        if (a.close_overlays) show_keys = false;
         if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
             if (auto* portals = dynamic_cast<PortalRenderSession*>(session.get())) portals->move_eye(algo::plan_point(*a.move_eye));
@@ -224,6 +227,8 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_HOME: a.to_start = true; break;
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
+        case SDLK_F1: a.toggle_keys = true; break;
+        case SDLK_ESCAPE: a.close_overlays = true; break;
         case SDLK_PAGEDOWN: a.next_chapter = true; break;
         case SDLK_PAGEUP: a.previous_chapter = true; break;
         case SDLK_l: a.next_language = true; break;
@@ -260,6 +265,30 @@ bool near_the_eye(const Renderer& r, const Session* s, float x, float y) {
     if (c.w <= 0) return false;
     const float sx = (c.x / c.w * 0.5f + 0.5f) * r.view_w, sy = (0.5f - c.y / c.w * 0.5f) * r.view_h;
     return std::hypot(sx - x, sy - y) < 14;
+}
+
+// F1: every key, over the view.
+void keys_panel(const PanelLayout& l) {
+    static constexpr std::pair<const char*, const char*> rows[] = {
+        {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
+        {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
+        {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
+        {"L", "narration language"},       {"3", "3D view / camera view / floor plan"},
+        {"F5", "reload the lesson (edits reload by themselves)"}, {"F1  Esc", "show / hide these keys"},
+        {"drag, wheel", "orbit and zoom the 3D view; drag an eye in 2D"},
+    };
+    ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    if (ImGui::BeginTable("keys", 2)) {
+        for (const auto& [k, what] : rows) {
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%s", k);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(what);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
 }
 
 // `layout` is in ImGui's units (window points); `scale` turns them into framebuffer pixels (2 on a HiDPI display).
@@ -369,6 +398,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (culling) culling_state_panel(*culling, layout);
     if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
     question_panel(s, lp.classroom, 0, 0, view_w, view_h, actions);
+    if (lp.show_keys) keys_panel(layout);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }
@@ -382,7 +412,7 @@ bool write_png(const std::string& path, int w, int h) {
 }
 
 // ── [SECTION] window, GL context and ImGui setup ────────────────────────────────────────────────────────────
-void load_fonts(ImGuiIO& io) {
+void load_fonts(ImGuiIO& io, float scale) {
     // Latin, Greek (ε), punctuation, arrows and maths (≤ ≥ → −): the characters our sentences use.
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2190, 0x21FF,
                                      0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
@@ -392,8 +422,8 @@ void load_fonts(ImGuiIO& io) {
         io.Fonts->AddFontDefault();  // ASCII only: ≤, → and ε will show as '?'
         return;
     }
-    io.Fonts->AddFontFromFileTTF(sans, 17.0f, nullptr, ranges);
-    io.Fonts->AddFontFromFileTTF(mono, 15.0f, nullptr, ranges);  // pseudocode
+    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges);
+    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges);  // pseudocode
 }
 
 struct Window {
@@ -411,7 +441,8 @@ struct Window {
         SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
         SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
         window = SDL_CreateWindow("hsrviz", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, o.width, o.height,
-                                  SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+                                  SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI |
+                                      (o.projector && !o.screenshot && !o.record_dir ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));  // screenshots keep their size
         if (!window) {
             std::fprintf(stderr, "hsrviz: cannot open a window: %s\n", SDL_GetError());
             return false;
@@ -447,7 +478,14 @@ int run_app(const AppOptions& o) {
     io.IniFilename = nullptr;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0;
-    load_fonts(io);
+    load_fonts(io, o.projector ? 1.3f : 1.0f);
+    if (o.projector) {  // high contrast for a washed-out projector: white on black, bright frames
+        ImGuiStyle& style = ImGui::GetStyle();
+        style.Colors[ImGuiCol_Text] = ImVec4(1, 1, 1, 1);
+        style.Colors[ImGuiCol_WindowBg] = ImVec4(0, 0, 0, 1);
+        style.Colors[ImGuiCol_Border] = ImVec4(0.8f, 0.8f, 0.8f, 1);
+        style.FrameBorderSize = 1, style.WindowBorderSize = 2;
+    }
     ImGui_ImplSDL2_InitForOpenGL(w.window, w.gl);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 

@@ -16,6 +16,7 @@ struct AppOptions {
     std::optional<std::string> record_dir;     // headless: a PNG per step and the trace, then exit
     int width = 1280, height = 800;
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
+    bool projector = false;                    // fullscreen, larger type for the back row, high contrast
     std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };
 

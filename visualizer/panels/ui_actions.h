@@ -27,6 +27,7 @@ struct UiActions {
     std::optional<int> digit;                       // a number key: a question's choice when one is open, else its own use
     std::optional<std::string> answer;              // a question's choice, clicked
     bool next_chapter = false, previous_chapter = false, next_language = false;
+    bool toggle_keys = false, close_overlays = false;  // F1, Esc
 };
 
 struct PlaybackState {

@@ -101,6 +101,6 @@ std::string data_dir() {
     return HSR_SOURCE_DIR;
 }
 
-std::string default_lesson_path() { return data_dir() + "/lessons/01_cohen_sutherland.toml"; }
+std::string default_lesson_path() { return data_dir() + "/lessons/00_tour.toml"; }
 
 }  // namespace hsr::viz
