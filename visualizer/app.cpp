@@ -58,6 +58,7 @@
 #include "state/trace.h"
 #include "state/classroom.h"
 #include "state/file_watch.h"
+#include "gif_writer.h"
 
 namespace hsr::viz {
 namespace {
@@ -403,6 +404,25 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     timeline_panel(s, lp.playback, layout, actions);
 }
 
+// The window's pixels at half size (each 2×2 block averaged), RGBA, the top row first.
+std::vector<unsigned char> half_size_pixels(int w, int h) {
+    std::vector<unsigned char> full(std::size_t(w) * std::size_t(h) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, full.data());
+    const int hw = w / 2, hh = h / 2;
+    std::vector<unsigned char> half(std::size_t(hw) * std::size_t(hh) * 4);
+    for (int y = 0; y < hh; ++y)
+        for (int x = 0; x < hw; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = 0;
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx)  // GL's rows run bottom up: flip while shrinking
+                        sum += full[(std::size_t(h - 1 - (2 * y + dy)) * std::size_t(w) + std::size_t(2 * x + dx)) * 4 + std::size_t(c)];
+                half[(std::size_t(y) * std::size_t(hw) + std::size_t(x)) * 4 + std::size_t(c)] = static_cast<unsigned char>(sum / 4);
+            }
+    return half;
+}
+
 bool write_png(const std::string& path, int w, int h) {
     std::vector<unsigned char> pixels(std::size_t(w) * std::size_t(h) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -494,7 +514,10 @@ int run_app(const AppOptions& o) {
         Lessonplay lp;
         lp.load(o);
         lp.playback.playing = o.autoplay;
-        lp.animate = !o.screenshot && !o.record_dir;
+        lp.animate = !o.screenshot && !o.record_dir && !o.gif;
+        std::optional<GifWriter> gif;  // half the drawable's size (made at the first frame): enough for slides
+        bool gif_failed = false;
+        if (o.gif && lp.session) lp.session->seek(std::min(o.gif_from, lp.session->known()));
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool dragging = false, dragging_eye = false, running = true;
@@ -531,7 +554,7 @@ int run_app(const AppOptions& o) {
             }
             const std::uint64_t ticks = SDL_GetTicks64();
             // recording and screenshots take one Step per frame, so the same command gives the same picture
-            if ((o.record_dir || (o.screenshot && o.keys.empty())) && frame > 0) actions.step = true;
+            if ((o.record_dir || o.gif || (o.screenshot && o.keys.empty())) && frame > 0) actions.step = true;
             lp.update(actions, double(ticks - last_ticks) / 1000.0, o);
             last_ticks = ticks;
 
@@ -554,6 +577,14 @@ int run_app(const AppOptions& o) {
                 const bool done = !lp.session || lp.session->at_end() || frame >= 2000;
                 if (done) running = false;
             }
+            if (o.gif) {
+                if (!gif && !gif_failed) {
+                    gif.emplace(*o.gif, width / 2, height / 2, 50);
+                    if (!gif->ok()) std::fprintf(stderr, "hsrviz: cannot write %s\n", o.gif->c_str()), gif.reset(), gif_failed = true, exit_code = 1;
+                }
+                if (gif) gif->add_frame(half_size_pixels(width, height));
+                if (!gif || !lp.session || lp.session->at_end() || lp.session->cursor() >= o.gif_to) running = false;
+            }
             if (o.screenshot && frame >= std::uint64_t(o.frames)) {
                 if (lp.session)
                     std::printf("hsrviz: at step %zu of %zu%s, %s\n", lp.session->cursor(), lp.session->known(),
@@ -575,6 +606,12 @@ int run_app(const AppOptions& o) {
                 from_panels.speed || from_panels.reload || from_panels.move_eye)
                 lp.update(from_panels, 0, o);
         }
+        if (gif) {
+            const int frames = gif->frames();
+            if (!gif->close()) exit_code = 1;
+            std::printf("hsrviz: wrote %d frames to %s\n", frames, o.gif->c_str());
+        }
+        if (o.gif && !lp.session) exit_code = 1;
         if (o.record_dir) {
             std::printf("hsrviz: wrote %llu frames to %s/frame_*.png\n", static_cast<unsigned long long>(frame),
                         o.record_dir->c_str());

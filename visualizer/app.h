@@ -16,6 +16,8 @@ struct AppOptions {
     std::optional<std::string> record_dir;     // headless: a PNG per step and the trace, then exit
     int width = 1280, height = 800;
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
+    std::optional<std::string> gif;            // headless: an animated GIF of steps gif_from … gif_to, then exit
+    std::size_t gif_from = 0, gif_to = 60;
     bool projector = false;                    // fullscreen, larger type for the back row, high contrast
     std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };

@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
     cli.add_option("lesson", app.lesson_path, "Lesson or scene file to play (default: the Cohen–Sutherland lesson)");
     cli.add_option("--screenshot", app.screenshot, "Take one Step per frame, write a PNG of the window after --frames, exit");
     cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(CLI::PositiveNumber);
+    cli.add_option("--gif", app.gif, "Write an animated GIF of the window for steps --from to --to (one frame a step), then exit");
+    cli.add_option("--from", app.gif_from, "First step of the GIF (default 0)");
+    cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
     cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
     cli.add_option("--size", size, "Window size WxH")->check(CLI::Validator(
@@ -61,7 +64,7 @@ int main(int argc, char** argv) {
     const bool no_display = !std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER");
     if (no_display) {
         setenv("SDL_VIDEODRIVER", "offscreen", 1);
-        if (!app.screenshot && !app.record_dir) {
+        if (!app.screenshot && !app.record_dir && !app.gif) {
             app.record_dir = "hsrviz-out";
             const std::string trace_file = *app.record_dir + "/trace.jsonl";
             std::printf("hsrviz: no display found; playing %s headless, writing frames to %s/frame_*.png and the trace to %s\n",

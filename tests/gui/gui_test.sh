@@ -117,6 +117,11 @@ case "$case" in
     grep -q 'answered "000010": right' out.txt
     grep -q "score 1 of 2 answered, 3 questions, language de" out.txt
     "$png_check" q.png 1280 800
+    # an animated GIF of a step range, for slides: it decodes, with as many frames as were written
+    "$hsrviz" "$lesson" --gif cs.gif --from 2 --to 14 > gif.txt
+    frames=$(sed -n 's/^hsrviz: wrote \([0-9]*\) frames to cs.gif$/\1/p' gif.txt)
+    test "$frames" -ge 3
+    "$png_check" --gif-frames cs.gif "$frames"
     "$hsrviz" check "$lesson" > check.txt
     grep -q "ok .*01_cohen_sutherland.toml (64 events, 4 chapters, 3 questions)" check.txt
     printf 'title = "t"\nalgorithm = "cohen_sutherland"\nscene = "%s"\n[[chapters]]\nwhen = "Nope"\nnarration = "x"\n' \

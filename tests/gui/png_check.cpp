@@ -5,6 +5,8 @@
 #include <set>
 #include <string>
 
+#include <gif_lib.h>
+
 #include <stb/stb_image.h>
 
 // png_check --ids FILE WIDTH HEIGHT ID…: a 16-bit grey id image of that size holding exactly the ids listed
@@ -48,7 +50,24 @@ int same_ids(char** argv) {
     return differ <= std::atol(argv[4]) ? 0 : 1;
 }
 
+// An animated GIF decodes and has this many frames, each the size of the screen.
+int gif_frames(char** argv) {
+    int error = 0;
+    GifFileType* gif = DGifOpenFileName(argv[2], &error);
+    if (!gif || DGifSlurp(gif) == GIF_ERROR) {
+        std::fprintf(stderr, "png_check: %s does not decode as a GIF (%s)\n", argv[2], GifErrorString(gif ? gif->Error : error));
+        return 1;
+    }
+    const int frames = gif->ImageCount, want = std::atoi(argv[3]);
+    bool sizes = true;
+    for (int i = 0; i < frames; ++i) sizes = sizes && gif->SavedImages[i].ImageDesc.Width == gif->SWidth && gif->SavedImages[i].ImageDesc.Height == gif->SHeight;
+    std::printf("png_check: %s: %d frames of %dx%d\n", argv[2], frames, gif->SWidth, gif->SHeight);
+    DGifCloseFile(gif, &error);
+    return frames == want && frames > 0 && sizes ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
+    if (argc == 4 && std::string(argv[1]) == "--gif-frames") return gif_frames(argv);
     if (argc == 5 && std::string(argv[1]) == "--same-ids") return same_ids(argv);
     if (argc >= 5 && std::string(argv[1]) == "--ids") return check_ids(argc, argv);
     if (argc != 4) {
