@@ -59,6 +59,8 @@
 #include "state/classroom.h"
 #include "state/file_watch.h"
 #include "gif_writer.h"
+#include "cli/commands.h"
+#include "scene/save_scene.h"
 
 namespace hsr::viz {
 namespace {
@@ -77,6 +79,7 @@ struct Lessonplay {
     Classroom classroom;             // chapters, questions, language, score
     FileWatch watch;                 // the lesson and scene files: edited on disk, reloaded
     bool show_keys = false;          // F1
+    bool export_pending = false;     // E: written after the next frame is drawn
 
     void load(const AppOptions& o) {
         const std::size_t keep = session ? session->cursor() : 0;  // a reload stays at its step where it still exists
@@ -152,6 +155,7 @@ struct Lessonplay {
         if (a.previous_chapter) classroom.previous_chapter(*session), playback.playing = false;
         if (a.next_language) classroom.next_language();
         if (a.toggle_keys) show_keys = !show_keys;
+        if (a.export_all) export_pending = true;
         if (a.close_overlays) show_keys = false;
         if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
@@ -229,6 +233,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
         case SDLK_F1: a.toggle_keys = true; break;
+        case SDLK_e: a.export_all = true; break;
         case SDLK_ESCAPE: a.close_overlays = true; break;
         case SDLK_PAGEDOWN: a.next_chapter = true; break;
         case SDLK_PAGEUP: a.previous_chapter = true; break;
@@ -275,7 +280,8 @@ void keys_panel(const PanelLayout& l) {
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
         {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
         {"L", "narration language"},       {"3", "3D view / camera view / floor plan"},
-        {"F5", "reload the lesson (edits reload by themselves)"}, {"F1  Esc", "show / hide these keys"},
+        {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
+        {"F1  Esc", "show / hide these keys"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye in 2D"},
     };
     ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
@@ -431,6 +437,17 @@ bool write_png(const std::string& path, int w, int h) {
     return stbi_write_png(path.c_str(), w, h, 4, pixels.data(), w * 4) != 0;
 }
 
+// E: the window as a PNG, the lesson's trace, and its scene as TOML, into hsrviz-export/.
+void export_lesson(const Session& s, const AppOptions& o, int width, int height) {
+    const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
+    std::filesystem::create_directories(dir);
+    const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
+    const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
+    const bool ok = write_png(png, width, height) && run_trace({o.lesson_path, trace, o.algorithm}) == 0 &&
+                    static_cast<bool>(std::ofstream(scene) << algo::scene_toml(s.lesson().scene));
+    std::printf("hsrviz: %s %s, %s and %s\n", ok ? "exported" : "could not export all of", png.c_str(), trace.c_str(), scene.c_str());
+}
+
 // ── [SECTION] window, GL context and ImGui setup ────────────────────────────────────────────────────────────
 void load_fonts(ImGuiIO& io, float scale) {
     // Latin, Greek (ε), punctuation, arrows and maths (≤ ≥ → −): the characters our sentences use.
@@ -576,6 +593,10 @@ int run_app(const AppOptions& o) {
                 write_png(*o.record_dir + name, width, height);
                 const bool done = !lp.session || lp.session->at_end() || frame >= 2000;
                 if (done) running = false;
+            }
+            if (lp.export_pending && lp.session) {
+                lp.export_pending = false;
+                export_lesson(*lp.session, o, width, height);
             }
             if (o.gif) {
                 if (!gif && !gif_failed) {

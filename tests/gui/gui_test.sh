@@ -122,6 +122,13 @@ case "$case" in
     frames=$(sed -n 's/^hsrviz: wrote \([0-9]*\) frames to cs.gif$/\1/p' gif.txt)
     test "$frames" -ge 3
     "$png_check" --gif-frames cs.gif "$frames"
+    # E exports the window, the trace and the scene; the scene loads back and renders
+    "$hsrviz" "$lesson" --screenshot e.png --frames 4 --keys Right,E > e.txt
+    grep -q "hsrviz: exported hsrviz-export/01_cohen_sutherland-step-1.png" e.txt
+    "$png_check" hsrviz-export/01_cohen_sutherland-step-1.png 1280 800
+    test "$(wc -l < hsrviz-export/01_cohen_sutherland.jsonl)" -eq 64
+    "$hsrviz" trace hsrviz-export/01_cohen_sutherland-scene.toml --out again.jsonl --algorithm cohen_sutherland > /dev/null
+    cmp <(sed 's/"text".*//' again.jsonl) <(sed 's/"text".*//' hsrviz-export/01_cohen_sutherland.jsonl)
     "$hsrviz" check "$lesson" > check.txt
     grep -q "ok .*01_cohen_sutherland.toml (64 events, 4 chapters, 3 questions)" check.txt
     printf 'title = "t"\nalgorithm = "cohen_sutherland"\nscene = "%s"\n[[chapters]]\nwhen = "Nope"\nnarration = "x"\n' \

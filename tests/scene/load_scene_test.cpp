@@ -1,6 +1,8 @@
 // Scene files: a good one loads; a bad one gives one clear error with file, line, column and field.
+#include <filesystem>
 #include "catch.h"
 #include "scene/load_scene.h"
+#include "scene/save_scene.h"
 
 using namespace hsr::algo;
 
@@ -107,4 +109,39 @@ TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
 
 TEST_CASE("a missing scene file is a LoadError, not a crash", "[scene][errors]") {
     CHECK_THROWS_AS(load_scene("/nonexistent/scene.toml"), LoadError);
+}
+
+TEST_CASE("every scene saved to TOML loads back the same, to the last bit", "[scene][save]") {
+    int scenes = 0;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(HSR_SOURCE_DIR "/assets/scenes")) {
+        if (e.path().extension() != ".toml") continue;
+        INFO(e.path().string());
+        const Scene a = load_scene(e.path().string());
+        const Scene b = load_scene_text(e.path().string(), scene_toml(a));
+        CHECK(b.name == a.name);
+        CHECK(b.coordinates == a.coordinates);
+        CHECK(b.camera.eye == a.camera.eye);
+        CHECK(b.camera.target == a.camera.target);
+        CHECK(b.camera.fov_y == a.camera.fov_y);
+        CHECK(b.camera.near == a.camera.near);
+        REQUIRE(b.polygons.size() == a.polygons.size());
+        for (std::size_t i = 0; i < a.polygons.size(); ++i) {
+            CHECK(b.polygons[i].id == a.polygons[i].id);
+            CHECK(b.polygons[i].color == a.polygons[i].color);
+            CHECK(b.polygons[i].vertices == a.polygons[i].vertices);
+            CHECK(b.polygons[i].opacity == a.polygons[i].opacity);
+        }
+        REQUIRE(b.segments.size() == a.segments.size());
+        for (std::size_t i = 0; i < a.segments.size(); ++i) CHECK((b.segments[i].a == a.segments[i].a && b.segments[i].b == a.segments[i].b));
+        REQUIRE(b.points.size() == a.points.size());
+        REQUIRE(b.floor_plan.cells.size() == a.floor_plan.cells.size());
+        for (std::size_t i = 0; i < a.floor_plan.cells.size(); ++i) CHECK(b.floor_plan.cells[i].outline == a.floor_plan.cells[i].outline);
+        REQUIRE(b.floor_plan.portals.size() == a.floor_plan.portals.size());
+        for (std::size_t i = 0; i < a.floor_plan.portals.size(); ++i) {
+            CHECK(b.floor_plan.portals[i].from == a.floor_plan.portals[i].from);
+            CHECK(b.floor_plan.portals[i].top == a.floor_plan.portals[i].top);
+        }
+        ++scenes;
+    }
+    CHECK(scenes > 20);
 }

@@ -28,6 +28,7 @@ struct UiActions {
     std::optional<std::string> answer;              // a question's choice, clicked
     bool next_chapter = false, previous_chapter = false, next_language = false;
     bool toggle_keys = false, close_overlays = false;  // F1, Esc
+    bool export_all = false;                           // E: the window as PNG, the trace, the scene as TOML
 };
 
 struct PlaybackState {
