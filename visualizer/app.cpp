@@ -157,6 +157,19 @@ struct Lessonplay {
         if (a.toggle_keys) show_keys = !show_keys;
         if (a.export_all) export_pending = true;
         if (a.close_overlays) show_keys = false;
+        if (auto* bsp = dynamic_cast<BspSession*>(session.get())) {  // editing a 2D scene
+            bool edited = false;
+            if (a.move_vertex) bsp->move_vertex(a.move_vertex->input, a.move_vertex->vertex, a.move_vertex->to), edited = true;
+            if (a.undo) edited |= bsp->undo();
+            if (a.redo) edited |= bsp->redo();
+            if (edited) classroom.attach(*session);
+            if (a.save_scene) {
+                const std::string file = "hsrviz-export/" + std::filesystem::path(o.lesson_path).stem().string() + "-edited.toml";
+                std::filesystem::create_directories("hsrviz-export");
+                const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(bsp->edited_scene()));
+                std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
+            }
+        }
         if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
             if (auto* portals = dynamic_cast<PortalRenderSession*>(session.get())) portals->move_eye(algo::plan_point(*a.move_eye));
@@ -234,6 +247,11 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_F5: a.reload = true; break;
         case SDLK_F1: a.toggle_keys = true; break;
         case SDLK_e: a.export_all = true; break;
+        case SDLK_z:
+            if (e.key.keysym.mod & KMOD_CTRL) (shift ? a.redo : a.undo) = true;
+            break;
+        case SDLK_y: if (e.key.keysym.mod & KMOD_CTRL) a.redo = true; break;
+        case SDLK_s: a.save_scene = true; break;
         case SDLK_ESCAPE: a.close_overlays = true; break;
         case SDLK_PAGEDOWN: a.next_chapter = true; break;
         case SDLK_PAGEUP: a.previous_chapter = true; break;
@@ -263,6 +281,21 @@ std::optional<glm::dvec3> on_floor_plan(const Renderer& r, float x, float y) {
     return from + t * (to - from);
 }
 
+// The input vertex of a 2D BSP lesson within a few pixels of a window point (so a drag moves it), if any.
+std::optional<std::pair<std::size_t, std::size_t>> vertex_near(const Renderer& r, const Session* s, float x, float y) {
+    const auto* bsp = dynamic_cast<const BspSession*>(s);
+    if (!bsp || !bsp->view().two_d) return std::nullopt;
+    const auto& inputs = bsp->job().polygons;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        for (std::size_t k = 0; k < inputs[i].vertices.size(); ++k) {
+            const glm::vec4 c = r.view_projection * glm::vec4(glm::vec3(inputs[i].vertices[k]), 1);
+            if (c.w <= 0) continue;
+            const float sx = (c.x / c.w * 0.5f + 0.5f) * r.view_w, sy = (0.5f - c.y / c.w * 0.5f) * r.view_h;
+            if (std::hypot(sx - x, sy - y) < 10) return std::pair{i, k};
+        }
+    return std::nullopt;
+}
+
 // Whether a window point is within a few pixels of the eye of a 2D BSP lesson (so a drag moves the eye).
 bool near_the_eye(const Renderer& r, const Session* s, float x, float y) {
     const auto* bsp = dynamic_cast<const BspSession*>(s);
@@ -281,8 +314,8 @@ void keys_panel(const PanelLayout& l) {
         {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
         {"L", "narration language"},       {"3", "3D view / camera view / floor plan"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
-        {"F1  Esc", "show / hide these keys"},
-        {"drag, wheel", "orbit and zoom the 3D view; drag an eye in 2D"},
+        {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"},
+        {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
     };
     ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
@@ -538,6 +571,8 @@ int run_app(const AppOptions& o) {
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool dragging = false, dragging_eye = false, running = true;
+        std::int64_t dragging_input = -1;  // the vertex of a 2D scene being dragged: its input (−1: none) …
+        std::size_t dragging_corner = 0;   // … and which of its vertices
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
         std::size_t next_key = 0;
@@ -560,11 +595,16 @@ int run_app(const AppOptions& o) {
                 if (!io.WantCaptureMouse) {  // drag the eye of a 2D lesson, or orbit and zoom the 3D view
                     if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
                         dragging_eye = near_the_eye(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
-                        dragging = !dragging_eye;
+                        const auto v = dragging_eye ? std::nullopt : vertex_near(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
+                        dragging_input = v ? std::int64_t(v->first) : -1, dragging_corner = v ? v->second : 0;
+                        dragging = !dragging_eye && dragging_input < 0;
                     }
                     if (e.type == SDL_MOUSEWHEEL) lp.camera.zoom(float(e.wheel.y));
                 }
-                if (e.type == SDL_MOUSEBUTTONUP) dragging = dragging_eye = false;
+                if (e.type == SDL_MOUSEBUTTONUP) dragging = dragging_eye = false, dragging_input = -1;
+                if (e.type == SDL_MOUSEMOTION && dragging_input >= 0)
+                    if (const auto at = on_floor_plan(renderer, float(e.motion.x), float(e.motion.y)))
+                        actions.move_vertex = UiActions::VertexMove{std::size_t(dragging_input), dragging_corner, *at};
                 if (e.type == SDL_MOUSEMOTION && dragging) lp.camera.orbit(float(e.motion.xrel), float(e.motion.yrel));
                 if (e.type == SDL_MOUSEMOTION && dragging_eye)
                     actions.move_eye = on_floor_plan(renderer, float(e.motion.x), float(e.motion.y));

@@ -4,6 +4,8 @@
 
 #include "bsp/bsp_scene.h"
 #include "catch.h"
+#include "scene/load_scene.h"
+#include "scene/save_scene.h"
 #include "state/bsp_session.h"
 #include "state/bsp_view.h"
 
@@ -106,4 +108,33 @@ TEST_CASE("moving the eye reruns the traversal from the new eye and keeps the st
         CHECK(session.view().polygons[std::size_t(order[k])].drawn == int(k + 1));
     CHECK(session.view().eye == Vec3(0.5, 3, 0));
     CHECK(session.view().nodes[0].eye_side == Side::front);  // above the line y = 1 now
+}
+
+TEST_CASE("dragging a segment's end reruns the build, keeps the step, undoes, redoes and saves", "[state][bsp][editing]") {
+    BspSession session(load_lesson(data_dir() + "/lessons/04_bsp_build.toml"));
+    const BspJob original = session.job();
+    session.seek(5);
+    const Vec3 to = original.polygons[0].vertices[1] + Vec3(0.5, 2.0, 0);
+    session.move_vertex(0, 1, to + Vec3(0, 0, 3));  // a 2D scene: z is dropped
+    CHECK(session.job().polygons[0].vertices[1] == to);
+    CHECK(session.cursor() == 5);
+    session.seek_end();
+    // the machine ran on the edited input: its first polygon is where the drag left it
+    const BspTree tree = build_bsp(session.job().polygons, session.job().options).run_to_end();
+    CHECK(tree.polygons[0].vertices[1] == to);
+    // one more move of the same vertex is the same drag: one undo brings the original back
+    session.move_vertex(0, 1, to + Vec3(0.1, 0, 0));
+    CHECK(session.undo());
+    CHECK(session.job().polygons[0].vertices == original.polygons[0].vertices);
+    CHECK_FALSE(session.undo());
+    CHECK(session.redo());
+    CHECK(session.job().polygons[0].vertices[1] == to + Vec3(0.1, 0, 0));
+    // the edited scene saves and loads back with the moved segment
+    const Scene saved = load_scene_text("edited.toml", scene_toml(session.edited_scene()));
+    const auto seg = std::find_if(saved.segments.begin(), saved.segments.end(), [&](const SceneSegment& s) { return s.id == original.polygons[0].id; });
+    REQUIRE(seg != saved.segments.end());
+    CHECK(Vec3(seg->b) == to + Vec3(0.1, 0, 0));
+    // a segment dragged to no length is not an edit
+    session.move_vertex(0, 1, session.job().polygons[0].vertices[0]);
+    CHECK(session.job().polygons[0].vertices[1] == to + Vec3(0.1, 0, 0));
 }

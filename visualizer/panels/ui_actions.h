@@ -29,6 +29,12 @@ struct UiActions {
     bool next_chapter = false, previous_chapter = false, next_language = false;
     bool toggle_keys = false, close_overlays = false;  // F1, Esc
     bool export_all = false;                           // E: the window as PNG, the trace, the scene as TOML
+    struct VertexMove {
+        std::size_t input, vertex;
+        glm::dvec3 to;  // world space
+    };
+    std::optional<VertexMove> move_vertex;             // a 2D scene's vertex dragged here
+    bool undo = false, redo = false, save_scene = false;  // Ctrl+Z, Ctrl+Y, S
 };
 
 struct PlaybackState {

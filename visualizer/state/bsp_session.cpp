@@ -78,7 +78,57 @@ BspSession::BspSession(Lesson lesson, PlayerOptions options)
 void BspSession::move_eye(Vec3 eye) {
     if (view().two_d) eye.z = 0;
     job_.eye = eye;
-    replace_player(PlayerType(bsp_scene(job_), initial_view(job_), options_));
+    rerun();
+}
+
+void BspSession::rerun() { replace_player(PlayerType(bsp_scene(job_), initial_view(job_), options_)); }
+
+void BspSession::move_vertex(std::size_t input, std::size_t vertex, Vec3 to) {
+    if (input >= job_.polygons.size() || vertex >= job_.polygons[input].vertices.size()) return;
+    if (view().two_d) to.z = 0;
+    algo::BspJob edited = job_;
+    edited.polygons[input].vertices[vertex] = to;
+    if (algo::measure(edited.polygons[input].vertices) <= 1e-9) return;  // a segment of no length is not an edit
+    // a drag is many small moves: one undo step for consecutive moves of the same vertex
+    const bool same_drag = !undo_.empty() && last_moved_ == std::pair{input, vertex};
+    if (!same_drag) undo_.push_back(job_);
+    last_moved_ = {input, vertex};
+    redo_.clear();
+    job_ = std::move(edited);
+    rerun();
+}
+
+bool BspSession::undo() {
+    if (undo_.empty()) return false;
+    redo_.push_back(std::move(job_));
+    job_ = std::move(undo_.back());
+    undo_.pop_back();
+    last_moved_.reset();
+    rerun();
+    return true;
+}
+
+bool BspSession::redo() {
+    if (redo_.empty()) return false;
+    undo_.push_back(std::move(job_));
+    job_ = std::move(redo_.back());
+    redo_.pop_back();
+    last_moved_.reset();
+    rerun();
+    return true;
+}
+
+algo::Scene BspSession::edited_scene() const {
+    algo::Scene s = lesson().scene;
+    s.camera.eye = job_.eye;
+    for (const algo::BspInput& in : job_.polygons) {
+        for (auto& seg : s.segments)
+            if (seg.id == in.id && in.vertices.size() == 2) seg.a = glm::dvec4(in.vertices[0], 1.0), seg.b = glm::dvec4(in.vertices[1], 1.0);
+        for (auto& poly : s.polygons)
+            if (poly.id == in.id && in.vertices.size() == poly.vertices.size())
+                for (std::size_t k = 0; k < in.vertices.size(); ++k) poly.vertices[k] = glm::dvec4(in.vertices[k], 1.0);
+    }
+    return s;
 }
 
 std::span<const std::string_view> BspSession::pseudocode() const {

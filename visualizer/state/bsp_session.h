@@ -2,6 +2,10 @@
 // The build lesson starts at the first event; the traversal lesson starts where the tree is built.
 #pragma once
 
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include "state/bsp_view.h"
 #include "state/session.h"
 
@@ -25,6 +29,14 @@ public:
     // Moves the eye and reruns the machine (the build is the same; the traversal follows the new eye), keeping
     // the cursor at the same step. In a 2D scene the eye stays in the plane z = 0.
     void move_eye(algo::Vec3 eye);
+    // Scene editing (2D lessons): move one end of an input segment, and undo / redo such edits. Each reruns the
+    // machine from the edited input, keeping the cursor at the same step where that step still exists.
+    void move_vertex(std::size_t input, std::size_t vertex, algo::Vec3 to);
+    bool undo();
+    bool redo();
+    const algo::BspJob& job() const { return job_; }
+    // The lesson's scene as edited (its segments or polygons moved where the edits put them; the eye where it is).
+    algo::Scene edited_scene() const;
 
 private:
     std::string describe_event(const algo::BspEvent& e) const override;
@@ -34,6 +46,9 @@ private:
     Stats stats_;
     algo::BspJob job_;
     PlayerOptions options_;
+    std::vector<algo::BspJob> undo_, redo_;  // earlier and undone inputs
+    std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // the vertex the last edit moved
+    void rerun();
 };
 
 }  // namespace hsr::viz
