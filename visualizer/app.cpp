@@ -86,7 +86,8 @@ struct Lessonplay {
         watch.watch({o.lesson_path});
         try {
             const Lesson lesson = load_lesson(o.lesson_path, o.algorithm);
-            if (lesson.scene.source != o.lesson_path && std::filesystem::exists(lesson.scene.source))
+            std::error_code ec;
+            if (lesson.scene.source != o.lesson_path && std::filesystem::is_regular_file(lesson.scene.source, ec))
                 watch.watch({o.lesson_path, lesson.scene.source});
             session = make_session(lesson);
             session->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length

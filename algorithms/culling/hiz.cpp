@@ -93,7 +93,11 @@ BoxOnScreen box_on_screen(const Aabb& box, const Scene& scene, const ZBufferOpti
         return s;
     }
     // every pixel whose centre the box's projection could cover, and one more each way for the rasteriser's snapping
-    s.footprint = {int(std::floor(x0)) - 1, int(std::floor(y0)) - 1, int(std::ceil(x1)) + 1, int(std::ceil(y1)) + 1};
+    // (clamped to just outside the screen first: a box far off to one side projects to coordinates no int holds)
+    const auto pixel = [](double v, int size) { return int(std::clamp(v, -2.0, double(size) + 2)); };
+    s.footprint = {pixel(std::floor(x0), o.viewport.width) - 1, pixel(std::floor(y0), o.viewport.height) - 1,
+                   pixel(std::ceil(x1), o.viewport.width) + 1, pixel(std::ceil(y1), o.viewport.height) + 1};
+    if (!(x0 <= x1 && y0 <= y1)) s.footprint = {0, 0, o.viewport.width, o.viewport.height};  // NaN: the whole screen
     s.near = std::uint32_t(code_of_window_depth(o.format, std::max(z, 0.0), o.range, o.perspective));
     s.near = s.near > 0 ? s.near - 1 : 0;  // one code nearer: rounding of the corners' depths must not hide the box
     return s;

@@ -99,7 +99,7 @@ Steps<RayCastEvent, Hit> walk_grid(const Grid* grid, const Primitives* prims, co
     Vec3 t_max, t_delta;
     for (int a = 0; a < 3; ++a) {
         const double o = ray.origin[a], d = ray.direction[a], entry = o + span->enter * d;
-        cell[a] = std::clamp(int(std::floor((entry - grid->box.lo[a]) / grid->size[a])), 0, grid->cells[a] - 1);
+        cell[a] = grid->cell_of(entry, a);
         step[a] = d > 0 ? 1 : d < 0 ? -1 : 0;
         const double boundary = grid->box.lo[a] + (cell[a] + (d > 0 ? 1 : 0)) * grid->size[a];
         t_max[a] = d == 0 ? std::numeric_limits<double>::infinity() : (boundary - o) / d;  // next boundary on axis a

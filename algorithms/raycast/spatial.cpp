@@ -90,8 +90,8 @@ Grid build_grid(const std::vector<std::vector<Vec3>>& polygons, int per_axis) {
         const Box b = box_of(polygons[p], pad);
         glm::ivec3 lo, hi;
         for (int a = 0; a < 3; ++a) {
-            lo[a] = std::clamp(int(std::floor((b.lo[a] - g.box.lo[a]) / g.size[a])), 0, g.cells[a] - 1);
-            hi[a] = std::clamp(int(std::floor((b.hi[a] - g.box.lo[a]) / g.size[a])), 0, g.cells[a] - 1);
+            lo[a] = g.cell_of(b.lo[a], a);
+            hi[a] = g.cell_of(b.hi[a], a);
         }
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)

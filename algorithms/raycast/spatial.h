@@ -3,6 +3,8 @@
 // that a hit on a cell face is listed on both sides) overlaps it.
 #pragma once
 
+#include <cmath>
+
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -32,6 +34,13 @@ struct Grid {
     std::vector<std::vector<std::uint32_t>> lists;  // primitive indices per cell, x fastest
     const std::vector<std::uint32_t>& at(glm::ivec3 c) const {
         return lists[std::size_t((c.z * cells.y + c.y) * cells.x + c.x)];
+    }
+    // The cell along axis a holding coordinate v, clamped to the grid (and 0 for NaN): the conversion to int is
+    // made only once the value is in range, so that huge or infinite coordinates are no undefined behaviour.
+    int cell_of(double v, int a) const {
+        const double t = std::floor((v - box.lo[a]) / size[a]);
+        if (!(t > 0)) return 0;
+        return t >= double(cells[a] - 1) ? cells[a] - 1 : int(t);
     }
 };
 // per_axis = 0 picks about 2·∛n cells per axis (at most 64).

@@ -96,3 +96,14 @@ TEST_CASE("ray casting rejects NaN input by polygon and vertex", "[raycast][extr
     s.polygons[1].vertices[2].y = std::nan("");
     CHECK_THROWS_WITH(ray_cast(s, {.viewport = {4, 4}}).run_to_end(), Catch::Contains("polygon 2 vertex 2"));
 }
+
+TEST_CASE("coordinates near the double limit give a result, not undefined behaviour (found by fuzz_geometry)", "[raycast][extremes]") {
+    Scene s;
+    s.camera = {.eye = {0, 0, 6}, .target = {0, 0, 0}, .fov_y = 50, .near = 0.5, .far = 30};
+    s.polygons.push_back({1, {}, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {0, 1, 0, 1}}});
+    s.polygons.push_back({2, {}, {{1e300, 0, 0, 1}, {1e300, 1, 0, 1}, {-1e300, 0, 1e-310, 1}}});
+    for (const Acceleration a : {Acceleration::grid, Acceleration::octree}) {
+        const RayCastResult r = ray_cast(s, {.viewport = {8, 6}, .acceleration = a, .detail = RayDetail::ray}).run_to_end();
+        CHECK(r.image.width == 8);
+    }
+}

@@ -95,3 +95,8 @@ TEST_CASE("a file edited on disk is noticed once, and not before half a second",
     std::filesystem::remove(file);
     CHECK(watch.changed(1.0));        // gone (being rewritten) is a change too
 }
+
+TEST_CASE("a lesson naming a scene too long for the file system is an error, not a crash (found by fuzz_lesson)", "[lesson][errors]") {
+    const std::string text = "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" + std::string(5000, 'x') + "\"\n";
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/long.toml", text), Catch::Contains("long.toml:3") && Catch::Contains("no such file"));
+}

@@ -26,7 +26,13 @@ algo::AlgorithmInfo algorithm_named(const algo::TomlReader* r, const toml::node*
 }  // namespace
 
 Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm) {
-    const algo::TomlReader r(path);
+    return read_lesson(algo::TomlReader(path), std::move(algorithm));
+}
+
+Lesson load_lesson_text(const std::string& path, std::string_view text) { return read_lesson(algo::TomlReader(path, text), std::nullopt); }
+
+Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorithm) {
+    const std::string& path = r.path();
     const toml::table& root = r.root();
     Lesson lesson;
     lesson.source = path;
@@ -84,8 +90,9 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
         r.fail(root.get("scene"), "scene", e.what());
     }
     const auto scene_path = std::filesystem::path(path).parent_path() / scene;
-    if (!std::filesystem::exists(scene_path))
-        r.fail(root.get("scene"), "scene", "no such file: " + scene_path.string());
+    std::error_code ec;  // a name too long for the file system is an error to report, not an exception to crash on
+    if (!std::filesystem::is_regular_file(scene_path, ec))
+        r.fail(root.get("scene"), "scene", "no such file: " + scene_path.string() + (ec ? " (" + ec.message() + ")" : ""));
     lesson.scene = algo::load_scene(scene_path.lexically_normal().string());
     return lesson;
 }

@@ -24,6 +24,7 @@
 #include "state/chapters.h"
 #include "core/screen_polygon.h"
 #include "scene/scene.h"
+#include "scene/toml_reader.h"
 #include "zbuffer/depth_format.h"
 
 namespace hsr::viz {
@@ -49,6 +50,9 @@ algo::Scene grid_scene(const Lesson& lesson);
 
 // Loads a lesson or a scene file; throws algo::LoadError naming file, line, column and field.
 Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm = std::nullopt);
+// The same from text, as if read from `path` (for tests and the fuzzer).
+Lesson load_lesson_text(const std::string& path, std::string_view text);
+Lesson read_lesson(const algo::TomlReader& reader, std::optional<std::string> algorithm);
 
 // Where lessons/ and assets/ are: $HSRVIZ_DATA, else the source tree the program was built from.
 std::string data_dir();
