@@ -59,6 +59,16 @@ std::vector<std::pair<Aabb, std::vector<std::uint32_t>>> octree_split(const Hier
 
 }  // namespace
 
+std::vector<Aabb> polygon_boxes(const Scene& s) {
+    std::vector<Aabb> out;
+    for (const auto& p : s.polygons) {
+        Aabb b;
+        for (const auto& v : p.vertices) b.add(Vec3(v));
+        out.push_back(b);
+    }
+    return out;
+}
+
 int box_side(const Aabb& b, const Plane& p) {
     const Vec3 pv(p.n.x >= 0 ? b.hi.x : b.lo.x, p.n.y >= 0 ? b.hi.y : b.lo.y, p.n.z >= 0 ? b.hi.z : b.lo.z);
     const Vec3 nv(p.n.x >= 0 ? b.lo.x : b.hi.x, p.n.y >= 0 ? b.lo.y : b.hi.y, p.n.z >= 0 ? b.lo.z : b.hi.z);

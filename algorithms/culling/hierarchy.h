@@ -45,6 +45,8 @@ struct HierarchyOptions {
 };
 
 Steps<HierarchyEvent, Hierarchy> build_hierarchy(std::vector<Aabb> boxes, HierarchyOptions options = {});
+// The box of each of the scene's polygons, in order: what a hierarchy over the scene is built from.
+std::vector<Aabb> polygon_boxes(const Scene& scene);
 
 struct HierarchyCullOptions {
     bool frustum = true;

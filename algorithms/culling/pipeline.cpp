@@ -16,15 +16,6 @@ using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-std::vector<Aabb> boxes_of(const Scene& s) {
-    std::vector<Aabb> out;
-    for (const auto& p : s.polygons) {
-        Aabb b;
-        for (const auto& v : p.vertices) b.add(Vec3(v));
-        out.push_back(b);
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -68,7 +59,7 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
     const ZBufferOptions zo = zbuffer_options(scene, o.viewport, o.format, EventDetail::polygon);
     // The hierarchy the stages walk: pre-processing, built once
     const auto t_hierarchy = Clock::now();
-    const Hierarchy hierarchy = build_hierarchy(boxes_of(scene), {.kind = o.hierarchy}).run_to_end();
+    const Hierarchy hierarchy = build_hierarchy(polygon_boxes(scene), {.kind = o.hierarchy}).run_to_end();
     out.hierarchy_milliseconds = ms_since(t_hierarchy);
     bool rendered = false;
     for (const Stage stage : all_stages) {

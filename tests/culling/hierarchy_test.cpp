@@ -17,15 +17,6 @@ using namespace hsr::algo;
 
 namespace {
 
-std::vector<Aabb> boxes_of(const Scene& s) {
-    std::vector<Aabb> out;
-    for (const auto& p : s.polygons) {
-        Aabb b;
-        for (const auto& v : p.vertices) b.add(Vec3(v));
-        out.push_back(b);
-    }
-    return out;
-}
 
 // A closed box mesh (6 quads, wound outwards) of the given size, rotated about z by `angle`.
 std::vector<std::vector<Vec3>> box_mesh(Vec3 half, double angle) {
@@ -71,7 +62,7 @@ TEST_CASE("bounding volumes enclose their points, and a long rotated rod shows t
 
 TEST_CASE("a BVH holds every primitive in one leaf, each box holding what is below it", "[culling][bvh]") {
     const Scene s = random_triangles({.count = 500, .seed = 3, .size = 0.5});
-    const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = HierarchyKind::bvh, .max_primitives = 4}).run_to_end();
+    const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::bvh, .max_primitives = 4}).run_to_end();
     std::vector<int> seen(h.boxes.size(), 0);
     for (const auto& n : h.nodes) {
         for (std::uint32_t p : n.primitives) {
@@ -88,7 +79,7 @@ TEST_CASE("a BVH holds every primitive in one leaf, each box holding what is bel
 
 TEST_CASE("an octree splits a cell in eight until few primitives or the smallest cell, keeping straddlers", "[culling][octree]") {
     const Scene s = random_triangles({.count = 500, .seed = 3, .size = 0.5});
-    const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = HierarchyKind::octree, .max_primitives = 8}).run_to_end();
+    const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::octree, .max_primitives = 8}).run_to_end();
     std::size_t held = 0;
     for (const auto& n : h.nodes) {
         held += n.primitives.size();
@@ -120,7 +111,7 @@ TEST_CASE("hierarchical frustum culling is conservative and inherits clip flags"
         s.camera.eye = {u(rng), u(rng) / 2, u(rng) + 8};
         s.camera.target = {u(rng) / 3, 0, u(rng) / 3};
         s.camera.fov_y = 40;
-        const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = kind}).run_to_end();
+        const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = kind}).run_to_end();
         const HierarchyCull c = cull_hierarchy(&h, s.camera).run_to_end();
         const std::vector<Plane> f = view_frustum(s.camera);
         int missed = 0, kept = 0, unlike_own_box = 0;
@@ -145,7 +136,7 @@ TEST_CASE("hierarchical frustum culling is conservative and inherits clip flags"
 TEST_CASE("detail culling leaves out only nodes below its threshold, and nothing at threshold 0", "[culling][detail]") {
     Scene s = random_triangles({.count = 800, .seed = 9, .size = 0.3, .far = 60});
     s.camera.eye = {0, 0, 30};
-    const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = HierarchyKind::octree}).run_to_end();
+    const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::octree}).run_to_end();
     auto m = cull_hierarchy(&h, s.camera, {.detail_pixels = 40, .viewport_height = 480});
     int small = 0;
     for (const auto& e : m)

@@ -12,15 +12,6 @@ using namespace hsr::algo;
 
 namespace {
 
-std::vector<Aabb> boxes_of(const Scene& s) {
-    std::vector<Aabb> out;
-    for (const auto& p : s.polygons) {
-        Aabb b;
-        for (const auto& v : p.vertices) b.add(Vec3(v));
-        out.push_back(b);
-    }
-    return out;
-}
 
 // Random triangles behind a wall that fills the view, the wall listed last.
 Scene behind_a_wall(std::size_t count) {
@@ -71,7 +62,7 @@ TEST_CASE("each pyramid texel holds the farthest depth below it, at any size", "
 TEST_CASE("Cull_or_Render gives the z-buffer's image and leaves out what a wall hides", "[culling][hiz]") {
     const Viewport vp = GENERATE(Viewport{64, 48}, Viewport{7, 5}, Viewport{1, 1});
     const Scene s = behind_a_wall(600);
-    const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = HierarchyKind::octree, .max_primitives = 4}).run_to_end();
+    const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::octree, .max_primitives = 4}).run_to_end();
     const ZBufferOptions o = zbuffer_options(s, vp, DepthFormat::int24, EventDetail::polygon);
     const HizResult hiz = hiz_render(&s, &h, o).run_to_end();
     const FrameDepth all = zbuffer_fill(project_polygons(s, vp), o).run_to_end();
@@ -86,7 +77,7 @@ TEST_CASE("Cull_or_Render gives the z-buffer's image and leaves out what a wall 
 TEST_CASE("Cull_or_Render on random scenes equals the z-buffer", "[culling][hiz]") {
     for (std::uint32_t seed = 1; seed <= 4; ++seed) {
         const Scene s = random_triangles({.count = 400, .seed = seed, .size = 1.0});
-        const Hierarchy h = build_hierarchy(boxes_of(s), {.kind = seed % 2 ? HierarchyKind::octree : HierarchyKind::bvh}).run_to_end();
+        const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = seed % 2 ? HierarchyKind::octree : HierarchyKind::bvh}).run_to_end();
         const ZBufferOptions o = zbuffer_options(s, {80, 60}, DepthFormat::int24, EventDetail::polygon);
         const HizResult hiz = hiz_render(&s, &h, o).run_to_end();
         const FrameDepth all = zbuffer_fill(project_polygons(s, {80, 60}), o).run_to_end();

@@ -115,13 +115,7 @@ TEST_CASE("the partial occlusion problem: hidden by two occluders together, cull
         return s;
     };
     const auto cull = [](const Scene& s) {
-        std::vector<Aabb> boxes;
-        for (const auto& p : s.polygons) {
-            Aabb b;
-            for (const auto& v : p.vertices) b.add(Vec3(v));
-            boxes.push_back(b);
-        }
-        const Hierarchy h = build_hierarchy(boxes, {.kind = HierarchyKind::bvh, .max_primitives = 2}).run_to_end();
+        const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::bvh, .max_primitives = 2}).run_to_end();
         return occlusion_cull(&s, &h, {.max_occluders = 4}).run_to_end();
     };
     const Scene two = scene_with({{-4, 0}, {0, 4}});

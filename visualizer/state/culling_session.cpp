@@ -14,15 +14,6 @@ namespace {
 
 using namespace hsr::algo;
 
-std::vector<Aabb> boxes_of(const Scene& s) {
-    std::vector<Aabb> out;
-    for (const auto& p : s.polygons) {
-        Aabb b;
-        for (const auto& v : p.vertices) b.add(Vec3(v));
-        out.push_back(b);
-    }
-    return out;
-}
 
 void mark_subtree(CullingView& v, std::uint32_t node, NodeMark mark, PrimitiveMark prims) {
     const Hierarchy& h = v.world->hierarchy;
@@ -49,7 +40,7 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     w->scene = lesson.scene;
     w->scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
     const HierarchyKind kind = lesson.algorithm.variant == 0 ? HierarchyKind::bvh : HierarchyKind::octree;
-    w->hierarchy = build_hierarchy(boxes_of(w->scene), {.kind = kind}).run_to_end();
+    w->hierarchy = build_hierarchy(polygon_boxes(w->scene), {.kind = kind}).run_to_end();
     w->zbuffer = zbuffer_options(w->scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
     w->detail_pixels = 4;
     w->frustum = view_frustum(w->scene.camera);
