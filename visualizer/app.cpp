@@ -577,6 +577,8 @@ int run_app(const AppOptions& o) {
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
         std::size_t next_key = 0;
+        std::vector<double> frame_ms;  // --frame-log
+        std::uint64_t frame_start = SDL_GetPerformanceCounter();
         while (running) {
             UiActions actions;
             SDL_Event e;
@@ -662,11 +664,23 @@ int run_app(const AppOptions& o) {
                 running = false;
             }
             SDL_GL_SwapWindow(w.window);
+            if (o.frame_log) {  // from the start of one frame to the start of the next
+                const std::uint64_t now = SDL_GetPerformanceCounter();
+                frame_ms.push_back(1000.0 * double(now - frame_start) / double(SDL_GetPerformanceFrequency()));
+                frame_start = now;
+            }
             // carry the panels' requests into the next update
             if (from_panels.toggle_play || from_panels.step || from_panels.step_back || from_panels.micro_step ||
                 from_panels.micro_step_back || from_panels.to_start || from_panels.to_end || from_panels.seek ||
                 from_panels.speed || from_panels.reload || from_panels.move_eye)
                 lp.update(from_panels, 0, o);
+        }
+        if (o.frame_log && !frame_ms.empty()) {
+            std::ofstream log(*o.frame_log);
+            for (double ms : frame_ms) log << ms << '\n';
+            std::vector<double> sorted = frame_ms;
+            std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+            std::printf("hsrviz: %zu frames, median %.2f ms, written to %s\n", frame_ms.size(), sorted[sorted.size() / 2], o.frame_log->c_str());
         }
         if (gif) {
             const int frames = gif->frames();

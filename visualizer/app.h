@@ -18,6 +18,7 @@ struct AppOptions {
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
     std::optional<std::string> gif;            // headless: an animated GIF of steps gif_from … gif_to, then exit
     std::size_t gif_from = 0, gif_to = 60;
+    std::optional<std::string> frame_log;      // one line per frame: its time in ms (and the median printed at exit)
     bool projector = false;                    // fullscreen, larger type for the back row, high contrast
     std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     cli.add_option("--size", size, "Window size WxH")->check(CLI::Validator(
         [](std::string& s) { return std::sscanf(s.c_str(), "%*dx%*d") == 0 && s.find('x') != std::string::npos ? "" : "expected WxH"; }, "WxH"));
     cli.add_flag("--play", app.autoplay, "Start playing at once");
+    cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
     cli.add_flag("--projector", app.projector, "Projector mode: fullscreen, larger type for the back row, high contrast (F1: keys)");
     cli.add_option("--keys", app.keys, "Keys to press, one per frame (Space, Right, Shift+Right, Left, Home, End, F5); "
                                        "with --screenshot, the keys alone move the player")

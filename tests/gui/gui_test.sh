@@ -112,7 +112,9 @@ case "$case" in
     grep -q '"kind":"PixelMerged"' 12_z_merge.jsonl ;;
   classroom)  # chapters and questions: answer wrongly, then rightly, with number keys; switch language; check
     lesson="$src/lessons/01_cohen_sutherland.toml"
-    "$hsrviz" "$lesson" --screenshot q.png --frames 10 --keys PageDown,PageDown,2,PageDown,2,L > out.txt
+    "$hsrviz" "$lesson" --screenshot q.png --frames 10 --keys PageDown,PageDown,2,PageDown,2,L --frame-log frames.txt > out.txt
+    test "$(wc -l < frames.txt)" -eq 10
+    grep -q "hsrviz: 10 frames, median" out.txt
     grep -q 'answered "clipped": wrong, the machine says "inside"' out.txt
     grep -q 'answered "000010": right' out.txt
     grep -q "score 1 of 2 answered, 3 questions, language de" out.txt
