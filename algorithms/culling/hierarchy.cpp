@@ -69,6 +69,15 @@ std::vector<Aabb> polygon_boxes(const Scene& s) {
     return out;
 }
 
+bool box_passes(const Aabb& box, const std::vector<Plane>& f, std::uint8_t mask, std::uint32_t* tests) {
+    for (std::size_t k = 0; k < f.size() && k < 8; ++k) {
+        if (!(mask & (1 << k))) continue;
+        if (tests) ++*tests;
+        if (box_side(box, f[k]) < 0) return false;
+    }
+    return true;
+}
+
 int box_side(const Aabb& b, const Plane& p) {
     const Vec3 pv(p.n.x >= 0 ? b.hi.x : b.lo.x, p.n.y >= 0 ? b.hi.y : b.lo.y, p.n.z >= 0 ? b.hi.z : b.lo.z);
     const Vec3 nv(p.n.x >= 0 ? b.lo.x : b.hi.x, p.n.y >= 0 ? b.lo.y : b.hi.y, p.n.z >= 0 ? b.lo.z : b.hi.z);
@@ -193,9 +202,7 @@ Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* h, Came
         }
         // the node's own primitives: each box against the planes still to test
         for (std::uint32_t p : node.primitives) {
-            bool in = true;
-            for (int k = 0; k < 6 && in; ++k)
-                if (e.mask_after & (1 << k)) ++out.plane_tests, in = box_side(h->boxes[p], frustum[std::size_t(k)]) >= 0;
+            const bool in = box_passes(h->boxes[p], frustum, e.mask_after, &out.plane_tests);
             out.kept[p] = in;
             out.outside += !in;
         }

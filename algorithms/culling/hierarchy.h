@@ -63,6 +63,9 @@ struct HierarchyCull {
 // The hierarchy must outlive the machine.
 Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* hierarchy, Camera camera, HierarchyCullOptions options = {});
 
+// Does the box pass every plane of `frustum` whose bit is set in `mask` (not wholly behind one)? Counts the plane
+// tests made into *tests when given. A partial node's own primitives are kept or left out by this.
+bool box_passes(const Aabb& box, const std::vector<Plane>& frustum, std::uint8_t mask, std::uint32_t* tests = nullptr);
 // Box against plane, by its p- and n-vertices: −1 wholly behind (outside), +1 wholly in front (inside), 0 across.
 int box_side(const Aabb& box, const Plane& plane);
 // The box's projected size in pixels (its bounding sphere's diameter over its distance, in pixels of the height);

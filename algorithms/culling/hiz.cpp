@@ -139,7 +139,7 @@ Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZB
         ++nodes;
         HizNodeTested e{n, HizOutcome::rendered, {}, 0, 0, 0, node.subtree_primitives};
         // view-frustum culling first, then isOccluded against the pyramid
-        if (std::any_of(frustum.begin(), frustum.end(), [&](const Plane& p) { return box_side(node.box, p) < 0; })) {
+        if (!box_passes(node.box, frustum, 0x3f)) {
             e.outcome = HizOutcome::outside_frustum, ++out.outside_nodes;
             co_yield e;
             continue;

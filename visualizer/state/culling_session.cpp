@@ -74,13 +74,10 @@ void reduce(CullingView& v, const HierarchyCullEvent& event) {
                                v.nodes[e.node] = e.outcome == NodeOutcome::inside ? NodeMark::inside : NodeMark::partial;
                                const auto& node = v.world->hierarchy.nodes[e.node];
                                // its own primitives: kept unless their boxes fail a plane still to test
-                               const auto& frustum = v.world->frustum;
-                               for (std::uint32_t p : node.primitives) {
-                                   bool in = true;
-                                   for (int k = 0; k < 6; ++k)
-                                       if (e.mask_after & (1 << k)) in = in && box_side(v.world->hierarchy.boxes[p], frustum[std::size_t(k)]) >= 0;
-                                   v.primitives[p] = in ? PrimitiveMark::kept : PrimitiveMark::left_out;
-                               }
+                               for (std::uint32_t p : node.primitives)
+                                   v.primitives[p] = box_passes(v.world->hierarchy.boxes[p], v.world->frustum, e.mask_after)
+                                                         ? PrimitiveMark::kept
+                                                         : PrimitiveMark::left_out;
                                break;
                            }
                        }
