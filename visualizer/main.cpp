@@ -6,6 +6,7 @@
 #include "app.h"
 #include "cli/commands.h"
 #include "cli/render_command.h"
+#include "cli/report_command.h"
 #include "state/lesson.h"
 #include "state/trace.h"
 
@@ -51,11 +52,17 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--size", render.size, "Image size WxH (default 512x512)");
     render_cmd->add_option("--out", render.out, "Colour image (PNG)")->required();
     render_cmd->add_option("--ids", render.ids, "Visible primitive id per pixel (16-bit grey PNG, 0 = background)");
+    hsr::viz::ReportOptions report;
+    CLI::App* report_cmd = cli.add_subcommand("report", "Measure error against run time for every algorithm family; write Markdown, CSV and SVG charts");
+    report_cmd->add_option("--out", report.out, "Folder to write report.md, report.csv and one chart per family into");
+    report_cmd->add_flag("--quick", report.quick, "Small scenes and three repeats (about a minute)");
+    report_cmd->add_option("--repeats", report.repeats, "Runs per measurement; the median is reported")->check(CLI::PositiveNumber);
     CLI11_PARSE(cli, argc, argv);
 
     if (*trace_cmd) return hsr::viz::run_trace(trace);
     if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());
     if (*render_cmd) return hsr::viz::run_render(render);
+    if (*report_cmd) return hsr::viz::run_report(report);
 
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();

@@ -7,15 +7,15 @@
 #include "catch.h"
 #include "clipping/clip_test_helpers.h"
 #include "clipping/cohen_sutherland.h"
-#include "clipping/exact_reference.h"
+#include "analysis/exact_clip.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
 
 using namespace hsr::algo;
-using hsr::test::exact_clip_polygon;
-using hsr::test::exact_clip_segment;
+using hsr::analysis::exact_clip_polygon;
+using hsr::analysis::exact_clip_segment;
 using hsr::test::random_point;
-using hsr::test::relative_error;
+using hsr::analysis::relative_error;
 
 namespace {
 
@@ -103,7 +103,7 @@ TEST_CASE("Sutherland–Hodgman agrees with the exact clip on 10^5 random polygo
         const auto exact = exact_clip_polygon(polygon, space);
         const auto same = [](const Vec4& a, const Vec4& b) { return a == b; };
         const auto ours = without_repeats(sh.vertices, same);
-        const auto theirs = without_repeats(exact, [](const hsr::test::ExactPoint& a, const hsr::test::ExactPoint& b) {
+        const auto theirs = without_repeats(exact, [](const hsr::analysis::ExactPoint& a, const hsr::analysis::ExactPoint& b) {
             return a.c[0] == b.c[0] && a.c[1] == b.c[1] && a.c[2] == b.c[2] && a.c[3] == b.c[3];
         });
         visible += !theirs.empty();

@@ -8,7 +8,7 @@
 #include "catch.h"
 #include "clipping/clip_test_helpers.h"
 #include "clipping/cohen_sutherland.h"
-#include "clipping/exact_reference.h"
+#include "analysis/exact_clip.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/point_clip.h"
 #include "clipping/sutherland_hodgman.h"
@@ -96,22 +96,22 @@ TEST_CASE("a segment nearly parallel to a plane (direction 1e-12) clips without 
     // of the first cut amplified by 1 / |Δx|: a few ulp / 1e-12. That is the bound it is held to, and the lesson.
     const ClipSpace s = ClipSpace::cube;
     const Vec4 p1 = pt(1 - 0.5e-12, -3, 0), p2 = pt(1 + 0.5e-12, 3, 0);
-    const auto exact = hsr::test::exact_clip_segment(p1, p2, s);
+    const auto exact = hsr::analysis::exact_clip_segment(p1, p2, s);
     REQUIRE(exact.visible);
     const double dx = p2.x - p1.x, eps = std::numeric_limits<double>::epsilon();
 
     const SegmentClip l = lb(p1, p2, s);
     REQUIRE(l.outcome == ClipOutcome::clipped);
-    CHECK(hsr::test::relative_error(l.a, exact.a, 3) < 1e-15);
-    CHECK(hsr::test::relative_error(l.b, exact.b, 3) < 1e-15);
+    CHECK(hsr::analysis::relative_error(l.a, exact.a, 3) < 1e-15);
+    CHECK(hsr::analysis::relative_error(l.b, exact.b, 3) < 1e-15);
 
     const SegmentClip c = cs(p1, p2, s);
     REQUIRE(c.outcome == ClipOutcome::clipped);
     CHECK(c.b.x == 1);  // snapped onto the plane it was cut at
     CHECK(outcode(c.a, s).inside());
     CHECK(outcode(c.b, s).inside());
-    CHECK(hsr::test::relative_error(c.a, exact.a, 3) < 8 * eps / dx);
-    CHECK(hsr::test::relative_error(c.b, exact.b, 3) < 8 * eps / dx);
+    CHECK(hsr::analysis::relative_error(c.a, exact.a, 3) < 8 * eps / dx);
+    CHECK(hsr::analysis::relative_error(c.b, exact.b, 3) < 8 * eps / dx);
 }
 
 TEST_CASE("coordinates near 1e30 and 1e-30 clip to the right part", "[clipping][edge]") {
@@ -160,7 +160,7 @@ TEST_CASE("a segment from w = −3 to w = 2 comes out as its visible part, never
     // p1 divides to (−1/3, 0, 1/3): inside the cube after the divide, but it is behind the eye. Dividing first
     // would keep the "external" segment through infinity; clipping first keeps only the part with w > 0.
     const Vec4 p1 = pt(1, 0, -1, -3), p2 = pt(0.5, 0, 0, 2);
-    const auto exact = hsr::test::exact_clip_segment(p1, p2, h);
+    const auto exact = hsr::analysis::exact_clip_segment(p1, p2, h);
     REQUIRE(exact.visible);
     for (auto clip : {cs, lb}) {
         const SegmentClip c = clip(p1, p2, h);
@@ -168,8 +168,8 @@ TEST_CASE("a segment from w = −3 to w = 2 comes out as its visible part, never
         REQUIRE(c.outcome == ClipOutcome::clipped);
         CHECK(c.a.w > 0);
         CHECK(c.b.w > 0);
-        CHECK(hsr::test::relative_error(c.a, exact.a, 3) < 1e-15);
-        CHECK(hsr::test::relative_error(c.b, exact.b, 3) < 1e-15);
+        CHECK(hsr::analysis::relative_error(c.a, exact.a, 3) < 1e-15);
+        CHECK(hsr::analysis::relative_error(c.b, exact.b, 3) < 1e-15);
         for (const Vec4& v : {c.a, c.b}) CHECK(outcode(v, h).inside());
     }
     const PolygonClip poly = sutherland_hodgman({1, {p1, p2, pt(0.5, 0.5, 0, 2)}}, {.space = h}).run_to_end();

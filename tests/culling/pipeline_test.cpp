@@ -6,6 +6,7 @@
 #include <random>
 
 #include "catch.h"
+#include "analysis/lost_pixels.h"
 #include "culling/occluders.h"
 #include "culling/pipeline.h"
 #include "portals/cell_model.h"
@@ -30,20 +31,8 @@ const StageReport& report(const PipelineResult& r, Stage s) {
     return *std::find_if(r.stages.begin(), r.stages.end(), [&](const StageReport& x) { return x.stage == s; });
 }
 
-// Pixels where the culled image differs from rendering everything, but for ties a back face won in the full render
-// (a back face and a front face meet at equal depth on a silhouette: the order decides, not visibility).
 int real_differences(const Scene& s, const FrameDepth& culled, const FrameDepth& all) {
-    int differ = 0;
-    for (std::size_t k = 0; k < all.image.ids.size(); ++k) {
-        if (culled.image.ids[k] == all.image.ids[k]) continue;
-        const std::int32_t p = all.polygon[k];
-        Plane plane;
-        std::vector<Vec3> v;
-        for (const auto& q : s.polygons[std::size_t(p)].vertices) v.emplace_back(q);
-        plane_of(v, plane);
-        differ += plane.distance(s.camera.eye) > 0;  // a front face was lost: a real difference
-    }
-    return differ;
+    return int(hsr::analysis::lost_front_pixels(s, culled, all));
 }
 
 }  // namespace

@@ -142,6 +142,16 @@ case "$case" in
     "$hsrviz" --help | grep -q "trace"
     "$hsrviz" trace --help | grep -q -- "--out"
     if "$hsrviz" trace /nonexistent.toml --out x.jsonl 2>/dev/null; then exit 1; fi ;;
+  report)  # hsrviz report --quick: every family's table, a CSV row per measurement, a chart per family
+    "$hsrviz" report --quick --out rep > out.txt
+    grep -q "0 violations" out.txt
+    for family in clipping zbuffer hsr portals culling; do
+      test -s "rep/$family.svg"
+      grep -q "<circle" "rep/$family.svg"
+      grep -q "($family.svg)" rep/report.md
+    done
+    test "$(wc -l < rep/report.csv)" -gt 40
+    grep -q "^clipping,liang_barsky straight-line (float)," rep/report.csv ;;
   *) echo "unknown case $case"; exit 2 ;;
 esac
 echo "gui_test $case: ok"

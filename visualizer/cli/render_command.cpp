@@ -7,7 +7,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "bsp/bsp_tree.h"
+#include "analysis/painters.h"
 #include "cli/png_io.h"
 #include "core/image.h"
 #include "culling/pipeline.h"
@@ -47,29 +47,11 @@ algo::Acceleration acceleration_named(const std::string& s) {
 }
 
 algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
-    std::vector<algo::BspInput> inputs;
-    for (const auto& p : scene.polygons) {
-        algo::BspInput in{p.id, {}};
-        for (const auto& v : p.vertices) in.vertices.emplace_back(v);
-        inputs.push_back(std::move(in));
-    }
-    const auto start = Clock::now();
-    const algo::BspTree tree = algo::build_bsp(std::move(inputs), {.splitter = splitter_named(o.splitter)}).run_to_end();
-    const double build_ms = ms_since(start);
-    const auto order = algo::traverse_bsp(&tree, scene.camera.eye).run_to_end();
-    algo::Image image(vp.width, vp.height, {26, 28, 33});
-    const glm::dmat4 view_projection = algo::view_projection(scene.camera);
-    for (algo::BspPolygonId p : order) {  // the painter's order: back to front
-        const algo::BspPolygon& poly = tree.polygons[std::size_t(p)];
-        algo::Color color{200, 200, 200};
-        for (const auto& sp : scene.polygons)
-            if (sp.id == poly.source) color = sp.color;
-        algo::paint_polygon(image, view_projection, poly.vertices, poly.source, color);
-    }
+    analysis::BspPainting p = analysis::paint_bsp(scene, splitter_named(o.splitter), vp);
     std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
-                o.splitter.c_str(), scene.polygons.size(), tree.polygons.size(), tree.splits, tree.nodes.size(),
-                tree.depth, build_ms);
-    return image;
+                o.splitter.c_str(), scene.polygons.size(), p.tree.polygons.size(), p.tree.splits, p.tree.nodes.size(),
+                p.tree.depth, p.build_ms);
+    return std::move(p.image);
 }
 
 // The culling pipeline, then the z-buffer on what is left: one line per stage.
@@ -126,19 +108,12 @@ algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, alg
 }
 
 algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, algo::Viewport vp) {
-    const auto start = Clock::now();
-    const algo::DepthSortResult r = algo::depth_sort(algo::sort_polygons(scene)).run_to_end();
-    const double sort_ms = ms_since(start);
-    algo::Image image(vp.width, vp.height, {26, 28, 33});
-    for (std::uint32_t i : r.order) {  // back to front, each polygon in normalised device coordinates
-        std::vector<glm::dvec4> ndc;
-        for (const auto& v : r.polygons[i].vertices) ndc.emplace_back(v, 1.0);
-        algo::paint_clip_polygon(image, std::move(ndc), r.polygons[i].id, r.polygons[i].color, r.polygons[i].opacity);
-    }
+    analysis::DepthSortPainting p = analysis::paint_depth_sort(scene, vp);
+    const algo::DepthSortResult& r = p.sorted;
     std::printf("depth-sort: %zu polygons, %llu pairs examined, %u moves, %u splits%s, sorted in %.3f ms\n",
                 scene.polygons.size(), (unsigned long long)r.pairs, r.moves, r.splits, r.bounded ? " (stopped at a bound)" : "",
-                sort_ms);
-    return image;
+                p.sort_ms);
+    return std::move(p.image);
 }
 
 algo::Scene generated_or_loaded(const std::string& name) {

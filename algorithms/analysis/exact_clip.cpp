@@ -1,11 +1,11 @@
-#include "clipping/exact_reference.h"
+#include "analysis/exact_clip.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/numeric.h"
 
-namespace hsr::test {
+namespace hsr::analysis {
 namespace {
 
 ExactPoint exact(const Vec4& p) { return {{mpq_class(p.x), mpq_class(p.y), mpq_class(p.z), mpq_class(p.w)}}; }
@@ -73,4 +73,4 @@ double relative_error(const Vec4& a, const ExactPoint& b, double scale) {
     return e / std::max(1.0, scale);
 }
 
-}  // namespace hsr::test
+}  // namespace hsr::analysis

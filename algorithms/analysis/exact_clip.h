@@ -10,7 +10,7 @@
 
 #include "clipping/clip_space.h"
 
-namespace hsr::test {
+namespace hsr::analysis {
 
 using algo::ClipSpace;
 using algo::Vec4;
@@ -33,4 +33,4 @@ std::vector<ExactPoint> exact_clip_polygon(const std::vector<Vec4>& polygon, Cli
 // |a − b|∞ / max(1, scale)
 double relative_error(const Vec4& a, const ExactPoint& b, double scale);
 
-}  // namespace hsr::test
+}  // namespace hsr::analysis

@@ -1,0 +1,51 @@
+// The culling pipeline on generated scenes: what each stage leaves out, the frame time against rendering every
+// primitive, and visibility violations (front-face pixels the culled frame lost; must be 0 for the conservative
+// stages). Detail culling is not conservative by design: its lost pixels are its error, not a violation.
+#include "analysis/lost_pixels.h"
+#include "analysis/measurement.h"
+#include "culling/pipeline.h"
+#include "scene/generated_scenes.h"
+
+namespace hsr::analysis {
+
+std::vector<Measurement> measure_culling(const ReportOptions& o) {
+    const std::size_t n = o.quick ? 2000 : 30000;
+    const algo::Viewport vp = o.quick ? algo::Viewport{96, 72} : algo::Viewport{320, 240};
+    using S = algo::Stage;
+    std::vector<Measurement> rows;
+    for (const auto& [kind, scene] : {std::pair{"city", algo::city_scene({.triangles = n})},
+                                      std::pair{"field", algo::field_scene({.triangles = n})},
+                                      std::pair{"spheres", algo::spheres_scene({.triangles = n})}}) {
+        const std::string setting = std::string(kind) + ", " + std::to_string(scene.polygons.size()) + " triangles";
+        algo::PipelineResult all;
+        const double all_ms = median_ms(o.repeats, [&] { all = algo::run_pipeline(scene, {.stages = {}, .viewport = vp}); });
+        rows.push_back({.family = "culling", .method = "no culling (the reference)", .setting = setting, .median_ms = all_ms,
+                        .error = 0, .error_name = "share of pixels lost", .wrong_name = "front-face pixels lost"});
+        const auto run = [&](const char* name, std::vector<S> stages, bool conservative) {
+            algo::PipelineResult r;
+            const double ms = median_ms(o.repeats, [&] { r = algo::run_pipeline(scene, {.stages = stages, .viewport = vp}); });
+            const std::uint64_t lost = lost_front_pixels(scene, r.frame, all.frame);
+            std::string extra = "left out:";
+            for (const algo::StageReport& s : r.stages)
+                if (s.ran && s.stage != S::hse) extra += " " + std::string(to_string(s.stage)) + " " + std::to_string(s.left_out);
+            rows.push_back({.family = "culling", .method = name, .setting = setting, .median_ms = ms,
+                            .error = double(lost) / double(all.frame.image.ids.size()), .error_name = "share of pixels lost",
+                            .wrong = lost, .wrong_name = "front-face pixels lost", .wrong_must_be_zero = conservative,
+                            .extra = extra});
+        };
+        run("back-face, frustum, occluders, hiz", {S::back_face, S::frustum, S::occluders, S::hiz}, true);
+        run("back-face, frustum, detail (2 px), occluders, hiz", {S::back_face, S::frustum, S::detail, S::occluders, S::hiz}, false);
+    }
+    return rows;
+}
+
+std::vector<Measurement> measure_all(const ReportOptions& o) {
+    std::vector<Measurement> rows;
+    for (auto* family : {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling}) {
+        auto part = family(o);
+        rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+    }
+    return rows;
+}
+
+}  // namespace hsr::analysis

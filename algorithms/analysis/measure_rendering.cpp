@@ -1,0 +1,106 @@
+// Hidden surfaces against the double-precision ray cast: the z-buffer per depth format and near/far ratio, the BSP
+// per splitter rule, and depth sort. The error is the share of pixels whose visible primitive differs.
+#include <chrono>
+#include <cstdio>
+
+#include "analysis/measurement.h"
+#include "analysis/painters.h"
+#include "raycast/ray_cast.h"
+#include "scene/random_scene.h"
+#include "zbuffer/zbuffer_fill.h"
+
+namespace hsr::analysis {
+namespace {
+
+double share_differing(const std::vector<algo::SceneId>& a, const std::vector<algo::SceneId>& b) {
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) differ += a[k] != b[k];
+    return double(differ) / double(a.size());
+}
+
+std::uint64_t count_differing(const std::vector<algo::SceneId>& a, const std::vector<algo::SceneId>& b) {
+    std::uint64_t differ = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) differ += a[k] != b[k];
+    return differ;
+}
+
+algo::Image reference(const algo::Scene& s, algo::Viewport vp) {
+    return algo::ray_cast(s, {.viewport = vp, .acceleration = algo::Acceleration::grid, .detail = algo::RayDetail::ray}).run_to_end().image;
+}
+
+std::string ratio_text(double r) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.0e", r);
+    return b;
+}
+
+}  // namespace
+
+std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
+    const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
+    std::vector<Measurement> rows;
+    // The same triangles (depths 6 to 14 from the eye) with the near plane pulled towards the eye: the ratio
+    // far/near grows, and the fixed-point formats lose their resolution at the back.
+    for (const double near : {1.0, 1e-2, 1e-4, 1e-6}) {
+        const algo::Scene s = algo::random_triangles({.count = o.quick ? 80u : 300u, .seed = 11, .size = 2.5, .near = near, .far = 20});
+        const algo::Image ref = reference(s, vp);
+        const auto screen = algo::project_polygons(s, vp);
+        using F = algo::DepthFormat;
+        for (const F format : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed}) {
+            algo::FrameDepth f{algo::Image(0, 0), {}, {}};
+            const double ms = median_ms(o.repeats, [&] {
+                f = algo::zbuffer_fill(screen, algo::zbuffer_options(s, vp, format, algo::EventDetail::polygon)).run_to_end();
+            });
+            rows.push_back({.family = "zbuffer", .method = std::string(algo::format_id(format)),
+                            .setting = "far/near " + ratio_text(20 / near) + ", " + std::to_string(s.polygons.size()) + " triangles",
+                            .median_ms = ms, .error = share_differing(f.image.ids, ref.ids),
+                            .error_name = "share of pixels whose visible primitive differs from the ray cast",
+                            .wrong = count_differing(f.image.ids, ref.ids), .wrong_name = "pixels differing",
+                            .extra = std::to_string(vp.width) + "×" + std::to_string(vp.height)});
+        }
+    }
+    return rows;
+}
+
+std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
+    const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
+    std::vector<Measurement> rows;
+    const algo::Scene s = algo::random_triangles({.count = o.quick ? 40u : 120u, .seed = 5, .size = 2.5});
+    const algo::Image ref = reference(s, vp);
+    const std::string setting = std::to_string(s.polygons.size()) + " random triangles, some piercing";
+    using R = algo::SplitterRule;
+    for (const auto& [rule, name] : {std::pair{R::first, "first"}, std::pair{R::balanced, "balanced"},
+                                     std::pair{R::fewest_splits, "fewest-splits"}, std::pair{R::weighted, "weighted"}}) {
+        BspPainting p{};
+        const double ms = median_ms(o.repeats, [&] { p = paint_bsp(s, rule, vp); });
+        rows.push_back({.family = "hsr", .method = std::string("bsp ") + name, .setting = setting, .median_ms = ms,
+                        .error = share_differing(p.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
+                        .wrong = count_differing(p.image.ids, ref.ids), .wrong_name = "pixels differing",
+                        .extra = std::to_string(p.tree.splits) + " splits, " + std::to_string(p.tree.nodes.size()) + " nodes"});
+    }
+    DepthSortPainting d{};
+    const double ms = median_ms(o.repeats, [&] { d = paint_depth_sort(s, vp); });
+    rows.push_back({.family = "hsr", .method = "depth sort", .setting = setting, .median_ms = ms,
+                    .error = share_differing(d.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
+                    .wrong = count_differing(d.image.ids, ref.ids), .wrong_name = "pixels differing",
+                    .extra = std::to_string(d.sorted.splits) + " splits, " + std::to_string(d.sorted.moves) + " moves" +
+                             (d.sorted.bounded ? ", stopped at a bound" : "")});
+    algo::Image r{0, 0};
+    const double ray_ms = median_ms(o.repeats, [&] { r = reference(s, vp); });
+    rows.push_back({.family = "hsr", .method = "ray cast (grid, the reference)", .setting = setting, .median_ms = ray_ms,
+                    .error = 0, .error_name = "share of pixels differing from the ray cast", .wrong_name = "pixels differing"});
+    return rows;
+}
+
+double median_ms(int repeats, const std::function<void()>& f) {
+    std::vector<double> times;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+}  // namespace hsr::analysis

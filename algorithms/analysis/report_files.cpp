@@ -1,0 +1,137 @@
+#include "analysis/report_files.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace hsr::analysis {
+namespace {
+
+std::string number(double v) {
+    char b[32];
+    if (v == 0) return "0";
+    std::snprintf(b, sizeof b, std::fabs(v) >= 1e-3 && std::fabs(v) < 1e5 ? "%.4g" : "%.3e", v);
+    return b;
+}
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::string xml_text(const std::string& s) {
+    std::string out;
+    for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return out;
+}
+
+const char* family_title(const std::string& f) {
+    if (f == "clipping") return "Clipping: error against GMP rationals";
+    if (f == "zbuffer") return "Z-buffer: pixels differing from the ray cast, per depth format and far/near ratio";
+    if (f == "hsr") return "BSP and depth sort: pixels differing from the ray cast";
+    if (f == "portals") return "Cells and portals: PVS and frustum slack, missed cells and polygons";
+    if (f == "culling") return "Culling pipeline: pixels lost, per scene";
+    return "Other";
+}
+
+}  // namespace
+
+std::vector<std::string> families_of(const std::vector<Measurement>& rows) {
+    std::vector<std::string> f;
+    for (const Measurement& m : rows)
+        if (std::find(f.begin(), f.end(), m.family) == f.end()) f.push_back(m.family);
+    return f;
+}
+
+std::string report_markdown(const std::vector<Measurement>& rows) {
+    std::string md;
+    for (const std::string& family : families_of(rows)) {
+        const auto first = std::find_if(rows.begin(), rows.end(), [&](const Measurement& m) { return m.family == family; });
+        md += "## " + std::string(family_title(family)) + "\n\nError: " + first->error_name + ". ![error against run time](" +
+              family + ".svg)\n\n| method | setting | median ms | error | " + first->wrong_name + " | notes |\n|---|---|---:|---:|---:|---|\n";
+        for (const Measurement& m : rows) {
+            if (m.family != family) continue;
+            const std::string wrong = std::to_string(m.wrong) + (m.wrong_must_be_zero ? (m.wrong == 0 ? " (must be 0: ok)" : " (must be 0: VIOLATED)") : "");
+            md += "| " + m.method + " | " + m.setting + " | " + number(m.median_ms) + " | " + number(m.error) + " | " + wrong + " | " +
+                  m.extra + " |\n";
+        }
+        md += "\n";
+    }
+    return md;
+}
+
+std::string report_csv(const std::vector<Measurement>& rows) {
+    std::string csv = "family,method,setting,median_ms,error,error_name,wrong,wrong_name,wrong_must_be_zero,extra\n";
+    for (const Measurement& m : rows)
+        csv += csv_field(m.family) + "," + csv_field(m.method) + "," + csv_field(m.setting) + "," + number(m.median_ms) + "," +
+               number(m.error) + "," + csv_field(m.error_name) + "," + std::to_string(m.wrong) + "," + csv_field(m.wrong_name) + "," +
+               (m.wrong_must_be_zero ? "true" : "false") + "," + csv_field(m.extra) + "\n";
+    return csv;
+}
+
+std::string error_chart_svg(const std::vector<Measurement>& rows, const std::string& family) {
+    std::vector<const Measurement*> pts;
+    for (const Measurement& m : rows)
+        if (m.family == family) pts.push_back(&m);
+    // Axes: log10 of the time and of the error; errors of 0 sit on their own line below the lowest decade.
+    double t_lo = 1e300, t_hi = -1e300, e_lo = 1e300, e_hi = -1e300;
+    for (const Measurement* m : pts) {
+        const double t = std::log10(std::max(m->median_ms, 1e-6));
+        t_lo = std::min(t_lo, t), t_hi = std::max(t_hi, t);
+        if (m->error > 0) e_lo = std::min(e_lo, std::log10(m->error)), e_hi = std::max(e_hi, std::log10(m->error));
+    }
+    if (pts.empty()) t_lo = 0, t_hi = 1;
+    if (e_lo > e_hi) e_lo = -3, e_hi = 0;
+    t_lo = std::floor(t_lo), t_hi = std::max(std::ceil(t_hi), t_lo + 1);
+    e_lo = std::floor(e_lo), e_hi = std::max(std::ceil(e_hi), e_lo + 1);
+    const double zero_line = e_lo - 1;  // the "0" row
+
+    const int width = 860, height = 440, left = 70, right = 300, top = 40, bottom = 50;
+    const auto x_of = [&](double t) { return left + (t - t_lo) / (t_hi - t_lo) * (width - left - right); };
+    const auto y_of = [&](double e) { return top + (e_hi - e) / (e_hi - zero_line) * (height - top - bottom); };
+
+    // One colour per method (Okabe–Ito), a legend on the right.
+    static const char* palette[] = {"#e69f00", "#56b4e9", "#009e73", "#f0e442", "#0072b2", "#d55e00", "#cc79a7", "#000000"};
+    std::map<std::string, int> colour;
+    std::vector<std::string> methods;
+    for (const Measurement* m : pts)
+        if (colour.emplace(m->method, int(colour.size()) % 8).second) methods.push_back(m->method);
+
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
+                      std::to_string(height) + "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+                      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(family_title(family)) + "</text>\n";
+    for (double t = t_lo; t <= t_hi + 1e-9; t += 1) {
+        const double x = x_of(t);
+        svg += "<line x1=\"" + number(x) + "\" y1=\"" + std::to_string(top) + "\" x2=\"" + number(x) + "\" y2=\"" +
+               std::to_string(height - bottom) + "\" stroke=\"#ddd\"/><text x=\"" + number(x) + "\" y=\"" +
+               std::to_string(height - bottom + 16) + "\" text-anchor=\"middle\">" + number(std::pow(10.0, t)) + "</text>\n";
+    }
+    for (double e = zero_line; e <= e_hi + 1e-9; e += 1) {
+        const double y = y_of(e);
+        svg += "<line x1=\"" + std::to_string(left) + "\" y1=\"" + number(y) + "\" x2=\"" + std::to_string(width - right) + "\" y2=\"" +
+               number(y) + "\" stroke=\"#ddd\"/><text x=\"" + std::to_string(left - 6) + "\" y=\"" + number(y + 4) +
+               "\" text-anchor=\"end\">" + (e == zero_line ? std::string("0") : "1e" + std::to_string(int(e))) + "</text>\n";
+    }
+    svg += "<text x=\"" + number((left + width - right) / 2.0) + "\" y=\"" + std::to_string(height - 12) +
+           "\" text-anchor=\"middle\">median run time (ms, log)</text>\n";
+    svg += "<text transform=\"translate(16," + number((top + height - bottom) / 2.0) + ") rotate(-90)\" text-anchor=\"middle\">error (log)</text>\n";
+    for (const Measurement* m : pts) {
+        const double x = x_of(std::log10(std::max(m->median_ms, 1e-6)));
+        const double y = y_of(m->error > 0 ? std::log10(m->error) : zero_line);
+        svg += "<g><title>" + xml_text(m->method + ", " + m->setting) + "</title><circle cx=\"" + number(x) + "\" cy=\"" +
+               number(y) + "\" r=\"5\" fill=\"" + palette[colour[m->method]] + "\" stroke=\"black\" stroke-width=\"0.5\"/></g>\n";
+    }
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+        const int y = top + 8 + int(k) * 18;
+        svg += "<circle cx=\"" + std::to_string(width - right + 20) + "\" cy=\"" + std::to_string(y) + "\" r=\"5\" fill=\"" +
+               palette[colour[methods[k]]] + "\" stroke=\"black\" stroke-width=\"0.5\"/><text x=\"" + std::to_string(width - right + 30) +
+               "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text>\n";
+    }
+    return svg + "</svg>\n";
+}
+
+}  // namespace hsr::analysis

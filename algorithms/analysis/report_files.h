@@ -1,0 +1,17 @@
+// The report's files: a Markdown table per family, one CSV of every row, and a chart of error against run time per
+// family (SVG: both axes logarithmic, a row with no error drawn on the "0" line at the bottom).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/measurement.h"
+
+namespace hsr::analysis {
+
+std::vector<std::string> families_of(const std::vector<Measurement>& rows);  // in the order they first appear
+std::string report_markdown(const std::vector<Measurement>& rows);
+std::string report_csv(const std::vector<Measurement>& rows);
+std::string error_chart_svg(const std::vector<Measurement>& rows, const std::string& family);
+
+}  // namespace hsr::analysis

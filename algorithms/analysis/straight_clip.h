@@ -1,0 +1,125 @@
+// The three clipping algorithms as plain straight-line functions: the same formulas as the machines in clipping/
+// (the boundary values, equations (3), the snap onto the plane), with no events, no coroutine frame and no step
+// bound, in the precision T (float or double). Two uses: the benchmark that prices being a step-through machine,
+// and the report's float column (how far a float clipper lands from the exact answer, next to the double one).
+// Homogeneous clip space only (-w ≤ x, y, z ≤ w, w ≥ ε), the setting of perspective scenes.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/numeric.h"
+
+namespace hsr::analysis {
+
+template <class T>
+using Vec4Of = glm::vec<4, T>;
+
+// The boundary value of plane k (0 … 6 in clipping's order: z max, z min, y max, y min, x max, x min, w min).
+template <class T>
+T plain_boundary(const Vec4Of<T>& p, int k) {
+    switch (k) {
+        case 0: return p.w - p.z;
+        case 1: return p.w + p.z;
+        case 2: return p.w - p.y;
+        case 3: return p.w + p.y;
+        case 4: return p.w - p.x;
+        case 5: return p.w + p.x;
+        default: return p.w - T(algo::ClipTolerance::w_epsilon);
+    }
+}
+
+// p1 + t (p2 − p1), snapped onto plane k.
+template <class T>
+Vec4Of<T> plain_intersection(int k, const Vec4Of<T>& p1, const Vec4Of<T>& p2, T t) {
+    Vec4Of<T> i = p1 + t * (p2 - p1);
+    switch (k) {
+        case 0: i.z = i.w; break;
+        case 1: i.z = -i.w; break;
+        case 2: i.y = i.w; break;
+        case 3: i.y = -i.w; break;
+        case 4: i.x = i.w; break;
+        case 5: i.x = -i.w; break;
+        default: i.w = T(algo::ClipTolerance::w_epsilon); break;
+    }
+    return i;
+}
+
+template <class T>
+using PlainSegment = std::optional<std::pair<Vec4Of<T>, Vec4Of<T>>>;  // empty: rejected
+
+template <class T>
+PlainSegment<T> plain_liang_barsky(const Vec4Of<T>& p1, const Vec4Of<T>& p2) {
+    constexpr std::array<int, 7> order = {5, 4, 3, 2, 1, 0, 6};  // the lecture's left, right, bottom, top, near, far, then w
+    T t_enter = 0, t_leave = 1;
+    int enter = 6, leave = 6;
+    for (int k : order) {
+        const T q = plain_boundary(p1, k);
+        const T p = q - plain_boundary(p2, k);
+        if (p == 0) {
+            if (q < 0) return std::nullopt;
+            continue;
+        }
+        const T ratio = q / p;
+        if (p < 0 && ratio > t_enter) t_enter = ratio, enter = k;
+        if (p > 0 && ratio < t_leave) t_leave = ratio, leave = k;
+        if (t_enter > t_leave) return std::nullopt;
+    }
+    return std::pair{t_enter > 0 ? plain_intersection(enter, p1, p2, t_enter) : p1,
+                     t_leave < 1 ? plain_intersection(leave, p1, p2, t_leave) : p2};
+}
+
+template <class T>
+unsigned plain_outcode(const Vec4Of<T>& p) {
+    unsigned c = 0;
+    for (int k = 0; k < 7; ++k)
+        if (plain_boundary(p, k) < 0) c |= 1u << k;
+    return c;
+}
+
+// The loop form of CS_Clip_3D, with the machine's rule that a plane once clipped against is not tested again.
+template <class T>
+PlainSegment<T> plain_cohen_sutherland(Vec4Of<T> p1, Vec4Of<T> p2) {
+    unsigned allowed = 0x7f;
+    for (;;) {
+        const unsigned c1 = plain_outcode(p1) & allowed, c2 = plain_outcode(p2) & allowed;
+        if ((c1 | c2) == 0) return std::pair{p1, p2};
+        if ((c1 & c2) != 0) return std::nullopt;
+        int k = 0;
+        while (((c1 ^ c2) >> k & 1u) == 0) ++k;
+        const T b1 = plain_boundary(p1, k), b2 = plain_boundary(p2, k);
+        const Vec4Of<T> i = plain_intersection(k, p1, p2, b1 / (b1 - b2));
+        (c1 >> k & 1u ? p1 : p2) = i;
+        allowed = (c1 | c2) & ~(1u << k);
+    }
+}
+
+template <class T>
+std::vector<Vec4Of<T>> plain_sutherland_hodgman(std::vector<Vec4Of<T>> polygon) {
+    std::vector<Vec4Of<T>> input;
+    for (int k = 0; k < 7 && !polygon.empty(); ++k) {
+        std::swap(input, polygon);
+        polygon.clear();
+        for (std::size_t i = 0; i < input.size(); ++i) {
+            const Vec4Of<T>& s = input[i];
+            const Vec4Of<T>& e = input[(i + 1) % input.size()];
+            const T bs = plain_boundary(s, k), be = plain_boundary(e, k);
+            if (bs >= 0 && be >= 0) {
+                polygon.push_back(e);
+            } else if (bs >= 0) {
+                polygon.push_back(plain_intersection(k, s, e, bs / (bs - be)));
+            } else if (be >= 0) {  // from the inside end, as the machine does
+                polygon.push_back(plain_intersection(k, e, s, be / (be - bs)));
+                polygon.push_back(e);
+            }
+        }
+    }
+    return polygon;
+}
+
+}  // namespace hsr::analysis

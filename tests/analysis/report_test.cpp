@@ -1,0 +1,128 @@
+// The report's measurements: the straight-line clippers are the machines' formulas (bit for bit in double), the
+// errors order as the arithmetic says they must (float above double, 16-bit depth above 32-bit at a far/near of
+// 2·10^7), the counts that must be 0 are, and the files carry every row.
+#include <algorithm>
+#include <array>
+#include <random>
+
+#include "catch.h"
+#include "analysis/measurement.h"
+#include "analysis/report_files.h"
+#include "analysis/straight_clip.h"
+#include "clipping/cohen_sutherland.h"
+#include "clipping/liang_barsky.h"
+#include "clipping/sutherland_hodgman.h"
+
+using namespace hsr;
+using analysis::Measurement;
+
+namespace {
+
+const analysis::ReportOptions quick{.quick = true, .repeats = 1, .scenes_dir = HSR_SOURCE_DIR "/assets/scenes"};
+
+const Measurement& row(const std::vector<Measurement>& rows, const std::string& method, const std::string& setting_part = "") {
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const Measurement& m) {
+        return m.method == method && m.setting.find(setting_part) != std::string::npos;
+    });
+    REQUIRE(it != rows.end());
+    return *it;
+}
+
+}  // namespace
+
+TEST_CASE("the straight-line clippers give the machines' answers bit for bit in double", "[analysis][clipping]") {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-3, 3), w(-1, 3);
+    // First the cases random points rarely give: along the eye's axis through w = 0, and parallel to a plane.
+    const std::vector<std::array<algo::Vec4, 3>> fixed = {{{{0, 0, 0, -1}, {0, 0, 0, 3}, {0, 1, 0, 2}}},
+                                                          {{{3, 0, 0, 2}, {3, 1, 1, 2}, {0, 0, 0, 1}}},
+                                                          {{{1, 0, -1, -3}, {0.5, 0, 0, 2}, {0, 0, 0, -2}}}};
+    for (int k = 0; k < 3000; ++k) {
+        const bool by_hand = k < int(fixed.size());
+        const algo::Vec4 a = by_hand ? fixed[std::size_t(k)][0] : algo::Vec4(u(rng), u(rng), u(rng), w(rng));
+        const algo::Vec4 b = by_hand ? fixed[std::size_t(k)][1] : algo::Vec4(u(rng), u(rng), u(rng), w(rng));
+        const algo::Vec4 c = by_hand ? fixed[std::size_t(k)][2] : algo::Vec4(u(rng), u(rng), u(rng), w(rng));
+        const algo::SegmentClip lb = algo::liang_barsky({0, a, b}).run_to_end();
+        const auto plain_lb = analysis::plain_liang_barsky(a, b);
+        REQUIRE(plain_lb.has_value() == (lb.outcome != algo::ClipOutcome::rejected));
+        if (plain_lb) CHECK((plain_lb->first == lb.a && plain_lb->second == lb.b));
+        const algo::SegmentClip cs = algo::cohen_sutherland({0, a, b}).run_to_end();
+        const auto plain_cs = analysis::plain_cohen_sutherland(a, b);
+        REQUIRE(plain_cs.has_value() == (cs.outcome != algo::ClipOutcome::rejected));
+        if (plain_cs) CHECK((plain_cs->first == cs.a && plain_cs->second == cs.b));
+        CHECK(analysis::plain_sutherland_hodgman(std::vector<algo::Vec4>{a, b, c}) ==
+              algo::sutherland_hodgman({0, {a, b, c}}).run_to_end().vertices);
+    }
+}
+
+TEST_CASE("clipping: double within 1e-14 of the exact answer, float about 1e-7 off, no wrong decision in double", "[analysis][clipping]") {
+    const auto rows = analysis::measure_clipping(quick);
+    for (const char* algorithm : {"cohen_sutherland", "liang_barsky", "sutherland_hodgman"}) {
+        INFO(algorithm);
+        const Measurement& machine = row(rows, std::string(algorithm) + " machine (double)");
+        const Measurement& dbl = row(rows, std::string(algorithm) + " straight-line (double)");
+        const Measurement& flt = row(rows, std::string(algorithm) + " straight-line (float)");
+        CHECK(machine.error < 1e-14);
+        CHECK(machine.error > 0);  // the intersections round: an error of exactly 0 would mean nothing was measured
+        CHECK(machine.wrong == 0);
+        CHECK(dbl.error == machine.error);
+        CHECK(flt.error > 1e-8);
+        CHECK(flt.error < 1e-4);
+        CHECK(machine.median_ms > 0);
+    }
+}
+
+TEST_CASE("z-buffer: precision falls with the far/near ratio in the fixed-point formats, not in reversed float", "[analysis][zbuffer]") {
+    const auto rows = analysis::measure_zbuffer(quick);
+    CHECK(row(rows, "int16", "2e+07").error > 10 * row(rows, "int32", "2e+07").error);
+    CHECK(row(rows, "int16", "2e+07").error > 10 * row(rows, "int16", "2e+01").error);
+    CHECK(row(rows, "float32-reversed", "2e+07").error < row(rows, "float32", "2e+07").error);
+    CHECK(row(rows, "int32", "2e+01").error < 0.01);  // at a modest ratio only pixels on edges differ
+}
+
+TEST_CASE("BSP and depth sort agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
+    const auto rows = analysis::measure_hidden_surfaces(quick);
+    for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort"}) {
+        INFO(method);
+        CHECK(row(rows, method).error < 0.01);
+    }
+    CHECK(row(rows, "bsp fewest-splits").extra != row(rows, "bsp first").extra);  // the rules build different trees
+}
+
+TEST_CASE("portals and culling: the counts that must be 0 are, and the slack is measured", "[analysis][portals][culling]") {
+    auto rows = analysis::measure_portals(quick);
+    const auto culling = analysis::measure_culling(quick);
+    rows.insert(rows.end(), culling.begin(), culling.end());
+    int must_be_zero = 0;
+    for (const Measurement& m : rows) {
+        INFO(m.family << ": " << m.method << " on " << m.setting);
+        if (!m.wrong_must_be_zero) continue;
+        CHECK(m.wrong == 0);
+        ++must_be_zero;
+    }
+    CHECK(must_be_zero >= 12 + 3);
+    CHECK(row(rows, "PVS (stab trees)", "maze").error > 0);  // a from-region PVS holds pairs one eye never sees
+    CHECK(row(rows, "portal_render, bounding-box frusta", "cells_general").error >=
+          row(rows, "portal_render, exact frusta", "cells_general").error);
+}
+
+TEST_CASE("the report's files carry every row: Markdown, CSV, one chart per family", "[analysis][files]") {
+    std::vector<Measurement> rows = {
+        {.family = "clipping", .method = "a, \"quoted\"", .setting = "s", .median_ms = 2, .error = 1e-9, .error_name = "e"},
+        {.family = "clipping", .method = "b", .setting = "s", .median_ms = 0.5, .error = 0, .error_name = "e"},
+        {.family = "portals", .method = "c", .setting = "s", .median_ms = 1, .error = 0.25, .error_name = "e", .wrong = 2,
+         .wrong_name = "missed", .wrong_must_be_zero = true}};
+    CHECK(analysis::families_of(rows) == std::vector<std::string>{"clipping", "portals"});
+    const std::string md = analysis::report_markdown(rows);
+    CHECK(md.find("must be 0: VIOLATED") != std::string::npos);
+    CHECK(md.find("(clipping.svg)") != std::string::npos);
+    const std::string csv = analysis::report_csv(rows);
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 4);
+    CHECK(csv.find("\"a, \"\"quoted\"\"\"") != std::string::npos);
+    const std::string svg = analysis::error_chart_svg(rows, "clipping");
+    std::size_t circles = 0;
+    for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+    CHECK(circles == 2 + 2);  // two points and two legend entries
+    CHECK(svg.find("&quot;") == std::string::npos);
+    CHECK(svg.find(">0</text>") != std::string::npos);  // the row with no error sits on the 0 line
+}

@@ -1,0 +1,50 @@
+#include "cli/report_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "analysis/measurement.h"
+#include "analysis/report_files.h"
+#include "state/lesson.h"
+
+namespace hsr::viz {
+namespace {
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+int run_report(const ReportOptions& o) {
+    const analysis::ReportOptions options{.quick = o.quick, .repeats = o.quick ? 3 : o.repeats, .scenes_dir = data_dir() + "/assets/scenes"};
+    std::vector<analysis::Measurement> rows;
+    for (auto* family : {analysis::measure_clipping, analysis::measure_zbuffer, analysis::measure_hidden_surfaces,
+                         analysis::measure_portals, analysis::measure_culling}) {
+        auto part = family(options);
+        std::printf("%s: %zu rows\n", part.empty() ? "?" : part.front().family.c_str(), part.size());
+        std::fflush(stdout);
+        rows.insert(rows.end(), part.begin(), part.end());
+    }
+    const std::filesystem::path dir(o.out);
+    std::filesystem::create_directories(dir);
+    write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by `hsrviz report" + std::string(o.quick ? " --quick" : "") +
+                                      "`; every number comes from this run.\n\n" + analysis::report_markdown(rows));
+    write_file(dir / "report.csv", analysis::report_csv(rows));
+    for (const std::string& family : analysis::families_of(rows)) write_file(dir / (family + ".svg"), analysis::error_chart_svg(rows, family));
+
+    int violations = 0;
+    for (const auto& m : rows)
+        if (m.wrong_must_be_zero && m.wrong != 0) {
+            std::printf("VIOLATION: %s, %s on %s: %llu\n", m.family.c_str(), m.method.c_str(), m.setting.c_str(), (unsigned long long)m.wrong);
+            ++violations;
+        }
+    std::printf("wrote %s/report.md, report.csv and %zu charts (%zu rows, %d violations)\n", o.out.c_str(),
+                analysis::families_of(rows).size(), rows.size(), violations);
+    return violations == 0 ? 0 : 1;
+}
+
+}  // namespace hsr::viz
