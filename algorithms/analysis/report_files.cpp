@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
+
+#include "scene/load_scene.h"
 
 namespace hsr::analysis {
 namespace {
@@ -70,6 +73,47 @@ std::string report_csv(const std::vector<Measurement>& rows) {
                number(m.error) + "," + csv_field(m.error_name) + "," + std::to_string(m.wrong) + "," + csv_field(m.wrong_name) + "," +
                (m.wrong_must_be_zero ? "true" : "false") + "," + csv_field(m.extra) + "\n";
     return csv;
+}
+
+std::vector<ExtremeCase> run_extreme_cases(const std::string& dir) {
+    std::vector<std::string> files;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+        if (e.path().extension() == ".toml") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    std::vector<ExtremeCase> cases;
+    for (const std::string& f : files) {
+        ExtremeCase c{std::filesystem::path(f).filename().string(), "", "", {}, ""};
+        try {
+            const algo::Scene s = algo::load_scene(f);
+            c.name = s.name, c.promise = s.promise;
+            c.outcomes = check_expectations(s);
+        } catch (const std::exception& e) {
+            c.load_error = e.what();
+        }
+        cases.push_back(std::move(c));
+    }
+    return cases;
+}
+
+std::string extreme_markdown(const std::vector<ExtremeCase>& cases) {
+    std::size_t kept = 0, all = 0;
+    for (const ExtremeCase& c : cases)
+        for (const ExpectOutcome& o : c.outcomes) kept += o.passed, ++all;
+    std::string md = "## Extreme cases (assets/scenes/extreme)\n\n" + std::to_string(cases.size()) + " cases, " + std::to_string(kept) +
+                     " of " + std::to_string(all) + " expectations kept.\n\n";
+    for (const ExtremeCase& c : cases) {
+        md += "### " + c.name + " (`" + c.file + "`)\n\nPromise: " + c.promise + "\n\n";
+        if (!c.load_error.empty()) {
+            md += "Not loaded: " + c.load_error + "\n\n";
+            continue;
+        }
+        md += "| expectation | line | outcome | error | found |\n|---|---:|---|---:|---|\n";
+        for (const ExpectOutcome& o : c.outcomes)
+            md += "| " + o.what + " | " + std::to_string(o.line) + " | " + (o.passed ? "kept" : "BROKEN") + " | " + number(o.error) +
+                  " | " + o.detail + " |\n";
+        md += "\n";
+    }
+    return md;
 }
 
 std::string error_chart_svg(const std::vector<Measurement>& rows, const std::string& family) {

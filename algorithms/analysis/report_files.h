@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/expect_check.h"
 #include "analysis/measurement.h"
 
 namespace hsr::analysis {
@@ -12,6 +13,14 @@ namespace hsr::analysis {
 std::vector<std::string> families_of(const std::vector<Measurement>& rows);  // in the order they first appear
 std::string report_markdown(const std::vector<Measurement>& rows);
 std::string report_csv(const std::vector<Measurement>& rows);
+// The catalogue of extreme cases: one section per scene file with its promise and every expectation's outcome.
+struct ExtremeCase {
+    std::string file, name, promise;
+    std::vector<ExpectOutcome> outcomes;
+    std::string load_error;  // the loader refused the file (then no outcomes)
+};
+std::vector<ExtremeCase> run_extreme_cases(const std::string& dir);
+std::string extreme_markdown(const std::vector<ExtremeCase>& cases);
 std::string error_chart_svg(const std::vector<Measurement>& rows, const std::string& family);
 
 }  // namespace hsr::analysis

@@ -7,6 +7,7 @@
 
 #include "bsp/bsp_tree.h"
 #include "core/numeric.h"
+#include "core/screen_polygon.h"
 
 #include <glm/common.hpp>
 
@@ -166,6 +167,7 @@ Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions op
         }
         Plane plane;
         if (!plane_of(in.vertices, plane)) throw InvalidInput(name + " is degenerate (it has no area)");
+        require_convex(in.vertices, in.id);  // a split of a concave polygon by a plane can give more than two parts
         tree.polygons.push_back({in.id, std::to_string(in.id), in.vertices, plane});
     }
     if (tree.polygons.size() > options.max_polygons)

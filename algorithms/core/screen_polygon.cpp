@@ -44,19 +44,23 @@ DepthPlane depth_plane(const std::vector<glm::dvec3>& v) {
 
 }  // namespace
 
-void require_convex(const ScenePolygon& p) {
-    std::vector<Vec3> v;
-    for (const auto& q : p.vertices) v.emplace_back(q);
+void require_convex(std::span<const Vec3> v, SceneId id) {
     Plane plane;
     if (!plane_of(v, plane)) return;  // no area: the projection reports it as zero-area
     const Vec3 n = plane.n;
     for (std::size_t i = 0; i < v.size(); ++i) {
         const Vec3 &a = v[i], &b = v[(i + 1) % v.size()], &c = v[(i + 2) % v.size()];
         if (glm::dot(glm::cross(b - a, c - b), n) < -1e-9 * glm::length(b - a) * glm::length(c - b))
-            throw InvalidInput("polygon " + std::to_string(p.id) +
-                               " is not convex; the z-buffer and scan-line fills take convex polygons "
+            throw InvalidInput("polygon " + std::to_string(id) +
+                               " is not convex; the hidden-surface algorithms here take convex polygons "
                                "(split it into triangles in the scene)");
     }
+}
+
+void require_convex(const ScenePolygon& p) {
+    std::vector<Vec3> v;
+    for (const auto& q : p.vertices) v.emplace_back(q);
+    require_convex(v, p.id);
 }
 
 

@@ -20,6 +20,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "scene/scene.h"
@@ -65,6 +66,7 @@ std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewpor
 
 // Throws InvalidInput naming the polygon unless it is convex (world space; a polygon with no area passes).
 void require_convex(const ScenePolygon& p);
+void require_convex(std::span<const glm::dvec3> polygon, SceneId id);
 
 // One polygon given in clip space (x, y, z, w), as above.
 ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport);

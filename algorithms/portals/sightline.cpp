@@ -1,5 +1,6 @@
 #include "portals/sightline.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -9,10 +10,16 @@ namespace {
 
 constexpr double max_slope = 1000;
 
+// The shoelace formula about the first vertex, not the origin: a sliver of line space far from (0, 0) (lines through
+// openings 1e-9 wide) has an area below the rounding of products taken about the origin.
 double polygon_area(const std::vector<glm::dvec2>& p) {
+    if (p.size() < 3) return 0;
     double twice = 0;
-    for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) twice += p[j].x * p[i].y - p[i].x * p[j].y;
-    return p.size() < 3 ? 0 : std::abs(twice) / 2;
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+        const glm::dvec2 a = p[i] - p[0], b = p[i + 1] - p[0];
+        twice += a.x * b.y - a.y * b.x;
+    }
+    return std::abs(twice) / 2;
 }
 
 }  // namespace
@@ -52,9 +59,19 @@ bool Sightlines::through(const PortalEnds& next) {
     return exist();
 }
 
-// "Area" relative to a slope range of 1 and the first portal's width: rounding leaves ~1e-16 of it behind where
-// the exact answer is a segment (collinear openings), a real set of sightlines leaves far more.
-bool Sightlines::exist() const { return area_ > 1e-12 * width_; }
+// The exact answer is either an open set of lines (a polygon with area) or a degenerate one: one grazing line (a
+// point of line space) or the lines through one point (a segment). Rounding leaves a degenerate set as a sliver
+// about 1e-16 of its coordinates thick. So the test is on thickness (area over diameter) against the size of the
+// numbers, not on area: a real band of lines through openings 1e-9 wide is some 1e-10 thick and is kept.
+bool Sightlines::exist() const {
+    if (polygon_.size() < 3) return false;
+    double diameter = 0, size = width_;
+    for (const glm::dvec2& a : polygon_) {
+        size = std::max({size, std::abs(a.x), std::abs(a.y)});
+        for (const glm::dvec2& b : polygon_) diameter = std::max(diameter, glm::length(a - b));
+    }
+    return diameter > 0 && area_ / diameter > 1e-12 * size;
+}
 
 std::pair<glm::dvec2, glm::dvec2> Sightlines::example() const {
     glm::dvec2 mean(0);

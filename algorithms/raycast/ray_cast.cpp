@@ -65,6 +65,7 @@ Primitives primitives_of(const Scene& scene) {
         }
         Plane plane;
         if (v.size() < 3 || !plane_of(v, plane)) continue;  // segments and area-less polygons are never hit
+        require_convex(v, p.id);  // the inside test walks the edges of a convex polygon
         prims.polygons.push_back(std::move(v));
         prims.planes.push_back(plane);
         prims.scene_index.push_back(s);

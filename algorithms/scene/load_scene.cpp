@@ -3,6 +3,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "core/plane.h"
@@ -81,7 +83,51 @@ void for_each_table(const TomlReader& r, const toml::table& root, std::string_vi
 Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& plan) {
     Expect e;
     if (!t) return e;
-    r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs"});
+    r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs", "image", "rejects"});
+    static const std::vector<std::string> renderers = {"zbuffer", "scanline", "bsp", "depth-sort", "raycast"};
+    const auto renderer = [&](const toml::table& c, const std::string& f, bool raycast_too) {
+        std::string a = r.text(c, "algorithm", f);
+        if (std::find(renderers.begin(), renderers.end() - (raycast_too ? 0 : 1), a) == renderers.end() - (raycast_too ? 0 : 1))
+            r.fail(c.get("algorithm"), join(f, "algorithm"),
+                   std::string("expected zbuffer, scanline, bsp") + (raycast_too ? ", depth-sort or raycast" : " or depth-sort"));
+        return a;
+    };
+    for_each_table(r, *t, "image", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"algorithm", "format", "splitter", "size", "max_differing", "min_differing", "visible"});
+        ExpectImage x{.algorithm = renderer(c, f, false), .line = int(c.source().begin.line)};
+        x.format = r.text(c, "format", f, "int24");
+        if (x.format != "int16" && x.format != "int24" && x.format != "int32" && x.format != "float32" &&
+            x.format != "float32-reversed" && x.format != "linear24")
+            r.fail(c.get("format"), join(f, "format"), "expected int16, int24, int32, float32, float32-reversed or linear24");
+        x.splitter = r.text(c, "splitter", f, "first");
+        if (x.splitter != "first" && x.splitter != "balanced" && x.splitter != "fewest-splits" && x.splitter != "weighted")
+            r.fail(c.get("splitter"), join(f, "splitter"), "expected first, balanced, fewest-splits or weighted");
+        if (const toml::node* size = c.get("size")) {
+            const glm::dvec4 v = r.vector(*size, join(f, "size"), 2, 2);
+            if (!(v[0] >= 1 && v[0] <= 1024 && v[1] >= 1 && v[1] <= 1024 && v[0] == std::floor(v[0]) && v[1] == std::floor(v[1])))
+                r.fail(size, join(f, "size"), "expected [width, height], whole numbers from 1 to 1024");
+            x.width = int(v[0]), x.height = int(v[1]);
+        }
+        for (const char* key : {"max_differing", "min_differing"})
+            if (c.contains(key)) {
+                const double v = r.number(c, key, f);
+                if (!(v >= 0 && v <= 1)) r.fail(c.get(key), join(f, key), "expected a share of pixels from 0 to 1");
+                (std::string(key) == "max_differing" ? x.max_differing : x.min_differing) = v;
+            }
+        if (const toml::array* ids = r.array(c, "visible", f, false))
+            for (std::size_t i = 0; i < ids->size(); ++i) {
+                const auto id = ids->get(i)->value_exact<std::int64_t>();
+                if (!id) r.fail(ids->get(i), index(join(f, "visible"), i), "expected a polygon id");
+                x.visible.push_back(SceneId(*id));
+            }
+        e.image.push_back(std::move(x));
+    });
+    for_each_table(r, *t, "rejects", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"algorithm", "message"});
+        e.rejects.push_back({renderer(c, f, true), r.text(c, "message", f), int(c.source().begin.line)});
+    });
     e.pvs = read_expect_pvs(r, r.table(*t, "pvs", "expect", false), plan);
     for_each_table(r, *t, "cull", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
@@ -122,9 +168,13 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
     });
     for_each_table(r, *t, "clip", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
-        r.only_keys(c, f, {"id", "outcome", "vertices"});
+        r.only_keys(c, f, {"id", "outcome", "vertices", "max_error"});
         ExpectClip x{SceneId(r.integer(c, "id", f)), r.text(c, "outcome", f), std::nullopt,
-                     int(c.source().begin.line)};
+                     int(c.source().begin.line), std::nullopt};
+        if (c.contains("max_error")) {
+            x.max_error = r.number(c, "max_error", f);
+            if (!(*x.max_error >= 0)) r.fail(c.get("max_error"), join(f, "max_error"), "expected a relative error ≥ 0");
+        }
         if (x.outcome != "inside" && x.outcome != "clipped" && x.outcome != "rejected")
             r.fail(c.get("outcome"), join(f, "outcome"), "expected \"inside\", \"clipped\" or \"rejected\"");
         if (const toml::array* v = r.array(c, "vertices", f, false)) {
@@ -154,10 +204,11 @@ bool has_area(const std::vector<glm::dvec4>& vertices) {
 
 Scene read_scene(const TomlReader& r) {
     const toml::table& root = r.root();
-    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "meshes", "floor_plan", "expect"});
+    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "meshes", "floor_plan", "expect", "promise"});
     Scene s;
     s.source = r.path();
     s.name = r.text(root, "name", "", "untitled scene");
+    s.promise = r.text(root, "promise", "", "");
     s.description = r.text(root, "description", "", "");
     const std::string coords = r.text(root, "coordinates", "", "world");
     if (coords == "world") s.coordinates = Coordinates::world;

@@ -9,7 +9,10 @@
 //   [[points]]    id = 1  color = "#e69f00"  p = [0, 0, 0]
 //   [[segments]]  id = 2  color = "#56b4e9"  a = [-3, 0, 0]  b = [0.5, 0.2, -2]
 //   [[polygons]]  id = 3  color = "#009e73"  vertices = [[…], […], […]]  opacity = 0.5   # opacity: 0 … 1, default 1
-//   [[expect.clip]] id = 2  outcome = "clipped"  vertices = [[…, w], [… , w]]   # clip space
+//   [[expect.clip]] id = 2  outcome = "clipped"  vertices = [[…, w], [… , w]]  max_error = 1e-15   # clip space
+//   [[expect.image]] algorithm = "zbuffer"  format = "int16"  size = [64, 48]  max_differing = 0.01  visible = [3]
+//   [[expect.rejects]] algorithm = "depth-sort"  message = "not convex"
+//   promise = "…"                    # extreme cases (assets/scenes/extreme): the behaviour the expectations check
 //   [floor_plan] …  [expect.pvs] …   # cells and portals: see scene/load_floor_plan.h
 #pragma once
 

@@ -28,6 +28,7 @@ std::string scene_toml(const Scene& s) {
     toml::table root;
     root.insert("name", s.name);
     root.insert("description", s.description);
+    if (!s.promise.empty()) root.insert("promise", s.promise);
     root.insert("coordinates", clip ? "clip" : "world");
     const Camera& c = s.camera;
     toml::table camera{{"projection", c.projection == Projection::perspective ? "perspective" : "orthographic"},

@@ -89,6 +89,7 @@ struct ExpectClip {
     std::string outcome;                              // "inside", "clipped" or "rejected"
     std::optional<std::vector<glm::dvec4>> vertices;  // the visible part in clip space, in order
     int line;                                         // where it is written, for test messages
+    std::optional<double> max_error;  // the largest relative error against the exact (GMP) answer we promise
 };
 // [[expect.bsp]]: what a BSP built with one splitter rule must give.
 struct ExpectBsp {
@@ -104,8 +105,26 @@ struct ExpectCull {
     std::vector<SceneId> kept;
     int line;
 };
+// [[expect.image]]: a hidden-surface algorithm's image of the scene against the double-precision ray cast.
+struct ExpectImage {
+    std::string algorithm;        // "zbuffer", "scanline", "bsp" or "depth-sort"
+    std::string format = "int24";   // zbuffer and scanline: the depth format
+    std::string splitter = "first"; // bsp
+    int width = 64, height = 48;
+    std::optional<double> max_differing, min_differing;  // share of pixels whose visible id differs from the ray cast
+    std::vector<SceneId> visible;  // ids that must be seen at some pixel
+    int line;
+};
+// [[expect.rejects]]: a machine refuses the scene with a clear error (its message contains `message`).
+struct ExpectRejects {
+    std::string algorithm;  // "zbuffer", "scanline", "bsp", "depth-sort" or "raycast"
+    std::string message;
+    int line;
+};
 struct Expect {
     std::vector<ExpectClip> clip;
+    std::vector<ExpectImage> image;
+    std::vector<ExpectRejects> rejects;
     std::vector<ExpectBsp> bsp;
     std::vector<ExpectCull> cull;
     std::vector<ExpectPvs> pvs;
@@ -114,6 +133,7 @@ struct Expect {
 struct Scene {
     std::string name;
     std::string description;
+    std::string promise;  // extreme cases: the behaviour we promise, in words ([expect] tables check it)
     std::string source;  // the file it came from
     Coordinates coordinates = Coordinates::world;
     Camera camera;

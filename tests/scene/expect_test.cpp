@@ -1,114 +1,94 @@
-// One test walks every scene file in assets/scenes and checks its [expect] table against every clipping machine
-// that clips its primitives.
+// One test walks every scene file in assets/scenes and checks its [expect] tables against the machines
+// (analysis/expect_check.h); a second holds the catalogue of extreme cases in assets/scenes/extreme to its promises.
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 
 #include "catch.h"
-#include "bsp/bsp_scene.h"
-#include "clipping/clip_scene.h"
-#include "culling/backface.h"
-#include "portals/pvs.h"
+#include "analysis/expect_check.h"
 #include "scene/load_scene.h"
 
 using namespace hsr::algo;
+using hsr::analysis::ExpectOutcome;
 
 namespace {
 
-bool near(const Vec4& a, const Vec4& b) {
-    for (int i = 0; i < 4; ++i)
-        if (std::fabs(a[i] - b[i]) > 1e-12 * std::max(1.0, std::fabs(b[i]))) return false;
-    return true;
-}
-
-// Polygons may start at any vertex: compare as cycles.
-bool same_cycle(const std::vector<Vec4>& got, const std::vector<Vec4>& want) {
-    if (got.size() != want.size()) return false;
-    for (std::size_t shift = 0; shift < got.size(); ++shift) {
-        bool all = true;
-        for (std::size_t i = 0; i < got.size() && all; ++i) all = near(got[(i + shift) % got.size()], want[i]);
-        if (all) return true;
-    }
-    return got.empty();
-}
-
-std::vector<std::string> scene_files() {
+std::vector<std::string> scene_files(const std::string& dir) {
     std::vector<std::string> files;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(HSR_SOURCE_DIR "/assets/scenes"))
+    for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
         if (e.path().extension() == ".toml") files.push_back(e.path().string());
     std::sort(files.begin(), files.end());
     return files;
 }
 
+std::size_t expectations(const Scene& s) {
+    const Expect& e = s.expect;
+    return e.clip.size() + e.bsp.size() + e.cull.size() + e.pvs.size() + e.image.size() + e.rejects.size();
+}
+
 }  // namespace
 
 TEST_CASE("every scene file loads and meets its expect table", "[scene][expect]") {
-    const auto files = scene_files();
+    const auto files = scene_files(HSR_SOURCE_DIR "/assets/scenes");
     REQUIRE(files.size() >= 5);
     for (const std::string& file : files) {
         INFO(file);
         const Scene scene = load_scene(file);
-        int checked = 0;
-        for (const ClipAlgorithm algorithm :
-             {ClipAlgorithm::cohen_sutherland, ClipAlgorithm::liang_barsky, ClipAlgorithm::sutherland_hodgman}) {
-            INFO("algorithm " << int(algorithm));
-            const auto answers = clip_scene(clip_job(scene), algorithm).run_to_end();
-            for (const ExpectClip& x : scene.expect.clip) {
-                const auto it = std::find_if(answers.begin(), answers.end(), [&](auto& a) { return a.id == x.id; });
-                if (it == answers.end()) continue;  // not a primitive this algorithm clips
-                INFO("expect at line " << x.line << ", id " << x.id);
-                CHECK(std::string(to_string(it->outcome)) == x.outcome);
-                if (x.vertices) CHECK(same_cycle(it->vertices, *x.vertices));
-                ++checked;
-            }
-        }
-        CHECK(checked >= int(scene.expect.clip.size()));  // every expectation was checked by some machine
-
-        for (const ExpectCull& x : scene.expect.cull) {
-            INFO("expect.cull at line " << x.line);
-            for (const BackfaceTest test :
-                 {BackfaceTest::view_vector, BackfaceTest::plane_equation, BackfaceTest::screen_winding}) {
-                const std::string name = test == BackfaceTest::view_vector      ? "view_vector"
-                                         : test == BackfaceTest::plane_equation ? "plane_equation"
-                                                                                : "screen_winding";
-                if (x.test && *x.test != name) continue;
-                INFO("test " << name);
-                CHECK(cull_back_faces(faces_of(scene), scene.camera, test).run_to_end() == x.kept);
-            }
-        }
-
-        for (const ExpectBsp& x : scene.expect.bsp) {
-            INFO("expect.bsp at line " << x.line << ", splitter " << x.splitter);
-            const SplitterRule rule = x.splitter == "first"           ? SplitterRule::first
-                                      : x.splitter == "balanced"      ? SplitterRule::balanced
-                                      : x.splitter == "fewest-splits" ? SplitterRule::fewest_splits
-                                                                      : SplitterRule::weighted;
-            BspJob job = bsp_job(scene, rule);  // as a lesson builds it: polygons, or a 2D scene's segments
-            const BspTree tree = build_bsp(std::move(job.polygons), job.options).run_to_end();
-            if (x.splits) CHECK(int(tree.splits) == *x.splits);
-            if (x.order) {
-                std::vector<SceneId> painted;
-                for (BspPolygonId p : traverse_bsp(&tree, *x.eye).run_to_end())
-                    painted.push_back(tree.polygons[std::size_t(p)].source);
-                CHECK(painted == *x.order);
-            }
-        }
-
-        if (!scene.expect.pvs.empty()) {
-            const CellModel model = cell_model(scene);
-            const Pvs pvs = build_pvs(&model).run_to_end();
-            for (const ExpectPvs& x : scene.expect.pvs) {
-                INFO("expect.pvs at line " << x.line << ", cell " << x.cell);
-                const auto named = [&](const std::string& name) {
-                    return std::uint32_t(std::find_if(model.cells.begin(), model.cells.end(), [&](const Cell& c) { return c.name == name; }) -
-                                         model.cells.begin());
-                };
-                std::vector<std::string> got, want = x.visible;
-                for (std::uint32_t c : pvs.row(named(x.cell))) got.push_back(model.cells[c].name);
-                std::sort(want.begin(), want.end());
-                std::sort(got.begin(), got.end());
-                CHECK(got == want);
-            }
+        const auto outcomes = hsr::analysis::check_expectations(scene);
+        CHECK(outcomes.size() >= expectations(scene));  // every expectation was checked by some machine
+        for (const ExpectOutcome& o : outcomes) {
+            INFO(o.what << " at line " << o.line << ": " << o.detail);
+            CHECK(o.passed);
         }
     }
+}
+
+TEST_CASE("the extreme cases: each states its promise, and keeps it", "[scene][expect][extreme]") {
+    const auto files = scene_files(HSR_SOURCE_DIR "/assets/scenes/extreme");
+    REQUIRE(files.size() >= 12);
+    std::size_t images = 0, clips = 0, rejects = 0;
+    for (const std::string& file : files) {
+        INFO(file);
+        const Scene scene = load_scene(file);
+        CHECK(scene.promise.size() > 20);
+        CHECK(expectations(scene) >= 1);
+        images += scene.expect.image.size(), clips += scene.expect.clip.size(), rejects += scene.expect.rejects.size();
+        for (const ExpectOutcome& o : hsr::analysis::check_expectations(scene)) {
+            INFO(o.what << " at line " << o.line << ": " << o.detail);
+            CHECK(o.passed);
+        }
+    }
+    CHECK(images >= 5);
+    CHECK(clips >= 5);
+    CHECK(rejects >= 1);
+}
+
+TEST_CASE("a broken promise is reported, with the line of the expectation", "[scene][expect][extreme]") {
+    const Scene s = load_scene_text("broken.toml", R"(
+[camera]
+eye = [0, 0, 10]
+[[polygons]]
+id = 1
+vertices = [[-1, -1, 0], [1, -1, 0], [1, 1, 0]]
+[[polygons]]
+id = 2
+vertices = [[-1, -1, 0], [1, 1, 0], [-1, 1, 0], [-0.5, 0.2, 0]]
+[[expect.image]]
+algorithm = "zbuffer"
+max_differing = 0
+visible = [1, 7]
+[[expect.rejects]]
+algorithm = "bsp"
+message = "polygon 2 is not convex"
+[[expect.rejects]]
+algorithm = "depth-sort"
+message = "polygon 1 is not convex"
+)");
+    const auto outcomes = hsr::analysis::check_expectations(s);
+    REQUIRE(outcomes.size() == 3);
+    CHECK_FALSE(outcomes[0].passed);  // id 7 is in no polygon (and the z-buffer refuses the concave one)
+    CHECK(outcomes[0].line == 10);
+    CHECK(outcomes[1].passed);
+    CHECK_FALSE(outcomes[2].passed);  // the message names polygon 2, not the 1 expected
+    CHECK(outcomes[2].detail.rfind("refused: polygon 2 is not convex", 0) == 0);
+    CHECK(outcomes[2].detail.find("expected a message") != std::string::npos);
 }

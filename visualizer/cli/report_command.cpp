@@ -29,10 +29,12 @@ int run_report(const ReportOptions& o) {
         std::fflush(stdout);
         rows.insert(rows.end(), part.begin(), part.end());
     }
+    const auto extremes = analysis::run_extreme_cases(data_dir() + "/assets/scenes/extreme");
     const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir);
     write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by `hsrviz report" + std::string(o.quick ? " --quick" : "") +
-                                      "`; every number comes from this run.\n\n" + analysis::report_markdown(rows));
+                                      "`; every number comes from this run.\n\n" + analysis::report_markdown(rows) +
+                                      analysis::extreme_markdown(extremes));
     write_file(dir / "report.csv", analysis::report_csv(rows));
     for (const std::string& family : analysis::families_of(rows)) write_file(dir / (family + ".svg"), analysis::error_chart_svg(rows, family));
 
@@ -42,6 +44,17 @@ int run_report(const ReportOptions& o) {
             std::printf("VIOLATION: %s, %s on %s: %llu\n", m.family.c_str(), m.method.c_str(), m.setting.c_str(), (unsigned long long)m.wrong);
             ++violations;
         }
+    for (const auto& c : extremes) {
+        if (!c.load_error.empty()) {
+            std::printf("BROKEN PROMISE: %s does not load: %s\n", c.file.c_str(), c.load_error.c_str());
+            ++violations;
+        }
+        for (const auto& x : c.outcomes)
+            if (!x.passed) {
+                std::printf("BROKEN PROMISE: %s:%d: %s: %s\n", c.file.c_str(), x.line, x.what.c_str(), x.detail.c_str());
+                ++violations;
+            }
+    }
     std::printf("wrote %s/report.md, report.csv and %zu charts (%zu rows, %d violations)\n", o.out.c_str(),
                 analysis::families_of(rows).size(), rows.size(), violations);
     return violations == 0 ? 0 : 1;

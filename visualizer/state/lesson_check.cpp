@@ -1,5 +1,6 @@
 #include "state/lesson_check.h"
 
+#include "analysis/expect_check.h"
 #include "state/lesson_script.h"
 
 namespace hsr::viz {
@@ -16,6 +17,9 @@ CheckResult check_file(const std::string& path) {
         r.chapters = lesson.chapters.size();
         for (const Chapter& c : lesson.chapters) r.questions += c.question.has_value();
         for (std::string& p : script.problems(lesson, event_kinds(lesson))) r.problems.push_back(std::move(p));
+        // A scene's own [expect] tables, against the machines (a teacher's scene states what it should show)
+        for (const analysis::ExpectOutcome& o : analysis::check_expectations(lesson.scene))
+            if (!o.passed) r.problems.push_back(lesson.scene.source + ":" + std::to_string(o.line) + ": " + o.what + ": " + o.detail);
     } catch (const std::exception& e) {
         r.problems.push_back(e.what());
     }
