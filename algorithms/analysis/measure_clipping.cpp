@@ -7,7 +7,7 @@
 
 #include "analysis/exact_clip.h"
 #include "analysis/measurement.h"
-#include "analysis/straight_clip.h"
+#include "clipping/straight_clip.h"
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
@@ -15,7 +15,12 @@
 namespace hsr::analysis {
 namespace {
 
+using algo::PlainSegment;
 using algo::Vec4;
+using algo::Vec4Of;
+using algo::plain_cohen_sutherland;
+using algo::plain_liang_barsky;
+using algo::plain_sutherland_hodgman;
 
 // A point of clip space spread over the volume and well beyond it, a fifth of them behind the eye (w < 0), so
 // that segments cross every plane and w = 0.

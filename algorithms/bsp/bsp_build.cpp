@@ -161,7 +161,7 @@ Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions op
         if (in.vertices.size() < 2) throw InvalidInput(name + " has fewer than 2 vertices");
         for (std::size_t i = 0; i < in.vertices.size(); ++i) {
             const Vec3& v = in.vertices[i];
-            require_finite(glm::dvec4(v, 1.0), name + " vertex " + std::to_string(i));
+            require_finite(glm::dvec4(v, 1.0), [&] { return name + " vertex " + std::to_string(i); });
             lo = glm::min(lo, v);
             hi = glm::max(hi, v);
         }

@@ -14,7 +14,7 @@ void require_finite(const ClipSegment& s) {
 
 void require_finite(const ClipPolygon& p) {
     for (std::size_t i = 0; i < p.vertices.size(); ++i)
-        require_finite(p.vertices[i], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(i));
+        require_finite(p.vertices[i], [&] { return "polygon " + std::to_string(p.id) + " vertex " + std::to_string(i); });
 }
 
 void require_finite(const ClipPoint& p) { require_finite(p.p, "point " + std::to_string(p.id)); }

@@ -9,7 +9,8 @@ void require_finite(double value, const std::string& where) {
 
 void require_finite(const glm::dvec4& p, const std::string& where) {
     static constexpr const char* axis[] = {"x", "y", "z", "w"};
-    for (int i = 0; i < 4; ++i) require_finite(p[i], where + "." + axis[i]);
+    for (int i = 0; i < 4; ++i)
+        if (!std::isfinite(p[i])) require_finite(p[i], where + "." + axis[i]);  // the name is made only to throw
 }
 
 }  // namespace hsr::algo

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <glm/vec4.hpp>
 
@@ -26,6 +27,19 @@ public:
 // Throws InvalidInput("<where>.<x|y|z|w> is NaN") or "... is infinite" unless every coordinate is finite.
 void require_finite(const glm::dvec4& p, const std::string& where);
 void require_finite(double value, const std::string& where);
+// The same with the name made only on failure: `where()` returns it (for loops over many vertices).
+template <class Where>
+    requires std::is_invocable_r_v<std::string, Where>
+void require_finite(const glm::dvec4& p, Where&& where) {
+    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w))) require_finite(p, std::string(where()));
+}
+
+// std::llround's answer (halves away from zero) without its call: x − trunc(x) is exact, so the test is too.
+inline long long round_half_away(double x) {
+    double r = std::trunc(x);
+    if (std::fabs(x - r) >= 0.5) r += std::copysign(1.0, x);
+    return static_cast<long long>(r);
+}
 
 struct ClipTolerance {
     static constexpr double w_epsilon = 1e-9;  // clip-space w below which a point counts as at or behind the eye

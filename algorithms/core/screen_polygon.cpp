@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "clipping/sutherland_hodgman.h"
+#include "clipping/straight_clip.h"
 #include "core/numeric.h"
 #include "core/plane.h"
 
@@ -67,18 +67,20 @@ void require_convex(const ScenePolygon& p) {
 ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport) {
     ScreenPolygon out{.id = id, .color = color};
     // Clip in homogeneous clip space before the divide (near plane included)
-    const PolygonClip visible =
-        sutherland_hodgman(ClipPolygon{id, std::move(clip_vertices)}, {.space = ClipSpace::homogeneous}).run_to_end();
-    if (visible.vertices.size() < 3) {
+    // (the straight-line form of Sutherland–Hodgman: the machine's answer bit for bit, without its events, which
+    // no view of the z-buffer shows; clipping/straight_clip.h)
+    for (const auto& v : clip_vertices) require_finite(v, [&] { return "polygon " + std::to_string(id); });
+    const std::vector<glm::dvec4> visible = plain_sutherland_hodgman(std::move(clip_vertices));
+    if (visible.size() < 3) {
         out.status = ScreenStatus::outside_view;
         return out;
     }
     // Divide by w, map to the viewport, snap to sub-pixels
     std::vector<glm::dvec3> exact;
-    for (const Vec4& c : visible.vertices) {
+    for (const glm::dvec4& c : visible) {
         const glm::dvec3 ndc = glm::dvec3(c) / c.w;
         const glm::dvec3 s((ndc.x + 1) * 0.5 * viewport.width, (1 - ndc.y) * 0.5 * viewport.height, (ndc.z + 1) * 0.5);
-        const ScreenVertex v{std::llround(s.x * subpixels), std::llround(s.y * subpixels), std::clamp(s.z, 0.0, 1.0)};
+        const ScreenVertex v{round_half_away(s.x * subpixels), round_half_away(s.y * subpixels), std::clamp(s.z, 0.0, 1.0)};
         if (out.vertices.empty() || v.x != out.vertices.back().x || v.y != out.vertices.back().y) {
             out.vertices.push_back(v);
             exact.push_back(s);
@@ -110,7 +112,7 @@ std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewpor
     std::vector<ScreenPolygon> out;
     for (const ScenePolygon& p : scene.polygons) {
         for (std::size_t k = 0; k < p.vertices.size(); ++k)
-            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
+            require_finite(p.vertices[k], [&] { return "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k); });
         if (p.vertices.size() < 3) continue;  // a 2D segment: nothing to fill
         std::vector<glm::dvec4> clip;
         if (scene.coordinates == Coordinates::world) require_convex(p);

@@ -60,7 +60,7 @@ Primitives primitives_of(const Scene& scene) {
         const ScenePolygon& p = scene.polygons[s];
         std::vector<Vec3> v;
         for (std::size_t k = 0; k < p.vertices.size(); ++k) {
-            require_finite(p.vertices[k], "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k));
+            require_finite(p.vertices[k], [&] { return "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k); });
             v.emplace_back(p.vertices[k]);
         }
         Plane plane;

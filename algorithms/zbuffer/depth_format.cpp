@@ -1,5 +1,7 @@
 #include "zbuffer/depth_format.h"
 
+#include "core/numeric.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -63,8 +65,8 @@ std::uint64_t code(DepthFormat f, double z, DepthRange r) {
     switch (f) {
         case DepthFormat::int16:
         case DepthFormat::int24:
-        case DepthFormat::int32: return std::uint64_t(std::llround(levels(f) * window_depth(z, r)));
-        case DepthFormat::linear24: return std::uint64_t(std::llround(levels(f) * (z - r.near) / (r.far - r.near)));
+        case DepthFormat::int32: return std::uint64_t(round_half_away(levels(f) * window_depth(z, r)));
+        case DepthFormat::linear24: return std::uint64_t(round_half_away(levels(f) * (z - r.near) / (r.far - r.near)));
         case DepthFormat::float32: return std::bit_cast<std::uint32_t>(float(window_depth(z, r)));
         case DepthFormat::float32_reversed:  // larger is nearer: count down from the bit pattern of 1.0f
             return std::uint64_t(std::bit_cast<std::uint32_t>(1.0f)) -
@@ -78,17 +80,21 @@ std::uint64_t code_of_window_depth(DepthFormat f, double d, DepthRange r, bool p
     switch (f) {
         case DepthFormat::int16:
         case DepthFormat::int24:
-        case DepthFormat::int32: return std::uint64_t(std::llround(levels(f) * d));
+        case DepthFormat::int32: return std::uint64_t(round_half_away(levels(f) * d));
         case DepthFormat::linear24: {
             const double a = r.far / (r.far - r.near), b = r.far * r.near / (r.near - r.far);
             const double linear = perspective ? (b / (d - a) - r.near) / (r.far - r.near) : d;
-            return std::uint64_t(std::llround(levels(f) * std::clamp(linear, 0.0, 1.0)));
+            return std::uint64_t(round_half_away(levels(f) * std::clamp(linear, 0.0, 1.0)));
         }
         case DepthFormat::float32: return std::bit_cast<std::uint32_t>(float(d));
         case DepthFormat::float32_reversed:
             return std::uint64_t(std::bit_cast<std::uint32_t>(1.0f)) - std::bit_cast<std::uint32_t>(float(1 - d));
     }
     return 0;
+}
+
+double window_depth_levels(DepthFormat f) {
+    return f == DepthFormat::int16 || f == DepthFormat::int24 || f == DepthFormat::int32 ? levels(f) : 0;
 }
 
 std::uint64_t far_code(DepthFormat f, DepthRange r) { return code_of_window_depth(f, 1.0, r, true); }

@@ -34,6 +34,9 @@ std::uint64_t code(DepthFormat f, double z, DepthRange r);
 // The code stored for a window depth d ∈ [0, 1] as a rasteriser interpolates it (d is affine on the screen).
 // With a perspective camera d = a + b/z; with an orthographic one d is already linear in z, which linear24 uses.
 std::uint64_t code_of_window_depth(DepthFormat f, double d, DepthRange r, bool perspective = true);
+// 2^N − 1 for the window-depth integer formats (int16, int24, int32), whose code_of_window_depth is
+// round(levels · clamp(d, 0, 1)); 0 for the others. For fills that compute that code inline, pixel by pixel.
+double window_depth_levels(DepthFormat f);
 // The code every depth buffer starts with: the far plane's.
 std::uint64_t far_code(DepthFormat f, DepthRange r);
 

@@ -2,11 +2,46 @@
 
 #include "zbuffer/z_merge.h"
 
+#include <algorithm>
+
+#include "core/numeric.h"
+
 namespace hsr::algo {
+namespace {
+
+// The depth test along one span, with no events: the loop of the machine below when no view asks for pixels. It
+// lives outside the coroutine so that its variables stay in registers, not in the coroutine's frame. Returns false
+// when the step bound stopped it (at the same pixel the machine's own loop would stop).
+bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int y, Span span, double z, const ZBufferOptions& o,
+               double levels, std::uint64_t& tested, std::uint64_t& written) {
+    const std::size_t row = std::size_t(y) * std::size_t(o.viewport.width);
+    for (int x = span.begin; x < span.end; ++x, z += p.plane.per_x) {
+        if (out.tested == o.max_pixel_tests) return false;
+        const std::size_t k = row + std::size_t(x);
+        const std::uint64_t incoming = levels > 0 ? std::uint64_t(round_half_away(levels * std::clamp(z, 0.0, 1.0)))
+                                                  : code_of_window_depth(o.format, z, o.range, o.perspective);
+        ++tested, ++out.tested;
+        if (incoming >= out.depth[k]) continue;
+        out.depth[k] = std::uint32_t(incoming);
+        out.polygon[k] = index;
+        out.image.ids[k] = p.id;
+        out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
+        ++written, ++out.written;
+    }
+    return true;
+}
+
+}  // namespace
 
 Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons, ZBufferOptions o) {
     const bool per_pixel = o.detail == EventDetail::pixel;
     const int w = o.viewport.width, h = o.viewport.height;
+    // The integer formats' code, inline (code_of_window_depth's formula: this loop runs for every pixel tested)
+    const double levels = window_depth_levels(o.format);
+    const auto code_at = [&](double z) -> std::uint64_t {
+        if (levels > 0) return std::uint64_t(round_half_away(levels * std::clamp(z, 0.0, 1.0)));
+        return code_of_window_depth(o.format, z, o.range, o.perspective);
+    };
     // Initialise: every depth at the far plane, every colour the background
     FrameDepth out = cleared_buffers(o);
     co_yield BufferCleared{w, h, far_code(o.format, o.range)};
@@ -26,6 +61,14 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
             if (span.end <= span.begin) continue;
             double z = row_depth + p.plane.per_x * pixel_centre(span.begin);
             if (o.detail != EventDetail::polygon) co_yield SpanStarted{index, y, span.begin, span.end, z};
+            if (!per_pixel) {
+                if (!fill_span(out, p, std::int32_t(index), y, span, z, o, levels, tested, written)) {
+                    out.bounded = true;
+                    co_yield FillStepBoundReached{o.max_pixel_tests};
+                    co_return out;
+                }
+                continue;
+            }
             for (int x = span.begin; x < span.end; ++x, z += p.plane.per_x) {
                 if (out.tested == o.max_pixel_tests) {
                     out.bounded = true;
@@ -33,7 +76,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                     co_return out;
                 }
                 const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                const std::uint64_t incoming = code_of_window_depth(o.format, z, o.range, o.perspective);
+                const std::uint64_t incoming = code_at(z);
                 const std::uint64_t stored = out.depth[k];
                 ++tested, ++out.tested;
                 if (per_pixel) co_yield PixelTested{x, y, z, incoming, stored};

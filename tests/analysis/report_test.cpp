@@ -8,7 +8,7 @@
 #include "catch.h"
 #include "analysis/measurement.h"
 #include "analysis/report_files.h"
-#include "analysis/straight_clip.h"
+#include "clipping/straight_clip.h"
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
@@ -43,14 +43,14 @@ TEST_CASE("the straight-line clippers give the machines' answers bit for bit in 
         const algo::Vec4 b = by_hand ? fixed[std::size_t(k)][1] : algo::Vec4(u(rng), u(rng), u(rng), w(rng));
         const algo::Vec4 c = by_hand ? fixed[std::size_t(k)][2] : algo::Vec4(u(rng), u(rng), u(rng), w(rng));
         const algo::SegmentClip lb = algo::liang_barsky({0, a, b}).run_to_end();
-        const auto plain_lb = analysis::plain_liang_barsky(a, b);
+        const auto plain_lb = algo::plain_liang_barsky(a, b);
         REQUIRE(plain_lb.has_value() == (lb.outcome != algo::ClipOutcome::rejected));
         if (plain_lb) CHECK((plain_lb->first == lb.a && plain_lb->second == lb.b));
         const algo::SegmentClip cs = algo::cohen_sutherland({0, a, b}).run_to_end();
-        const auto plain_cs = analysis::plain_cohen_sutherland(a, b);
+        const auto plain_cs = algo::plain_cohen_sutherland(a, b);
         REQUIRE(plain_cs.has_value() == (cs.outcome != algo::ClipOutcome::rejected));
         if (plain_cs) CHECK((plain_cs->first == cs.a && plain_cs->second == cs.b));
-        CHECK(analysis::plain_sutherland_hodgman(std::vector<algo::Vec4>{a, b, c}) ==
+        CHECK(algo::plain_sutherland_hodgman(std::vector<algo::Vec4>{a, b, c}) ==
               algo::sutherland_hodgman({0, {a, b, c}}).run_to_end().vertices);
     }
 }

@@ -1,7 +1,7 @@
 // The cost of being a step-through machine, measured side by side in one run (figures, not tests):
 //   build/tests/bench/hsr_bench --benchmark_filter=ClipCost --benchmark_counters_tabular=true
 // For each clipper, the same random primitives go through (1) the straight-line formula written with no events
-// (analysis/straight_clip.h, bit for bit the machine's answers), (2) the machine drained to its end (every event
+// (clipping/straight_clip.h, bit for bit the machine's answers), (2) the machine drained to its end (every event
 // made and dropped), and (3) the machine recorded by the player as the window does (events stored, keyframes
 // taken). Each is timed as the median of 5 runs; the counters give ns per primitive and per event and the ratios.
 #include <algorithm>
@@ -10,7 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "analysis/straight_clip.h"
+#include "clipping/straight_clip.h"
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
@@ -52,9 +52,9 @@ void BM_ClipCost(benchmark::State& state) {
         const double straight = median_ms([&] {
             kept = 0;
             for (const auto& s : job.segments)
-                kept += (algorithm == ClipAlgorithm::liang_barsky ? hsr::analysis::plain_liang_barsky(s.p1, s.p2)
-                                                                  : hsr::analysis::plain_cohen_sutherland(s.p1, s.p2)).has_value();
-            for (const auto& p : job.polygons) kept += !hsr::analysis::plain_sutherland_hodgman(p.vertices).empty();
+                kept += (algorithm == ClipAlgorithm::liang_barsky ? plain_liang_barsky(s.p1, s.p2)
+                                                                  : plain_cohen_sutherland(s.p1, s.p2)).has_value();
+            for (const auto& p : job.polygons) kept += !plain_sutherland_hodgman(p.vertices).empty();
         });
         benchmark::DoNotOptimize(kept);
         const double drained = median_ms([&] {

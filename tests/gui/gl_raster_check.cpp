@@ -4,26 +4,21 @@
 //   gl_raster_check mesh      a mesh of triangles with vertices on pixel centres, pixel corners and between
 //                             them, covering the viewport: coverage and the fill rule on shared edges
 //   gl_raster_check overlap   random overlapping, piercing triangles: coverage and the depth test
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/glcorearb.h>
-#include <SDL.h>
+#include <glm/vec2.hpp>
 
-#include "zbuffer/zbuffer_fill.h"
+#include "gl_peer.h"
 
-using namespace hsr::algo;
+using hsr::test::Triangle;
 
 namespace {
 
 constexpr int width = 64, height = 48;
-
-struct Triangle {
-    glm::dvec4 v[3];  // clip space
-};
 
 std::vector<Triangle> mesh(std::mt19937& rng) {
     // Grid points snapped to quarter pixels (some on centres, some on corners), in NDC, covering [-1, 1]²
@@ -61,96 +56,17 @@ std::vector<Triangle> overlap(std::mt19937& rng) {
     return t;
 }
 
-GLuint shader(GLenum type, const char* source) {
-    const GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, nullptr);
-    glCompileShader(s);
-    return s;
-}
-
-// Index + 1 per pixel (0 for background), rows top first, from GL.
-std::vector<int> gl_ids(const std::vector<Triangle>& tris) {
-    GLuint fbo, colour, depth;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glGenRenderbuffers(1, &colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-    glGenRenderbuffers(1, &depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, shader(GL_VERTEX_SHADER, "#version 330 core\nlayout(location = 0) in vec4 p; layout(location = 1) in vec3 c;\n"
-                                                      "flat out vec3 colour; void main() { gl_Position = p; colour = c; }\n"));
-    glAttachShader(program, shader(GL_FRAGMENT_SHADER, "#version 330 core\nflat in vec3 colour; out vec4 o;\n"
-                                                        "void main() { o = vec4(colour, 1); }\n"));
-    glLinkProgram(program);
-    std::vector<float> data;
-    for (std::size_t k = 0; k < tris.size(); ++k)
-        for (const auto& v : tris[k].v) {
-            const int id = int(k) + 1;
-            data.insert(data.end(), {float(v.x), float(v.y), float(v.z), float(v.w), float(id & 255) / 255.f,
-                                     float((id >> 8) & 255) / 255.f, 0});
-        }
-    GLuint vao, vbo;
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glGenBuffers(1, &vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), reinterpret_cast<void*>(4 * sizeof(float)));
-    glEnableVertexAttribArray(0);
-    glEnableVertexAttribArray(1);
-    glViewport(0, 0, width, height);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glUseProgram(program);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(tris.size() * 3));
-    std::vector<unsigned char> rgba(std::size_t(width * height * 4));
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    std::vector<int> ids(std::size_t(width * height));
-    for (int y = 0; y < height; ++y)  // GL's rows go up; ours go down
-        for (int x = 0; x < width; ++x) {
-            const unsigned char* c = &rgba[std::size_t(((height - 1 - y) * width + x) * 4)];
-            ids[std::size_t(y * width + x)] = c[0] | (c[1] << 8);
-        }
-    return ids;
-}
-
-std::vector<int> our_ids(const std::vector<Triangle>& tris) {
-    std::vector<ScreenPolygon> polys;
-    for (std::size_t k = 0; k < tris.size(); ++k)
-        polys.push_back(project_polygon(SceneId(k + 1), {}, {tris[k].v[0], tris[k].v[1], tris[k].v[2]}, {width, height}));
-    const FrameDepth f = zbuffer_fill(polys, {.viewport = {width, height}, .format = DepthFormat::int24,
-                                              .range = {1, 10}, .perspective = true, .detail = EventDetail::polygon})
-                             .run_to_end();
-    std::vector<int> ids;
-    for (auto i : f.image.ids) ids.push_back(i);
-    return ids;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     const std::string what = argc > 1 ? argv[1] : "mesh";
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) return std::fprintf(stderr, "gl_raster_check: %s\n", SDL_GetError()), 1;
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
-    SDL_Window* window = SDL_CreateWindow("gl_raster_check", 0, 0, width, height, SDL_WINDOW_OPENGL | SDL_WINDOW_HIDDEN);
-    SDL_GLContext context = window ? SDL_GL_CreateContext(window) : nullptr;
-    if (!context) return std::fprintf(stderr, "gl_raster_check: %s\n", SDL_GetError()), 1;
+    const hsr::test::GlContext gl_context(width, height);
+    if (!gl_context.context) return std::fprintf(stderr, "gl_raster_check: %s\n", SDL_GetError()), 1;
     int differ = 0, covered = 0, runs = 0;
     for (std::uint32_t seed = 1; seed <= 20; ++seed, ++runs) {
         std::mt19937 rng(seed);
         const auto tris = what == "mesh" ? mesh(rng) : overlap(rng);
-        const auto gl = gl_ids(tris), ours = our_ids(tris);
+        const auto gl = hsr::test::gl_ids(tris, width, height), ours = hsr::test::our_ids(tris, width, height);
         for (std::size_t k = 0; k < gl.size(); ++k) {
             covered += ours[k] != 0;
             if (gl[k] != ours[k]) {
@@ -161,9 +77,6 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("gl_raster_check %s: %d of %d pixels differ from OpenGL (%s), %d covered\n", what.c_str(), differ,
-                runs * width * height, reinterpret_cast<const char*>(glGetString(GL_RENDERER)), covered);
-    SDL_GL_DeleteContext(context);
-    SDL_DestroyWindow(window);
-    SDL_Quit();
+                runs * width * height, gl_context.renderer(), covered);
     return differ == 0 ? 0 : 1;
 }

@@ -15,7 +15,7 @@
 
 #include "core/numeric.h"
 
-namespace hsr::analysis {
+namespace hsr::algo {
 
 template <class T>
 using Vec4Of = glm::vec<4, T>;
@@ -30,7 +30,7 @@ T plain_boundary(const Vec4Of<T>& p, int k) {
         case 3: return p.w + p.y;
         case 4: return p.w - p.x;
         case 5: return p.w + p.x;
-        default: return p.w - T(algo::ClipTolerance::w_epsilon);
+        default: return p.w - T(ClipTolerance::w_epsilon);
     }
 }
 
@@ -45,7 +45,7 @@ Vec4Of<T> plain_intersection(int k, const Vec4Of<T>& p1, const Vec4Of<T>& p2, T 
         case 3: i.y = -i.w; break;
         case 4: i.x = i.w; break;
         case 5: i.x = -i.w; break;
-        default: i.w = T(algo::ClipTolerance::w_epsilon); break;
+        default: i.w = T(ClipTolerance::w_epsilon); break;
     }
     return i;
 }
@@ -122,4 +122,4 @@ std::vector<Vec4Of<T>> plain_sutherland_hodgman(std::vector<Vec4Of<T>> polygon) 
     return polygon;
 }
 
-}  // namespace hsr::analysis
+}  // namespace hsr::algo
