@@ -59,6 +59,7 @@
 #include "state/classroom.h"
 #include "state/file_watch.h"
 #include "gif_writer.h"
+#include "scripted_input.h"
 #include "cli/commands.h"
 #include "scene/save_scene.h"
 
@@ -161,6 +162,8 @@ struct Lessonplay {
         if (auto* bsp = dynamic_cast<BspSession*>(session.get())) {  // editing a 2D scene
             bool edited = false;
             if (a.move_vertex) bsp->move_vertex(a.move_vertex->input, a.move_vertex->vertex, a.move_vertex->to), edited = true;
+            if (a.add_segment) edited |= bsp->add_segment(a.add_segment->first, a.add_segment->second);
+            if (a.delete_input) edited |= bsp->delete_input(*a.delete_input);
             if (a.undo) edited |= bsp->undo();
             if (a.redo) edited |= bsp->redo();
             if (edited) classroom.attach(*session);
@@ -221,20 +224,6 @@ struct Lessonplay {
         }
     }
 };
-
-// "Space", "Right", "Shift+Left", "Home", "End", "F5" as an SDL key press; false for a name it does not know.
-bool key_event(const std::string& name, SDL_Event& e) {
-    const bool shift = name.rfind("Shift+", 0) == 0;
-    const SDL_Keycode code = SDL_GetKeyFromName(shift ? name.substr(6).c_str() : name.c_str());
-    if (code == SDLK_UNKNOWN) return false;
-    e = SDL_Event{};
-    e.type = SDL_KEYDOWN;
-    e.key.state = SDL_PRESSED;
-    e.key.keysym.sym = code;
-    e.key.keysym.scancode = SDL_GetScancodeFromKey(code);
-    e.key.keysym.mod = shift ? KMOD_LSHIFT : KMOD_NONE;
-    return true;
-}
 
 void keys(const SDL_Event& e, UiActions& a) {
     if (e.type != SDL_KEYDOWN) return;
@@ -307,6 +296,27 @@ bool near_the_eye(const Renderer& r, const Session* s, float x, float y) {
     return std::hypot(sx - x, sy - y) < 14;
 }
 
+// A world point of the 3D view as a window point (for scripted gestures given in world coordinates).
+glm::vec2 window_point(const Renderer& r, const glm::dvec3& p) {
+    const glm::vec4 c = r.view_projection * glm::vec4(glm::vec3(p), 1);
+    return {(c.x / c.w * 0.5f + 0.5f) * r.view_w, (0.5f - c.y / c.w * 0.5f) * r.view_h};
+}
+
+// The input segment of a 2D BSP lesson within a few pixels of a window point (right-click deletes it), if any.
+std::optional<std::size_t> segment_near(const Renderer& r, const Session* s, float x, float y) {
+    const auto* bsp = dynamic_cast<const BspSession*>(s);
+    if (!bsp || !bsp->view().two_d) return std::nullopt;
+    const auto& inputs = bsp->job().polygons;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        if (inputs[i].vertices.size() != 2) continue;
+        const glm::vec2 a = window_point(r, inputs[i].vertices[0]), b = window_point(r, inputs[i].vertices[1]), p(x, y);
+        const glm::vec2 ab = b - a;
+        const float t = glm::dot(ab, ab) > 0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.f, 1.f) : 0.f;
+        if (glm::length(p - (a + t * ab)) < 8) return i;
+    }
+    return std::nullopt;
+}
+
 // F1: every key, over the view.
 void keys_panel(const PanelLayout& l) {
     static constexpr std::pair<const char*, const char*> rows[] = {
@@ -317,6 +327,7 @@ void keys_panel(const PanelLayout& l) {
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
+        {"Shift+drag, right-click", "2D scenes: draw a new segment; delete the segment clicked"},
     };
     ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
@@ -397,7 +408,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
                                                                : "the canonical cube −1 ≤ x, y, z ≤ 1";
     }
     if (bsp) {
-        draw_bsp_view(bsp->view(), s.lesson().scene, r.batches, r.labels);
+        draw_bsp_view(bsp->view(), bsp->edited_scene(), r.batches, r.labels);  // edits add segments: their colours
         detail = "splitter: " + std::string(algo::to_string(bsp->stats().rule)) + " · ε = 1e-9 × extent" +
                  (bsp->view().two_d ? " · 2D" : "");
     }
@@ -574,6 +585,7 @@ int run_app(const AppOptions& o) {
         bool dragging = false, dragging_eye = false, running = true;
         std::int64_t dragging_input = -1;  // the vertex of a 2D scene being dragged: its input (−1: none) …
         std::size_t dragging_corner = 0;   // … and which of its vertices
+        std::optional<glm::dvec3> drawing_from;  // Shift+drag in a 2D scene: where the new segment starts
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
         std::size_t next_key = 0;
@@ -582,13 +594,28 @@ int run_app(const AppOptions& o) {
         while (running) {
             UiActions actions;
             SDL_Event e;
-            if (frame > 0 && next_key < o.keys.size()) {  // scripted keys go through the same queue as real ones
-                if (!key_event(o.keys[next_key], e)) {
-                    std::fprintf(stderr, "hsrviz: --keys: unknown key \"%s\"\n", o.keys[next_key].c_str());
+            bool scripted_shift = false;
+            if (frame > 0 && next_key < o.keys.size()) {  // scripted input goes through the same queue as real input
+                const auto input = parse_scripted_input(o.keys[next_key]);
+                if (!input) {
+                    std::fprintf(stderr, "hsrviz: --keys: unknown key or gesture \"%s\"\n", o.keys[next_key].c_str());
                     exit_code = 2;
                     break;
                 }
-                SDL_PushEvent(&e);
+                if (input->kind == ScriptedInput::Kind::key) {
+                    key_event(input->key, e);
+                    SDL_PushEvent(&e);
+                } else {
+                    const glm::vec2 a = window_point(renderer, {input->from, 0.0}), b = window_point(renderer, {input->to, 0.0});
+                    const auto ax = int(std::lround(a.x)), ay = int(std::lround(a.y)), bx = int(std::lround(b.x)), by = int(std::lround(b.y));
+                    const bool right = input->kind == ScriptedInput::Kind::right_click;
+                    scripted_shift = input->kind == ScriptedInput::Kind::shift_drag;
+                    if (scripted_shift) SDL_SetModState(KMOD_LSHIFT);
+                    for (SDL_Event m : {mouse_motion_event(ax, ay, 0, 0, false), mouse_button_event(true, right ? SDL_BUTTON_RIGHT : SDL_BUTTON_LEFT, ax, ay),
+                                        mouse_motion_event(bx, by, bx - ax, by - ay, !right),
+                                        mouse_button_event(false, right ? SDL_BUTTON_RIGHT : SDL_BUTTON_LEFT, bx, by)})
+                        SDL_PushEvent(&m);
+                }
                 ++next_key;
             }
             while (SDL_PollEvent(&e)) {
@@ -597,14 +624,25 @@ int run_app(const AppOptions& o) {
                 if (!io.WantCaptureKeyboard) keys(e, actions);
                 if (!io.WantCaptureMouse) {  // drag the eye of a 2D lesson, or orbit and zoom the 3D view
                     if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
-                        dragging_eye = near_the_eye(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
-                        const auto v = dragging_eye ? std::nullopt : vertex_near(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
+                        const float x = float(e.button.x), y = float(e.button.y);
+                        dragging_eye = near_the_eye(renderer, lp.session.get(), x, y);
+                        const auto v = dragging_eye ? std::nullopt : vertex_near(renderer, lp.session.get(), x, y);
                         dragging_input = v ? std::int64_t(v->first) : -1, dragging_corner = v ? v->second : 0;
-                        dragging = !dragging_eye && dragging_input < 0;
+                        // Shift+drag on empty ground of a 2D scene draws a new segment; otherwise a drag orbits
+                        const auto* bsp = dynamic_cast<const BspSession*>(lp.session.get());
+                        drawing_from.reset();
+                        if (!dragging_eye && dragging_input < 0 && (SDL_GetModState() & KMOD_SHIFT) && bsp && bsp->view().two_d)
+                            drawing_from = on_floor_plan(renderer, x, y);
+                        dragging = !dragging_eye && dragging_input < 0 && !drawing_from;
                     }
+                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_RIGHT)
+                        actions.delete_input = segment_near(renderer, lp.session.get(), float(e.button.x), float(e.button.y));
+                    if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT && drawing_from)
+                        if (const auto to = on_floor_plan(renderer, float(e.button.x), float(e.button.y)))
+                            actions.add_segment = std::pair{*drawing_from, *to};
                     if (e.type == SDL_MOUSEWHEEL) lp.camera.zoom(float(e.wheel.y));
                 }
-                if (e.type == SDL_MOUSEBUTTONUP) dragging = dragging_eye = false, dragging_input = -1;
+                if (e.type == SDL_MOUSEBUTTONUP) dragging = dragging_eye = false, dragging_input = -1, drawing_from.reset();
                 if (e.type == SDL_MOUSEMOTION && dragging_input >= 0)
                     if (const auto at = on_floor_plan(renderer, float(e.motion.x), float(e.motion.y)))
                         actions.move_vertex = UiActions::VertexMove{std::size_t(dragging_input), dragging_corner, *at};
@@ -612,6 +650,7 @@ int run_app(const AppOptions& o) {
                 if (e.type == SDL_MOUSEMOTION && dragging_eye)
                     actions.move_eye = on_floor_plan(renderer, float(e.motion.x), float(e.motion.y));
             }
+            if (scripted_shift) SDL_SetModState(KMOD_NONE);
             const std::uint64_t ticks = SDL_GetTicks64();
             // recording and screenshots take one Step per frame, so the same command gives the same picture
             if ((o.record_dir || o.gif || (o.screenshot && o.keys.empty())) && frame > 0) actions.step = true;

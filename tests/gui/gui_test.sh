@@ -142,6 +142,23 @@ case "$case" in
     "$hsrviz" --help | grep -q "trace"
     "$hsrviz" trace --help | grep -q -- "--out"
     if "$hsrviz" trace /nonexistent.toml --out x.jsonl 2>/dev/null; then exit 1; fi ;;
+  edit)  # mouse gestures on a 2D scene: drag an end, draw a segment, delete one; the machine reruns; S saves
+    "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot before.png --frames 3 --keys Right > before.txt
+    "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot after.png --frames 8 \
+      --keys "Right,Drag:4:1:4:-2,ShiftDrag:-4:-3:3:0,RightClick:-2:-1.75,S" > after.txt
+    cat before.txt after.txt
+    "$png_check" after.png 1280 800
+    saved=hsrviz-export/04_bsp_build-edited.toml
+    test -s "$saved"
+    test "$(grep -c '^\[\[segments\]\]' "$saved")" -eq 5   # 5 segments: one added, one deleted
+    grep -q '^id = 6$' "$saved"                                  # the new one has the next free id
+    if grep -q '^id = 5$' "$saved"; then exit 1; fi              # segment 5 (through (-2, -1.75)) is gone
+    grep -q 'b = \[ 4.0[0-9]*, -1.99[0-9]*, 0.0 \]' "$saved"    # segment 1's end dragged from (4, 1) to (4, -2)
+    # the machine reran on the edited scene: a different number of steps, the cursor still at step 1
+    grep -q "at step 1 of" after.txt
+    test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"
+    if "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot x.png --frames 2 --keys "Drag:1:2" 2> bad.txt; then exit 1; fi
+    grep -q 'unknown key or gesture "Drag:1:2"' bad.txt ;;
   report)  # hsrviz report --quick: every family's table, a CSV row per measurement, a chart per family
     "$hsrviz" report --quick --out rep > out.txt
     grep -q "0 violations" out.txt

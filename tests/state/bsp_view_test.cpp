@@ -138,3 +138,51 @@ TEST_CASE("dragging a segment's end reruns the build, keeps the step, undoes, re
     session.move_vertex(0, 1, session.job().polygons[0].vertices[0]);
     CHECK(session.job().polygons[0].vertices[1] == to + Vec3(0.1, 0, 0));
 }
+
+TEST_CASE("adding and deleting segments reruns the build, undoes, redoes and saves", "[state][bsp][editing]") {
+    BspSession session(load_lesson(data_dir() + "/lessons/04_bsp_build.toml"));
+    const std::size_t n = session.job().polygons.size();
+    session.seek(4);
+    // a new segment across the whole scene: the next free id, and the tree splits more
+    const std::size_t splits_before = std::size_t(build_bsp(session.job().polygons, session.job().options).run_to_end().splits);
+    REQUIRE(session.add_segment({-20, 0.5, 2}, {20, 0.7, -1}));
+    REQUIRE(session.job().polygons.size() == n + 1);
+    const BspInput& added = session.job().polygons.back();
+    CHECK(added.vertices[0] == Vec3(-20, 0.5, 0));  // in the plane z = 0
+    std::int32_t largest = 0;
+    for (std::size_t k = 0; k < n; ++k) largest = std::max(largest, session.job().polygons[k].id);
+    CHECK(added.id == largest + 1);
+    CHECK(session.cursor() == 4);
+    CHECK(std::size_t(build_bsp(session.job().polygons, session.job().options).run_to_end().splits) > splits_before);
+    CHECK_FALSE(session.add_segment({1, 1, 0}, {1, 1, 0}));  // no length: not an edit
+    // delete the first input: the others stay, in order
+    const std::int32_t second = session.job().polygons[1].id;
+    REQUIRE(session.delete_input(0));
+    CHECK(session.job().polygons.size() == n);
+    CHECK(session.job().polygons[0].id == second);
+    // saved: the deleted segment is gone, the added one is there with a colour
+    Scene saved = load_scene_text("edited.toml", scene_toml(session.edited_scene()));
+    CHECK(saved.segments.size() == n);
+    const std::int32_t deleted = BspSession(load_lesson(data_dir() + "/lessons/04_bsp_build.toml")).job().polygons[0].id;
+    CHECK(std::none_of(saved.segments.begin(), saved.segments.end(), [&](const SceneSegment& s) { return s.id == deleted; }));
+    CHECK(std::any_of(saved.segments.begin(), saved.segments.end(), [&](const SceneSegment& s) { return s.id == largest + 1; }));
+    // undo twice: the original inputs; redo: the added segment again
+    CHECK(session.undo());
+    CHECK(session.undo());
+    CHECK(session.job().polygons.size() == n);
+    CHECK(session.job().polygons[0].id != second);
+    CHECK(session.redo());
+    CHECK(session.job().polygons.size() == n + 1);
+    // the last input cannot go: a tree needs something to split
+    while (session.job().polygons.size() > 1) REQUIRE(session.delete_input(0));
+    CHECK_FALSE(session.delete_input(0));
+    CHECK(session.job().polygons.size() == 1);
+}
+
+TEST_CASE("the tree's figures follow an edit", "[state][bsp][editing]") {
+    BspSession session(load_lesson(data_dir() + "/lessons/04_bsp_build.toml"));
+    const std::size_t before = session.stats().polygons_in;
+    REQUIRE(session.add_segment({-20, 0.5, 0}, {20, 0.7, 0}));
+    CHECK(session.stats().polygons_in == before + 1);
+    CHECK(session.stats().splits == build_bsp(session.job().polygons, session.job().options).run_to_end().splits);
+}

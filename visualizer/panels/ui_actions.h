@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <string>
 
 #include <glm/vec3.hpp>
@@ -35,6 +36,8 @@ struct UiActions {
     };
     std::optional<VertexMove> move_vertex;             // a 2D scene's vertex dragged here
     bool undo = false, redo = false, save_scene = false;  // Ctrl+Z, Ctrl+Y, S
+    std::optional<std::pair<glm::dvec3, glm::dvec3>> add_segment;  // Shift+drag in a 2D scene: a new segment
+    std::optional<std::size_t> delete_input;                       // right-click on a 2D scene's segment
 };
 
 struct PlaybackState {

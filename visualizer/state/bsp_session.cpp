@@ -61,16 +61,7 @@ BspSession::BspSession(Lesson lesson, PlayerOptions options)
       kind_(BspLesson(lesson.algorithm.variant)),
       job_(bsp_job(lesson.scene, rule_named(lesson.splitter))),
       options_(options) {
-    BspJob job = job_;
-    stats_.polygons_in = job.polygons.size();
-    stats_.rule = job.options.splitter;
-    const auto start = std::chrono::steady_clock::now();
-    const BspTree tree = build_bsp(std::move(job.polygons), job.options).run_to_end();
-    stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    stats_.polygons_after = tree.polygons.size();
-    stats_.nodes = tree.nodes.size();
-    stats_.depth = tree.depth;
-    stats_.splits = tree.splits;
+    measure();
     if (kind_ == BspLesson::traversal)  // the traversal lesson starts with the tree built
         player().step_forward_until([](const BspEvent& e) { return std::holds_alternative<BuildFinished>(e); });
 }
@@ -81,7 +72,24 @@ void BspSession::move_eye(Vec3 eye) {
     rerun();
 }
 
-void BspSession::rerun() { replace_player(PlayerType(bsp_scene(job_), initial_view(job_), options_)); }
+void BspSession::measure() {
+    BspJob job = job_;
+    stats_.polygons_in = job.polygons.size();
+    stats_.rule = job.options.splitter;
+    const auto start = std::chrono::steady_clock::now();
+    const BspTree tree = build_bsp(std::move(job.polygons), job.options).run_to_end();
+    stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats_.polygons_after = tree.polygons.size();
+    stats_.nodes = tree.nodes.size();
+    stats_.depth = tree.depth;
+    stats_.splits = tree.splits;
+    edited_ = scene_of_job();
+}
+
+void BspSession::rerun() {
+    replace_player(PlayerType(bsp_scene(job_), initial_view(job_), options_));
+    measure();  // an edited scene: the panel's figures are the edited tree's
+}
 
 void BspSession::move_vertex(std::size_t input, std::size_t vertex, Vec3 to) {
     if (input >= job_.polygons.size() || vertex >= job_.polygons[input].vertices.size()) return;
@@ -96,6 +104,34 @@ void BspSession::move_vertex(std::size_t input, std::size_t vertex, Vec3 to) {
     redo_.clear();
     job_ = std::move(edited);
     rerun();
+}
+
+void BspSession::edit(algo::BspJob edited) {
+    undo_.push_back(std::move(job_));
+    redo_.clear();
+    last_moved_.reset();
+    job_ = std::move(edited);
+    rerun();
+}
+
+bool BspSession::add_segment(Vec3 a, Vec3 b) {
+    if (!view().two_d) return false;
+    a.z = b.z = 0;
+    if (glm::length(b - a) <= 1e-9) return false;
+    std::int32_t id = 0;
+    for (const algo::BspInput& in : job_.polygons) id = std::max(id, in.id);
+    algo::BspJob edited = job_;
+    edited.polygons.push_back({id + 1, {a, b}});
+    edit(std::move(edited));
+    return true;
+}
+
+bool BspSession::delete_input(std::size_t input) {
+    if (input >= job_.polygons.size() || job_.polygons.size() <= 1) return false;
+    algo::BspJob edited = job_;
+    edited.polygons.erase(edited.polygons.begin() + std::ptrdiff_t(input));
+    edit(std::move(edited));
+    return true;
 }
 
 bool BspSession::undo() {
@@ -118,16 +154,28 @@ bool BspSession::redo() {
     return true;
 }
 
-algo::Scene BspSession::edited_scene() const {
+algo::Scene BspSession::scene_of_job() const {
     algo::Scene s = lesson().scene;
     s.camera.eye = job_.eye;
+    // Inputs as the edits left them: moved, added (new ids, colours in turn from the palette) or deleted.
+    static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
+    std::vector<algo::SceneSegment> segments;
+    std::vector<algo::ScenePolygon> polygons;
     for (const algo::BspInput& in : job_.polygons) {
-        for (auto& seg : s.segments)
-            if (seg.id == in.id && in.vertices.size() == 2) seg.a = glm::dvec4(in.vertices[0], 1.0), seg.b = glm::dvec4(in.vertices[1], 1.0);
-        for (auto& poly : s.polygons)
-            if (poly.id == in.id && in.vertices.size() == poly.vertices.size())
-                for (std::size_t k = 0; k < in.vertices.size(); ++k) poly.vertices[k] = glm::dvec4(in.vertices[k], 1.0);
+        algo::Color color = palette[std::size_t(in.id) % std::size(palette)];
+        for (const auto& seg : s.segments) color = seg.id == in.id ? seg.color : color;
+        for (const auto& poly : s.polygons) color = poly.id == in.id ? poly.color : color;
+        if (in.vertices.size() == 2) {
+            segments.push_back({in.id, color, glm::dvec4(in.vertices[0], 1.0), glm::dvec4(in.vertices[1], 1.0)});
+            continue;
+        }
+        algo::ScenePolygon p{in.id, color, {}};
+        for (const auto& v : in.vertices) p.vertices.emplace_back(v, 1.0);
+        for (const auto& poly : s.polygons) p.opacity = poly.id == in.id ? poly.opacity : p.opacity;
+        polygons.push_back(std::move(p));
     }
+    if (view().two_d) s.segments = std::move(segments);
+    else s.polygons = std::move(polygons);
     return s;
 }
 

@@ -32,11 +32,15 @@ public:
     // Scene editing (2D lessons): move one end of an input segment, and undo / redo such edits. Each reruns the
     // machine from the edited input, keeping the cursor at the same step where that step still exists.
     void move_vertex(std::size_t input, std::size_t vertex, algo::Vec3 to);
+    // Adds a segment from a to b (2D lessons) with the next free id; false (and nothing done) when it has no length.
+    bool add_segment(algo::Vec3 a, algo::Vec3 b);
+    // Deletes an input segment or polygon; false when it is the last one (a tree needs something to split).
+    bool delete_input(std::size_t input);
     bool undo();
     bool redo();
     const algo::BspJob& job() const { return job_; }
     // The lesson's scene as edited (its segments or polygons moved where the edits put them; the eye where it is).
-    algo::Scene edited_scene() const;
+    const algo::Scene& edited_scene() const { return edited_; }
 
 private:
     std::string describe_event(const algo::BspEvent& e) const override;
@@ -49,6 +53,10 @@ private:
     std::vector<algo::BspJob> undo_, redo_;  // earlier and undone inputs
     std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // the vertex the last edit moved
     void rerun();
+    void measure();                  // stats_ of the tree of job_, and edited_
+    algo::Scene edited_;
+    algo::Scene scene_of_job() const;
+    void edit(algo::BspJob edited);  // one undo step, then rerun
 };
 
 }  // namespace hsr::viz

@@ -1,0 +1,78 @@
+#include "scripted_input.h"
+
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace hsr::viz {
+namespace {
+
+// "X1:Y1:X2:Y2" → numbers; false unless exactly `count` numbers, each read whole.
+bool numbers(const std::string& text, std::size_t count, std::vector<double>& out) {
+    std::stringstream in(text);
+    std::string part;
+    while (std::getline(in, part, ':')) {
+        char* end = nullptr;
+        const double v = std::strtod(part.c_str(), &end);
+        if (part.empty() || *end != '\0') return false;
+        out.push_back(v);
+    }
+    return out.size() == count;
+}
+
+}  // namespace
+
+std::optional<ScriptedInput> parse_scripted_input(const std::string& token) {
+    struct Gesture {
+        const char* prefix;
+        ScriptedInput::Kind kind;
+        std::size_t count;
+    };
+    for (const Gesture& g : {Gesture{"Drag:", ScriptedInput::Kind::drag, 4}, Gesture{"ShiftDrag:", ScriptedInput::Kind::shift_drag, 4},
+                             Gesture{"RightClick:", ScriptedInput::Kind::right_click, 2}}) {
+        const std::string p(g.prefix);
+        const auto kind = g.kind;
+        const std::size_t count = g.count;
+        if (token.rfind(p, 0) != 0) continue;
+        std::vector<double> v;
+        if (!numbers(token.substr(p.size()), count, v)) return std::nullopt;
+        ScriptedInput s{kind, "", {v[0], v[1]}, count == 4 ? glm::dvec2(v[2], v[3]) : glm::dvec2(v[0], v[1])};
+        return s;
+    }
+    SDL_Event e;
+    if (!key_event(token, e)) return std::nullopt;
+    return ScriptedInput{ScriptedInput::Kind::key, token, {}, {}};
+}
+
+bool key_event(const std::string& name, SDL_Event& e) {
+    const bool shift = name.rfind("Shift+", 0) == 0;
+    const SDL_Keycode code = SDL_GetKeyFromName(shift ? name.substr(6).c_str() : name.c_str());
+    if (code == SDLK_UNKNOWN) return false;
+    e = SDL_Event{};
+    e.type = SDL_KEYDOWN;
+    e.key.state = SDL_PRESSED;
+    e.key.keysym.sym = code;
+    e.key.keysym.scancode = SDL_GetScancodeFromKey(code);
+    e.key.keysym.mod = shift ? KMOD_LSHIFT : KMOD_NONE;
+    return true;
+}
+
+SDL_Event mouse_button_event(bool down, Uint8 button, int x, int y) {
+    SDL_Event e{};
+    e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+    e.button.button = button;
+    e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+    e.button.clicks = 1;
+    e.button.x = x, e.button.y = y;
+    return e;
+}
+
+SDL_Event mouse_motion_event(int x, int y, int dx, int dy, bool left_held) {
+    SDL_Event e{};
+    e.type = SDL_MOUSEMOTION;
+    e.motion.x = x, e.motion.y = y, e.motion.xrel = dx, e.motion.yrel = dy;
+    e.motion.state = left_held ? SDL_BUTTON_LMASK : 0;
+    return e;
+}
+
+}  // namespace hsr::viz
