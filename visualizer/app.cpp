@@ -60,6 +60,8 @@
 #include "state/file_watch.h"
 #include "gif_writer.h"
 #include "scripted_input.h"
+#include "panels/preset_panel.h"
+#include "state/presets.h"
 #include "cli/commands.h"
 #include "scene/save_scene.h"
 
@@ -81,15 +83,23 @@ struct Lessonplay {
     FileWatch watch;                 // the lesson and scene files: edited on disk, reloaded
     bool show_keys = false;          // F1
     bool export_pending = false;     // E: written after the next frame is drawn
+    std::string home;                // the lesson the window was started with
+    std::string path;                // what plays: the lesson, or a preset scene chosen with P
+    std::optional<std::string> algorithm;
+    bool show_presets = false;       // P
+    std::vector<Preset> presets;     // of the lesson's algorithm
+    std::uint32_t next_seed = 1;     // of the next random scene
 
     void load(const AppOptions& o) {
         const std::size_t keep = session ? session->cursor() : 0;  // a reload stays at its step where it still exists
-        watch.watch({o.lesson_path});
+        if (path.empty()) home = path = o.lesson_path, algorithm = o.algorithm;
+        watch.watch({path});
         try {
-            const Lesson lesson = load_lesson(o.lesson_path, o.algorithm);
+            const Lesson lesson = load_lesson(path, algorithm);
+            presets = extreme_presets(lesson.algorithm, data_dir() + "/assets/scenes/extreme");
             std::error_code ec;
-            if (lesson.scene.source != o.lesson_path && std::filesystem::is_regular_file(lesson.scene.source, ec))
-                watch.watch({o.lesson_path, lesson.scene.source});
+            if (lesson.scene.source != path && std::filesystem::is_regular_file(lesson.scene.source, ec))
+                watch.watch({path, lesson.scene.source});
             session = make_session(lesson);
             session->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
             classroom.attach(*session);
@@ -139,8 +149,42 @@ struct Lessonplay {
         }
     }
 
+    // P: play another scene with the lesson's algorithm (an extreme case, a random scene), or go back to the lesson.
+    void choose_preset(const UiActions& a, const AppOptions& o) {
+        if (a.back_to_lesson) {
+            path = o.lesson_path, algorithm = o.algorithm;
+        } else if (a.preset && *a.preset >= 0 && std::size_t(*a.preset) < presets.size()) {
+            if (session) algorithm = std::string(session->lesson().algorithm.id);
+            path = presets[std::size_t(*a.preset)].file;
+        } else if (a.random_scene && session) {
+            const auto* bsp = dynamic_cast<const BspSession*>(session.get());
+            const auto toml = random_scene_toml(session->lesson().algorithm, bsp && bsp->view().two_d, next_seed);
+            if (!toml) return;
+            algorithm = std::string(session->lesson().algorithm.id);
+            std::filesystem::create_directories("hsrviz-export");
+            path = "hsrviz-export/random-" + *algorithm + "-seed" + std::to_string(next_seed++) + ".toml";
+            std::ofstream(path) << *toml;
+        } else {
+            return;
+        }
+        show_presets = false;
+        session.reset();  // a new scene starts at its first step
+        load(o);
+        std::printf("hsrviz: playing %s with %s\n", path.c_str(), algorithm.value_or("the lesson's algorithm").c_str());
+    }
+
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload || watch.changed(dt)) load(o);
+        if (a.toggle_presets) show_presets = !show_presets;
+        if (show_presets) {  // the presets take the number keys while they show: 1 … 9 a case, 0 a random scene
+            UiActions pick = a;
+            if (a.digit && *a.digit >= 1) pick.preset = *a.digit - 1;
+            if (a.digit && *a.digit == 0) pick.random_scene = true;
+            choose_preset(pick, o);
+            if (show_presets && a.digit) return;
+        } else if (a.preset || a.random_scene || a.back_to_lesson) {
+            choose_preset(a, o);
+        }
         if (!session) return;
         // the classroom: a number answers an open question (else 3 is the 3D key), chapters, language
         std::optional<std::string> answer = a.answer;
@@ -158,7 +202,7 @@ struct Lessonplay {
         if (a.next_language) classroom.next_language();
         if (a.toggle_keys) show_keys = !show_keys;
         if (a.export_all) export_pending = true;
-        if (a.close_overlays) show_keys = false;
+        if (a.close_overlays) show_keys = show_presets = false;
         if (auto* bsp = dynamic_cast<BspSession*>(session.get())) {  // editing a 2D scene
             bool edited = false;
             if (a.move_vertex) bsp->move_vertex(a.move_vertex->input, a.move_vertex->vertex, a.move_vertex->to), edited = true;
@@ -168,7 +212,7 @@ struct Lessonplay {
             if (a.redo) edited |= bsp->redo();
             if (edited) classroom.attach(*session);
             if (a.save_scene) {
-                const std::string file = "hsrviz-export/" + std::filesystem::path(o.lesson_path).stem().string() + "-edited.toml";
+                const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
                 std::filesystem::create_directories("hsrviz-export");
                 const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(bsp->edited_scene()));
                 std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
@@ -246,6 +290,9 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_PAGEDOWN: a.next_chapter = true; break;
         case SDLK_PAGEUP: a.previous_chapter = true; break;
         case SDLK_l: a.next_language = true; break;
+        case SDLK_p: a.toggle_presets = true; break;
+        case SDLK_b: a.back_to_lesson = true; break;
+        case SDLK_0: a.digit = 0; break;
         default:  // 1 … 9: a question's choice; 3 alone: z-buffer fat pixels or 3D, portals plan or 3D, culling god's eye or camera
             if (e.key.keysym.sym >= SDLK_1 && e.key.keysym.sym <= SDLK_9) a.digit = int(e.key.keysym.sym - SDLK_0);
             break;
@@ -323,7 +370,7 @@ void keys_panel(const PanelLayout& l) {
         {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
         {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
-        {"L", "narration language"},       {"3", "3D view / camera view / floor plan"},
+        {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},       {"3", "3D view / camera view / floor plan"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
@@ -351,7 +398,8 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!lp.session) {
-        error_panel(lp.error, layout, actions);
+        error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), layout, actions);
+        if (lp.show_presets) preset_panel(lp.presets, false, lp.next_seed, lp.path != lp.home, layout, actions);
         return;
     }
     const Session& s = *lp.session;
@@ -451,6 +499,9 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
     question_panel(s, lp.classroom, 0, 0, view_w, view_h, actions);
     if (lp.show_keys) keys_panel(layout);
+    if (lp.show_presets && lp.session)
+        preset_panel(lp.presets, has_random_scene(lp.session->lesson().algorithm), lp.next_seed,
+                     lp.path != lp.home, layout, actions);
     narration_panel(s, layout);
     timeline_panel(s, lp.playback, layout, actions);
 }
@@ -483,12 +534,12 @@ bool write_png(const std::string& path, int w, int h) {
 }
 
 // E: the window as a PNG, the lesson's trace, and its scene as TOML, into hsrviz-export/.
-void export_lesson(const Session& s, const AppOptions& o, int width, int height) {
+void export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
     const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
     std::filesystem::create_directories(dir);
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
-    const bool ok = write_png(png, width, height) && run_trace({o.lesson_path, trace, o.algorithm}) == 0 &&
+    const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
                     static_cast<bool>(std::ofstream(scene) << algo::scene_toml(s.lesson().scene));
     std::printf("hsrviz: %s %s, %s and %s\n", ok ? "exported" : "could not export all of", png.c_str(), trace.c_str(), scene.c_str());
 }
@@ -678,7 +729,7 @@ int run_app(const AppOptions& o) {
             }
             if (lp.export_pending && lp.session) {
                 lp.export_pending = false;
-                export_lesson(*lp.session, o, width, height);
+                export_lesson(*lp.session, lp.path, lp.algorithm, width, height);
             }
             if (o.gif) {
                 if (!gif && !gif_failed) {
@@ -711,7 +762,8 @@ int run_app(const AppOptions& o) {
             // carry the panels' requests into the next update
             if (from_panels.toggle_play || from_panels.step || from_panels.step_back || from_panels.micro_step ||
                 from_panels.micro_step_back || from_panels.to_start || from_panels.to_end || from_panels.seek ||
-                from_panels.speed || from_panels.reload || from_panels.move_eye)
+                from_panels.speed || from_panels.reload || from_panels.move_eye || from_panels.preset || from_panels.random_scene ||
+                from_panels.back_to_lesson)
                 lp.update(from_panels, 0, o);
         }
         if (o.frame_log && !frame_ms.empty()) {

@@ -159,6 +159,19 @@ case "$case" in
     test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"
     if "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot x.png --frames 2 --keys "Drag:1:2" 2> bad.txt; then exit 1; fi
     grep -q 'unknown key or gesture "Drag:1:2"' bad.txt ;;
+  presets)  # P lists the extreme cases of the lesson's algorithm; 2 plays the second with it; 0 a random scene; B goes back
+    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot presets.png --frames 4 --keys P > open.txt
+    "$png_check" presets.png 1280 800
+    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot case.png --frames 6 --keys "P,2,Right" > case.txt
+    grep -q "playing .*extreme/depth_sort_cyclic_overlap.toml with depth_sort" case.txt
+    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot random.png --frames 8 --keys "P,0,Right,B" > random.txt
+    grep -q "playing hsrviz-export/random-depth_sort-seed1.toml with depth_sort" random.txt
+    grep -q "random triangles" hsrviz-export/random-depth_sort-seed1.toml
+    grep -q "playing .*lessons/13_depth_sort_cycle.toml with" random.txt
+    # a preset a machine refuses shows the reason, and B still goes back
+    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot refused.png --frames 6 --keys "P,1,B" > refused.txt 2> refused.err
+    grep -q "not convex" refused.err
+    grep -q "playing .*lessons/13_depth_sort_cycle.toml" refused.txt ;;
   report)  # hsrviz report --quick: every family's table, a CSV row per measurement, a chart per family
     "$hsrviz" report --quick --out rep > out.txt
     grep -q "0 violations" out.txt

@@ -48,7 +48,7 @@ void display_list(const DepthSortSession& s, ImDrawList* d, ImVec2 at, float w, 
                               std::to_string(v.splits) + (v.splits == 1 ? " split" : " splits");
     d->AddText(at, dim_colour, heading.c_str());
     const float list_x0 = at.x + float(v.drawn.size()) * (chip + 4) + (v.drawn.empty() ? 0 : gap);
-    d->AddText(ImVec2(std::max(list_x0, at.x + 290), at.y), dim_colour, "display list, head first →");
+    d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour, "display list, head first →");
     const float y = at.y + 22;
     const auto place_chip = [&](std::uint32_t i, float target) {
         float& x = anim.x[i];

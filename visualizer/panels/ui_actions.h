@@ -38,6 +38,9 @@ struct UiActions {
     bool undo = false, redo = false, save_scene = false;  // Ctrl+Z, Ctrl+Y, S
     std::optional<std::pair<glm::dvec3, glm::dvec3>> add_segment;  // Shift+drag in a 2D scene: a new segment
     std::optional<std::size_t> delete_input;                       // right-click on a 2D scene's segment
+    bool toggle_presets = false;                                   // P
+    std::optional<int> preset;                                     // an extreme case chosen (its index)
+    bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
 };
 
 struct PlaybackState {

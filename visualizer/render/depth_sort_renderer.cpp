@@ -49,7 +49,7 @@ void draw_depth_sort_view(const DepthSortView& v, LineBatches& out, std::vector<
                 out.faint.line(corner(i), corner(i | axis), box);
             }
     out.bold.point(shown({0, 0, -1.6}), palette::eye);
-    labels.push_back({shown({0, 0, -1.6}), "eye (NDC z grows away from it)", palette::eye});
+    labels.push_back({shown({0, 0, -1.6}), "eye (z grows away)", palette::eye});
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.15f), colour_of(v.polygons[i], 0.8f), false);
     for (std::uint32_t i : v.drawn) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.75f), colour_of(v.polygons[i], 1), false);
