@@ -62,6 +62,7 @@
 #include "scripted_input.h"
 #include "panels/preset_panel.h"
 #include "state/presets.h"
+#include "state/window_settings.h"
 #include "cli/commands.h"
 #include "scene/save_scene.h"
 
@@ -87,6 +88,7 @@ struct Lessonplay {
     std::string path;                // what plays: the lesson, or a preset scene chosen with P
     std::optional<std::string> algorithm;
     bool show_presets = false;       // P
+    float side = 500;                // the panel column's width ([ and ] change it; remembered)
     std::vector<Preset> presets;     // of the lesson's algorithm
     std::uint32_t next_seed = 1;     // of the next random scene
 
@@ -201,6 +203,7 @@ struct Lessonplay {
         if (a.previous_chapter) classroom.previous_chapter(*session), playback.playing = false;
         if (a.next_language) classroom.next_language();
         if (a.toggle_keys) show_keys = !show_keys;
+        side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
         if (a.export_all) export_pending = true;
         if (a.close_overlays) show_keys = show_presets = false;
         if (auto* bsp = dynamic_cast<BspSession*>(session.get())) {  // editing a 2D scene
@@ -291,6 +294,8 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_PAGEUP: a.previous_chapter = true; break;
         case SDLK_l: a.next_language = true; break;
         case SDLK_p: a.toggle_presets = true; break;
+        case SDLK_LEFTBRACKET: a.column_narrower = true; break;
+        case SDLK_RIGHTBRACKET: a.column_wider = true; break;
         case SDLK_b: a.back_to_lesson = true; break;
         case SDLK_0: a.digit = 0; break;
         default:  // 1 … 9: a question's choice; 3 alone: z-buffer fat pixels or 3D, portals plan or 3D, culling god's eye or camera
@@ -372,7 +377,7 @@ void keys_panel(const PanelLayout& l) {
         {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
         {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},       {"3", "3D view / camera view / floor plan"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
-        {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"},
+        {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
         {"Shift+drag, right-click", "2D scenes: draw a new segment; delete the segment clicked"},
     };
@@ -559,9 +564,13 @@ void load_fonts(ImGuiIO& io, float scale) {
     io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges);  // pseudocode
 }
 
+// A window a person works in, not one a command line scripts (screenshots, recordings, GIFs keep their size).
+bool interactive(const AppOptions& o) { return !o.screenshot && !o.record_dir && !o.gif; }
+
 struct Window {
     SDL_Window* window = nullptr;
     SDL_GLContext gl = nullptr;
+    WindowSettings settings;  // as the last run left them
 
     bool open(const AppOptions& o) {
         if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
@@ -573,8 +582,14 @@ struct Window {
         SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
         SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
         SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
-        window = SDL_CreateWindow("hsrviz", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, o.width, o.height,
+        // An interactive window opens as the last one closed (unless --size says otherwise); scripted ones at their size
+        const bool remembered = interactive(o) && !o.size_given && !o.projector;
+        const int width = remembered ? settings.width : o.width, height = remembered ? settings.height : o.height;
+        const int x = remembered && settings.x ? *settings.x : int(SDL_WINDOWPOS_CENTERED);
+        const int y = remembered && settings.y ? *settings.y : int(SDL_WINDOWPOS_CENTERED);
+        window = SDL_CreateWindow("hsrviz", x, y, width, height,
                                   SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI |
+                                      (remembered && settings.maximized ? SDL_WINDOW_MAXIMIZED : 0) |
                                       (o.projector && !o.screenshot && !o.record_dir ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));  // screenshots keep their size
         if (!window) {
             std::fprintf(stderr, "hsrviz: cannot open a window: %s\n", SDL_GetError());
@@ -601,6 +616,11 @@ struct Window {
 // ── [SECTION] the loop ──────────────────────────────────────────────────────────────────────────────────────
 int run_app(const AppOptions& o) {
     Window w;
+    std::string warning;
+    const std::string settings_path = window_settings_path();
+    WindowSettings settings = read_window_settings(settings_path, warning);
+    if (!warning.empty()) std::fprintf(stderr, "hsrviz: %s\n", warning.c_str());
+    w.settings = settings;
     if (!w.open(o)) {
         w.close();
         return 1;
@@ -626,6 +646,9 @@ int run_app(const AppOptions& o) {
     {
         Lessonplay lp;
         lp.load(o);
+        lp.side = settings.side;
+        for (int k = 0; k < 8 && !settings.language.empty() && lp.classroom.language() != settings.language; ++k)
+            lp.classroom.next_language();  // the language last chosen, where the lesson has it
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
         std::optional<GifWriter> gif;  // half the drawable's size (made at the first frame): enough for slides
@@ -714,7 +737,8 @@ int run_app(const AppOptions& o) {
             int width = 0, height = 0;
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
-            draw_frame(lp, renderer, PanelLayout{io.DisplaySize.x, io.DisplaySize.y}, io.DisplayFramebufferScale.x,
+            lp.side = clamp_side(lp.side, io.DisplaySize.x);
+            draw_frame(lp, renderer, PanelLayout{io.DisplaySize.x, io.DisplaySize.y, lp.side}, io.DisplayFramebufferScale.x,
                        from_panels);
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -784,6 +808,22 @@ int run_app(const AppOptions& o) {
                         o.record_dir->c_str());
             if (!lp.session) exit_code = 1;
         }
+        // Remember the layout: the column and the language always, the window's size and place when a person sized it
+        WindowSettings keep = settings;
+        keep.side = lp.side;
+        keep.language = lp.classroom.language();
+        if (interactive(o) && !o.projector) {
+            const Uint32 flags = SDL_GetWindowFlags(w.window);
+            keep.maximized = (flags & SDL_WINDOW_MAXIMIZED) != 0;
+            if (!keep.maximized && !(flags & SDL_WINDOW_FULLSCREEN)) {
+                int x = 0, y = 0;
+                SDL_GetWindowSize(w.window, &keep.width, &keep.height);
+                SDL_GetWindowPosition(w.window, &x, &y);
+                keep.x = x, keep.y = y;
+            }
+        }
+        if (keep != settings && !write_window_settings(settings_path, keep))
+            std::fprintf(stderr, "hsrviz: cannot write %s\n", settings_path.c_str());
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplSDL2_Shutdown();

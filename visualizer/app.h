@@ -15,6 +15,7 @@ struct AppOptions {
     int frames = 60;
     std::optional<std::string> record_dir;     // headless: a PNG per step and the trace, then exit
     int width = 1280, height = 800;
+    bool size_given = false;                   // --size: this size, not the one remembered from the last run
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
     std::optional<std::string> gif;            // headless: an animated GIF of steps gif_from … gif_to, then exit
     std::size_t gif_from = 0, gif_to = 60;

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
     cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
-    cli.add_option("--size", size, "Window size WxH")->check(CLI::Validator(
+    CLI::Option* size_option = cli.add_option("--size", size, "Window size WxH (default: as the last run left it, else 1280x800)")->check(CLI::Validator(
         [](std::string& s) { return std::sscanf(s.c_str(), "%*dx%*d") == 0 && s.find('x') != std::string::npos ? "" : "expected WxH"; }, "WxH"));
     cli.add_flag("--play", app.autoplay, "Start playing at once");
     cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
     std::sscanf(size.c_str(), "%dx%d", &app.width, &app.height);
+    app.size_given = size_option->count() > 0;
 
     // No display: say so, and play the same lesson headless through SDL's offscreen driver (EGL on Mesa).
     const bool no_display = !std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER");

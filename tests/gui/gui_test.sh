@@ -6,6 +6,7 @@ set -euo pipefail
 hsrviz=$1 png_check=$2 src=$3 work=$4 case=$5
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
 export SDL_VIDEODRIVER=offscreen
+export HSRVIZ_CONFIG="$work/window.toml"   # what the window remembers stays in the test's folder
 # Under the sanitizers: Mesa's llvmpipe driver leaks about 7 KB that LeakSanitizer reports from a library already
 # unloaded at exit (no names, so no suppression can match). Leaks stay checked in the unit tests; address and
 # undefined-behaviour errors stay checked here.
@@ -172,6 +173,17 @@ case "$case" in
     "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot refused.png --frames 6 --keys "P,1,B" > refused.txt 2> refused.err
     grep -q "not convex" refused.err
     grep -q "playing .*lessons/13_depth_sort_cycle.toml" refused.txt ;;
+  settings)  # the panel column's width ([ and ]) and the language are remembered between runs; a broken file is named
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot wide.png --frames 5 --keys "],],L"
+    grep -q '^side = 580$' window.toml
+    grep -q "^language = 'de'$" window.toml
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot narrow.png --frames 3 --keys "[" > narrow.txt
+    grep -q '^side = 540$' window.toml      # it started from the 580 the first run left
+    grep -q "language de" narrow.txt        # and in German
+    "$png_check" narrow.png 1280 800        # a screenshot keeps its size whatever was remembered
+    printf 'side = "wide"\n' > window.toml
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot broken.png --frames 2 2> broken.txt
+    grep -q "window.toml:1: field 'side'" broken.txt ;;
   report)  # hsrviz report --quick: every family's table, a CSV row per measurement, a chart per family
     "$hsrviz" report --quick --out rep > out.txt
     grep -q "0 violations" out.txt

@@ -1,0 +1,39 @@
+// The window's remembered settings: a round trip, the defaults when there is no file, and a broken file or field
+// named (file and line) and the rest still used.
+#include <filesystem>
+#include <fstream>
+
+#include "catch.h"
+#include "state/window_settings.h"
+
+using namespace hsr::viz;
+
+TEST_CASE("window settings round trip, default when missing, and name a broken field", "[state][settings]") {
+    const std::string dir = (std::filesystem::temp_directory_path() / "hsrviz_settings_test").string();
+    std::filesystem::remove_all(dir);
+    const std::string path = dir + "/sub/window.toml";
+    std::string warning;
+    CHECK(read_window_settings(path, warning) == WindowSettings{});
+    CHECK(warning.empty());
+
+    const WindowSettings s{.width = 1600, .height = 900, .x = 40, .y = -20, .maximized = true, .side = 620, .language = "de"};
+    REQUIRE(write_window_settings(path, s));
+    CHECK(read_window_settings(path, warning) == s);
+    CHECK(warning.empty());
+
+    std::ofstream(path) << "width = 1500\nheight = \"tall\"\nside = 700\n";
+    const WindowSettings partly = read_window_settings(path, warning);
+    CHECK(partly.width == 1500);
+    CHECK(partly.height == 800);  // the default: the field is named
+    CHECK(partly.side == 700);
+    CHECK(warning.find("window.toml:2: field 'height'") != std::string::npos);
+
+    std::ofstream(path) << "width = [1\n";
+    CHECK(read_window_settings(path, warning) == WindowSettings{});
+    CHECK(warning.find("window.toml:") != std::string::npos);
+
+    CHECK(clamp_side(100, 1280) == 320);
+    CHECK(clamp_side(2000, 1280) == 960);
+    CHECK(clamp_side(500, 500) == 320);
+    std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,29 @@
+// What the window remembers between runs: its size and place, whether it was maximised, the width of the panel
+// column and the narration language. One small TOML file in the user's configuration folder; a missing or broken
+// file gives the defaults (and a warning naming the file, line and field), never an error.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace hsr::viz {
+
+struct WindowSettings {
+    int width = 1280, height = 800;
+    std::optional<int> x, y;  // the window's place on the desktop; centred when absent
+    bool maximized = false;
+    float side = 500;         // the panel column's width, in points
+    std::string language;     // the narration language last chosen ("" for the lesson's first)
+    bool operator==(const WindowSettings&) const = default;
+};
+
+// $HSRVIZ_CONFIG if set, else $XDG_CONFIG_HOME/hsrviz/window.toml, else ~/.config/hsrviz/window.toml.
+std::string window_settings_path();
+// The settings in `path`; `warning` gets why a file there was not used (empty when it was, or when there is none).
+WindowSettings read_window_settings(const std::string& path, std::string& warning);
+// Writes them (making the folder); false when it cannot.
+bool write_window_settings(const std::string& path, const WindowSettings& s);
+// The column width kept within a window: at least 320 points, and at least 320 left for the view.
+float clamp_side(float side, float window_width);
+
+}  // namespace hsr::viz
