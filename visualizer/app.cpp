@@ -62,6 +62,8 @@
 #include "scripted_input.h"
 #include "panels/preset_panel.h"
 #include "state/presets.h"
+#include "state/family_report.h"
+#include "panels/report_panel.h"
 #include "state/window_settings.h"
 #include "cli/commands.h"
 #include "scene/save_scene.h"
@@ -89,6 +91,8 @@ struct Lessonplay {
     std::optional<std::string> algorithm;
     bool show_presets = false;       // P
     float side = 500;                // the panel column's width ([ and ] change it; remembered)
+    bool show_report = false;        // R: error against run time for the algorithm's family
+    std::vector<analysis::Measurement> report;  // measured when R first opens it
     std::vector<Preset> presets;     // of the lesson's algorithm
     std::uint32_t next_seed = 1;     // of the next random scene
 
@@ -99,6 +103,7 @@ struct Lessonplay {
         try {
             const Lesson lesson = load_lesson(path, algorithm);
             presets = extreme_presets(lesson.algorithm, data_dir() + "/assets/scenes/extreme");
+            if (session && session->lesson().algorithm.family != lesson.algorithm.family) report.clear();
             std::error_code ec;
             if (lesson.scene.source != path && std::filesystem::is_regular_file(lesson.scene.source, ec))
                 watch.watch({path, lesson.scene.source});
@@ -178,6 +183,14 @@ struct Lessonplay {
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload || watch.changed(dt)) load(o);
         if (a.toggle_presets) show_presets = !show_presets;
+        if (a.toggle_report) {
+            show_report = !show_report;
+            if (show_report && session && report.empty()) {
+                report = family_report(session->lesson().algorithm, data_dir() + "/assets/scenes");
+                std::printf("hsrviz: measured %zu rows of error against run time for %s\n", report.size(),
+                            std::string(session->lesson().algorithm.id).c_str());
+            }
+        }
         if (show_presets) {  // the presets take the number keys while they show: 1 … 9 a case, 0 a random scene
             UiActions pick = a;
             if (a.digit && *a.digit >= 1) pick.preset = *a.digit - 1;
@@ -205,7 +218,7 @@ struct Lessonplay {
         if (a.toggle_keys) show_keys = !show_keys;
         side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
         if (a.export_all) export_pending = true;
-        if (a.close_overlays) show_keys = show_presets = false;
+        if (a.close_overlays) show_keys = show_presets = show_report = false;
         if (auto* bsp = dynamic_cast<BspSession*>(session.get())) {  // editing a 2D scene
             bool edited = false;
             if (a.move_vertex) bsp->move_vertex(a.move_vertex->input, a.move_vertex->vertex, a.move_vertex->to), edited = true;
@@ -294,6 +307,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_PAGEUP: a.previous_chapter = true; break;
         case SDLK_l: a.next_language = true; break;
         case SDLK_p: a.toggle_presets = true; break;
+        case SDLK_r: a.toggle_report = true; break;
         case SDLK_LEFTBRACKET: a.column_narrower = true; break;
         case SDLK_RIGHTBRACKET: a.column_wider = true; break;
         case SDLK_b: a.back_to_lesson = true; break;
@@ -375,7 +389,8 @@ void keys_panel(const PanelLayout& l) {
         {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
         {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
-        {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},       {"3", "3D view / camera view / floor plan"},
+        {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
+        {"R", "error against run time for this algorithm's family"},       {"3", "3D view / camera view / floor plan"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
@@ -503,6 +518,7 @@ void draw_frame(const Lessonplay& lp, Renderer& r, const PanelLayout& layout, fl
     if (culling) culling_state_panel(*culling, layout);
     if (portals) portal_state_panel(*portals, lp.zbuffer_3d, layout, actions);
     question_panel(s, lp.classroom, 0, 0, view_w, view_h, actions);
+    if (lp.show_report) report_panel(lp.report, layout);
     if (lp.show_keys) keys_panel(layout);
     if (lp.show_presets && lp.session)
         preset_panel(lp.presets, has_random_scene(lp.session->lesson().algorithm), lp.next_seed,

@@ -172,7 +172,11 @@ case "$case" in
     # a preset a machine refuses shows the reason, and B still goes back
     "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot refused.png --frames 6 --keys "P,1,B" > refused.txt 2> refused.err
     grep -q "not convex" refused.err
-    grep -q "playing .*lessons/13_depth_sort_cycle.toml" refused.txt ;;
+    grep -q "playing .*lessons/13_depth_sort_cycle.toml" refused.txt
+    # R: error against run time for the lesson's family, measured in the window
+    "$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot report.png --frames 3 --keys R > report.txt
+    grep -q "measured 12 rows of error against run time for portal_pvs" report.txt
+    "$png_check" report.png 1280 800 ;;
   settings)  # the panel column's width ([ and ]) and the language are remembered between runs; a broken file is named
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot wide.png --frames 5 --keys "],],L"
     grep -q '^side = 580$' window.toml

@@ -6,6 +6,7 @@
 #include "scene/load_scene.h"
 #include "scene/toml_reader.h"
 #include "state/lesson.h"
+#include "state/family_report.h"
 #include "state/presets.h"
 #include "state/session.h"
 
@@ -68,5 +69,17 @@ TEST_CASE("random scenes: one per family, different seeds differ, and they play"
         auto session = make_session(read_lesson(hsr::algo::TomlReader("random.toml", *one), std::string(a.id)));
         session->prefetch(prefetch_events);
         CHECK(session->known() > 3);
+    }
+}
+
+TEST_CASE("the window's report measures the family of the algorithm being played", "[state][report]") {
+    const std::string scenes = data_dir() + "/assets/scenes";
+    for (const auto& [id, family] : {std::pair{"liang_barsky", "clipping"}, std::pair{"scan_line", "zbuffer"},
+                                     std::pair{"depth_sort", "hsr"}, std::pair{"portal_render", "portals"},
+                                     std::pair{"backface_view_vector", "culling"}}) {
+        INFO(id);
+        const auto rows = family_report(*hsr::algo::find_algorithm(id), scenes);
+        REQUIRE_FALSE(rows.empty());
+        for (const auto& r : rows) CHECK(r.family == family);
     }
 }

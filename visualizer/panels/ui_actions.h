@@ -40,6 +40,7 @@ struct UiActions {
     std::optional<std::size_t> delete_input;                       // right-click on a 2D scene's segment
     bool toggle_presets = false;                                   // P
     bool column_narrower = false, column_wider = false;            // [ and ]
+    bool toggle_report = false;                                    // R
     std::optional<int> preset;                                     // an extreme case chosen (its index)
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
 };
