@@ -49,6 +49,7 @@ struct PixelTested {
     double depth;             // the polygon's d here
     std::uint64_t incoming;   // its code
     std::uint64_t stored;     // the code in the buffer
+    bool passes;              // the depth test's outcome: incoming nearer than stored (DepthWritten follows)
     bool operator==(const PixelTested&) const = default;
 };
 struct DepthWritten {

@@ -79,7 +79,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                 const std::uint64_t incoming = code_at(z);
                 const std::uint64_t stored = out.depth[k];
                 ++tested, ++out.tested;
-                if (per_pixel) co_yield PixelTested{x, y, z, incoming, stored};
+                if (per_pixel) co_yield PixelTested{x, y, z, incoming, stored, incoming < stored};
                 // The depth test: nearer than what the buffer holds?
                 if (incoming < stored) {
                     if (per_pixel) co_yield DepthWritten{x, y, index, out.polygon[k], stored, incoming};
