@@ -70,7 +70,16 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> c
     // (the straight-line form of Sutherland–Hodgman: the machine's answer bit for bit, without its events, which
     // no view of the z-buffer shows; clipping/straight_clip.h)
     for (const auto& v : clip_vertices) require_finite(v, [&] { return "polygon " + std::to_string(id); });
-    const std::vector<glm::dvec4> visible = plain_sutherland_hodgman(std::move(clip_vertices));
+    // Wholly inside every plane (most polygons of a scene): each of the 7 stages would only pass the list on, one
+    // place turned (it emits the end of each edge), so the answer is the list turned by 7, with no clipping work.
+    const bool inside = std::all_of(clip_vertices.begin(), clip_vertices.end(), [](const glm::dvec4& v) { return plain_outcode(v) == 0; });
+    std::vector<glm::dvec4> visible;
+    if (inside && !clip_vertices.empty()) {
+        visible = std::move(clip_vertices);
+        std::rotate(visible.begin(), visible.begin() + std::ptrdiff_t(7 % visible.size()), visible.end());
+    } else {
+        visible = plain_sutherland_hodgman(std::move(clip_vertices));
+    }
     if (visible.size() < 3) {
         out.status = ScreenStatus::outside_view;
         return out;

@@ -23,12 +23,20 @@ bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int 
         ++tested, ++out.tested;
         if (incoming >= out.depth[k]) continue;
         out.depth[k] = std::uint32_t(incoming);
-        out.polygon[k] = index;
-        out.image.ids[k] = p.id;
-        out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
+        out.polygon[k] = index;  // the colour and id follow at the end (resolve_image): less to write per pixel
         ++written, ++out.written;
     }
     return true;
+}
+
+// The image from the polygon buffer: each pixel the colour and id of the polygon it holds.
+void resolve_image(FrameDepth& out, const std::vector<ScreenPolygon>& polygons) {
+    for (std::size_t k = 0; k < out.polygon.size(); ++k) {
+        if (out.polygon[k] < 0) continue;
+        const ScreenPolygon& p = polygons[std::size_t(out.polygon[k])];
+        out.image.ids[k] = p.id;
+        out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
+    }
 }
 
 }  // namespace
@@ -65,6 +73,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                 if (!fill_span(out, p, std::int32_t(index), y, span, z, o, levels, tested, written)) {
                     out.bounded = true;
                     co_yield FillStepBoundReached{o.max_pixel_tests};
+                    resolve_image(out, polygons);
                     co_return out;
                 }
                 continue;
@@ -73,6 +82,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                 if (out.tested == o.max_pixel_tests) {
                     out.bounded = true;
                     co_yield FillStepBoundReached{o.max_pixel_tests};
+                    resolve_image(out, polygons);
                     co_return out;
                 }
                 const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
@@ -85,9 +95,6 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                     if (per_pixel) co_yield DepthWritten{x, y, index, out.polygon[k], stored, incoming};
                     out.depth[k] = std::uint32_t(incoming);
                     out.polygon[k] = std::int32_t(index);
-                    out.image.ids[k] = p.id;
-                    out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g;
-                    out.image.rgb[3 * k + 2] = p.color.b;
                     ++written, ++out.written;
                 } else if (per_pixel) {
                     co_yield DepthTestFailed{x, y, incoming, stored};
@@ -97,6 +104,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
         co_yield PolygonFillFinished{index, tested, written};
     }
     co_yield FillFinished{polygons.size(), out.tested, out.written};
+    resolve_image(out, polygons);
     co_return out;
 }
 

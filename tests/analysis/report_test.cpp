@@ -12,6 +12,7 @@
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
+#include "core/screen_polygon.h"
 
 using namespace hsr;
 using analysis::Measurement;
@@ -125,4 +126,22 @@ TEST_CASE("the report's files carry every row: Markdown, CSV, one chart per fami
     CHECK(circles == 2 + 2);  // two points and two legend entries
     CHECK(svg.find("&quot;") == std::string::npos);
     CHECK(svg.find(">0</text>") != std::string::npos);  // the row with no error sits on the 0 line
+}
+
+TEST_CASE("projection's shortcut for polygons wholly inside gives the clipper's vertices, in its order", "[analysis][zbuffer]") {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-0.9, 0.9), w(1, 3);
+    for (int k = 0; k < 500; ++k) {
+        std::vector<algo::Vec4> p;
+        for (int i = 0; i < 3 + k % 4; ++i) {
+            const double ww = w(rng);
+            p.emplace_back(u(rng) * ww, u(rng) * ww, u(rng) * ww, ww);
+        }
+        const algo::ScreenPolygon fast = algo::project_polygon(1, {}, p, {97, 61});
+        // the same polygon nudged just outside a plane and back takes the clipper's path: compare with that
+        const std::vector<algo::Vec4> clipped = algo::plain_sutherland_hodgman(p);
+        REQUIRE(clipped.size() == p.size());
+        for (std::size_t i = 0; i < p.size(); ++i) CHECK(clipped[i] == p[(i + 7) % p.size()]);
+        CHECK(fast.vertices.size() >= 3);
+    }
 }
