@@ -37,4 +37,39 @@ std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cel
     return seen;
 }
 
+std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cell, Vec3 p, Vec3 d) {
+    // The plan ray, with the height along it: world y = p.y + d.y · t where the plan point is plan(p) + t · plan(d)
+    const Vec2 p2 = plan_point(p), d2 = plan_point(d);
+    std::vector<std::uint32_t> seen{cell};
+    double t = 0;  // along the ray, as far as the cell entered last
+    for (std::size_t guard = 0; guard < m.cells.size(); ++guard) {
+        const auto& o = m.cells[cell].outline;
+        double t_exit = 1e300;
+        for (std::size_t i = 0; i < o.size(); ++i) {
+            const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
+            const double denom = cross(d2, e);
+            if (denom > 0) t_exit = std::min(t_exit, cross(a - p2, e) / denom);
+        }
+        if (t_exit >= 1e300 || t_exit < t) break;
+        const double y = p.y + d.y * t_exit;  // the height where it meets the cell's outline
+        if (y <= 0 || y >= m.height) break;   // the floor or the ceiling came first
+        const Vec2 q = p2 + t_exit * d2;
+        std::int64_t next = -1;
+        for (std::uint32_t k : m.cells[cell].portals) {
+            const Portal& portal = m.portals[k];
+            const Vec2 along = portal.left - portal.right;
+            const double s = glm::dot(q - portal.right, along) / glm::dot(along, along);
+            double bottom = 1e300, top = -1e300;
+            for (const Vec3& v : portal.opening) bottom = std::min(bottom, v.y), top = std::max(top, v.y);
+            if (std::abs(cross(along, q - portal.right)) <= m.tol.epsilon * glm::length(along) && s > 1e-9 && s < 1 - 1e-9 &&
+                y > bottom && y < top)
+                next = portal.to;
+        }
+        if (next < 0) break;
+        cell = std::uint32_t(next), t = t_exit;
+        seen.push_back(cell);
+    }
+    return seen;
+}
+
 }  // namespace hsr::algo

@@ -12,4 +12,8 @@ namespace hsr::algo {
 // The cells the ray from p (in `cell`) along d passes through, the start cell first.
 std::vector<std::uint32_t> cells_along_ray(const CellModel& model, std::uint32_t cell, Vec2 p, Vec2 d);
 
+// The same in 3D: a ray from p (world, in `cell`, between floor and ceiling) along d, through the openings it
+// crosses between their bottom and top, until it meets a wall, the floor or the ceiling.
+std::vector<std::uint32_t> cells_along_ray(const CellModel& model, std::uint32_t cell, Vec3 p, Vec3 d);
+
 }  // namespace hsr::algo

@@ -46,8 +46,9 @@ std::string describe(const PvsEvent& event, const CellModel& m) {
                 for (std::uint32_t k : e.portals) seq += (seq.empty() ? cell_name(m, m.portals[k].from) : "") + "→" + cell_name(m, m.portals[k].to);
                 if (e.portals.size() == 1) return "Through one portal, " + seq + ": a sightline always exists.";
                 return "Sightline through " + n(e.portals.size()) + " portals " + seq + ": " +
-                       (e.found ? "found (line-space area " + format_number(e.line_space_area) + ")."
-                                : "none, the portals cannot all be seen through along one line.");
+                       (e.found           ? "found (line-space area " + format_number(e.line_space_area) + ")."
+                        : e.blocked_in_3d ? "none in 3D: in the plan lines pass, but each goes above or below one of the openings."
+                                          : "none, the portals cannot all be seen through along one line.");
             },
             [&](const CellReached& e) -> std::string {
                 return "Cell " + cell_name(m, e.cell) + " is potentially visible from " + cell_name(m, e.source) + " (" + n(e.depth) +

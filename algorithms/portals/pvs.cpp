@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include "portals/sightline.h"
+#include "portals/stab3d.h"
 
 namespace hsr::algo {
 namespace {
@@ -33,13 +34,17 @@ std::uint32_t assume_reachable_visible(Build& b, std::uint32_t cell) {
     return added;
 }
 
-// Stab(c, portals): the sequence is in b.portals; `lines` are the sightlines through all but its last portal.
-Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, std::int32_t parent) {
+// Stab(c, portals): the sequence is in b.portals; `lines` are the sightlines through all but its last portal, in the
+// plan (exact), and `solid` the same in 3D, where openings have a bottom and a top (conservative: stab3d.h).
+Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, SolidSightlines solid, std::int32_t parent) {
     const Portal& last = b->model->portals[b->portals.back()];
-    const bool found = b->portals.size() == 1 || lines.through(ends(last));
+    bool found = b->portals.size() == 1 || lines.through(ends(last));
+    bool blocked_in_3d = false;
+    if (found && b->portals.size() > 1) found = solid.through(last.opening), blocked_in_3d = !found;
     ++b->pvs.sightline_tests;
     {
         SightlineTested t{b->source, b->portals, found, lines.area()};
+        t.blocked_in_3d = blocked_in_3d;
         if (found) std::tie(t.point, t.direction) = lines.example();
         const PvsEvent tested = std::move(t);
         co_yield tested;
@@ -64,7 +69,7 @@ Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, std::int32_t parent) {
             break;
         }
         b->portals.push_back(next);
-        auto child = stab(b, lines, node);
+        auto child = stab(b, lines, solid, node);
         for (const auto& e : child) co_yield e;
         b->portals.pop_back();
     }
@@ -94,7 +99,7 @@ Steps<PvsEvent, Pvs> build_pvs(const CellModel* model, PvsOptions options) {
         b.path = {b.source};
         for (std::uint32_t first : model->cells[b.source].portals) {
             b.portals = {first};
-            auto child = stab(&b, Sightlines(ends(model->portals[first])), 0);
+            auto child = stab(&b, Sightlines(ends(model->portals[first])), SolidSightlines(model->portals[first].opening, model->tol.epsilon), 0);
             for (const auto& e : child) co_yield e;
         }
     }

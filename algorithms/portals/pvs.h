@@ -4,6 +4,8 @@
 //
 //   StabTree(c):                     for each portal P out of c: Stab(c, [P])
 //   Stab(c, portals):                if no sightline passes through all of portals: return
+//                                    (in the plan, exactly: sightline.h; in 3D, where openings have a bottom and
+//                                    a top, conservatively by separating planes: stab3d.h)
 //                                    add the cell behind the last portal to PVS(c)
 //                                    for each portal P' out of it (not back into a cell on the way): Stab(c, portals + P')
 #pragma once

@@ -117,7 +117,7 @@ inline void to_json(nlohmann::json& j, Order o) { j = o == Order::back_to_front 
 inline void to_json(nlohmann::json& j, const Plane& p) { j = nlohmann::json::array({p.n.x, p.n.y, p.n.z, p.d}); }
 
 HSR_TO_JSON(StabTreeStarted, cell)
-HSR_TO_JSON(SightlineTested, source, portals, found, line_space_area, point, direction)
+HSR_TO_JSON(SightlineTested, source, portals, found, line_space_area, point, direction, blocked_in_3d)
 HSR_TO_JSON(CellReached, source, cell, depth, node, parent, portal)
 HSR_TO_JSON(StabBoundReached, source, cell, limit, cells_assumed)
 HSR_TO_JSON(PvsBuilt, cells, visible_pairs, sightline_tests)
