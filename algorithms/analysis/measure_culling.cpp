@@ -13,9 +13,11 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{96, 72} : algo::Viewport{320, 240};
     using S = algo::Stage;
     std::vector<Measurement> rows;
-    for (const auto& [kind, scene] : {std::pair{"city", algo::city_scene({.triangles = n})},
-                                      std::pair{"field", algo::field_scene({.triangles = n})},
-                                      std::pair{"spheres", algo::spheres_scene({.triangles = n})}}) {
+    for (const auto& kind_and_scene : {std::pair{"city", algo::city_scene({.triangles = n})},
+                                       std::pair{"field", algo::field_scene({.triangles = n})},
+                                       std::pair{"spheres", algo::spheres_scene({.triangles = n})}}) {
+        const char* kind = kind_and_scene.first;  // (a lambda may not capture a structured binding in clang 14)
+        const algo::Scene& scene = kind_and_scene.second;
         const std::string setting = std::string(kind) + ", " + std::to_string(scene.polygons.size()) + " triangles";
         algo::PipelineResult all;
         const double all_ms = median_ms(o.repeats, [&] { all = algo::run_pipeline(scene, {.stages = {}, .viewport = vp}); });

@@ -69,8 +69,10 @@ std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
     const algo::Image ref = reference(s, vp);
     const std::string setting = std::to_string(s.polygons.size()) + " random triangles, some piercing";
     using R = algo::SplitterRule;
-    for (const auto& [rule, name] : {std::pair{R::first, "first"}, std::pair{R::balanced, "balanced"},
-                                     std::pair{R::fewest_splits, "fewest-splits"}, std::pair{R::weighted, "weighted"}}) {
+    for (const auto& rule_and_name : {std::pair{R::first, "first"}, std::pair{R::balanced, "balanced"},
+                                      std::pair{R::fewest_splits, "fewest-splits"}, std::pair{R::weighted, "weighted"}}) {
+        const R rule = rule_and_name.first;  // (a lambda may not capture a structured binding in clang 14)
+        const char* name = rule_and_name.second;
         BspPainting p{};
         const double ms = median_ms(o.repeats, [&] { p = paint_bsp(s, rule, vp); });
         rows.push_back({.family = "hsr", .method = std::string("bsp ") + name, .setting = setting, .median_ms = ms,
