@@ -26,12 +26,30 @@ std::vector<Vec3> wall_quad(Vec2 a, Vec2 b, double y0, double y1) {
     return {world_point(a, y0), world_point(b, y0), world_point(b, y1), world_point(a, y1)};
 }
 
+// An opening in one wall: its outline as (t, h), t along the wall from 0 at its start to 1 at its end.
 struct Opening {
-    double t0, t1;  // along the edge, 0 at its start, 1 at its end
-    double bottom, top;
+    double t0, t1;  // its extent along the wall
+    std::vector<glm::dvec2> outline;
 };
 
+// The wall between plan points a and b with heights lo and hi at each end: a quad, or a triangle where lo = hi.
+std::vector<Vec3> wall_piece(Vec2 a, Vec2 b, double lo_a, double lo_b, double hi_a, double hi_b, double eps) {
+    std::vector<Vec3> v{world_point(a, lo_a), world_point(b, lo_b)};
+    if (hi_b - lo_b > eps) v.push_back(world_point(b, hi_b));
+    if (hi_a - lo_a > eps) v.push_back(world_point(a, hi_a));
+    return v;
+}
+
 }  // namespace
+
+bool in_opening(const Portal& p, const Vec3& x, double margin) {
+    for (std::size_t i = 0; i < p.opening.size(); ++i) {
+        const Vec3& a = p.opening[i];
+        const Vec3 e = p.opening[(i + 1) % p.opening.size()] - a;
+        if (glm::dot(glm::cross(e, x - a), p.plane.n) < margin * glm::length(e)) return false;
+    }
+    return true;
+}
 
 bool inside(const std::vector<Vec2>& outline, Vec2 p, double eps) {
     for (std::size_t i = 0; i < outline.size(); ++i) {
@@ -66,14 +84,19 @@ CellModel cell_model(const Scene& scene) {
     for (const ScenePortal& sp : plan.portals) {
         const std::uint32_t a = index_of(sp.between[0]), b = index_of(sp.between[1]);
         for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-            Portal p{from, to, sp.from, sp.to, {}, {}, 0};
+            // the opening's shape as (s, h), s from 0 at sp.from to 1 at sp.to: the rectangle unless one is given
+            const std::vector<Vec2> shape = !sp.shape.empty() ? sp.shape
+                                                             : std::vector<Vec2>{{0, sp.bottom}, {1, sp.bottom}, {1, sp.top}, {0, sp.top}};
+            double s0 = 1, s1 = 0;
+            for (const Vec2& q : shape) s0 = std::min(s0, q.x), s1 = std::max(s1, q.x);
+            const Vec2 along = sp.to - sp.from, mid = (sp.from + sp.to) / 2.0;
+            Portal p{from, to, sp.from + s0 * along, sp.from + s1 * along, {}, {}, 0};
             Vec2 mean(0);
             for (const Vec2& v : m.cells[from].outline) mean += v / double(m.cells[from].outline.size());
-            const Vec2 along = sp.to - sp.from, mid = (sp.from + sp.to) / 2.0;
             Vec2 through(along.y, -along.x);                            // across the opening
             if (glm::dot(through, mid - mean) < 0) through = -through;  // pointing out of `from`
             if (cross(through, p.left - p.right) < 0) std::swap(p.left, p.right);
-            p.opening = wall_quad(p.right, p.left, sp.bottom, sp.top);
+            for (const Vec2& q : shape) p.opening.push_back(world_point(sp.from + q.x * along, q.y));
             plane_of(p.opening, p.plane);
             if (glm::dot(p.plane.n, world_point(mid + through, 0) - world_point(mid, 0)) < 0) {
                 std::reverse(p.opening.begin(), p.opening.end());
@@ -110,20 +133,38 @@ CellModel cell_model(const Scene& scene) {
                 const Portal& p = m.portals[k];
                 const auto t_of = [&](Vec2 q) { return glm::dot(q - a, d) / glm::dot(d, d); };
                 if (std::abs(cross(d, p.left - a)) > eps * glm::length(d) || std::abs(cross(d, p.right - a)) > eps * glm::length(d)) continue;
-                const double t0 = std::min(t_of(p.left), t_of(p.right)), t1 = std::max(t_of(p.left), t_of(p.right));
-                if (t1 < -eps || t0 > 1 + eps) continue;
-                openings.push_back({std::max(t0, 0.0), std::min(t1, 1.0), p.opening[0].y, p.opening[2].y});
+                Opening o{1e300, -1e300, {}};
+                for (const Vec3& v : p.opening) {
+                    o.outline.push_back({std::clamp(t_of(plan_point(v)), 0.0, 1.0), v.y});
+                    o.t0 = std::min(o.t0, o.outline.back().x), o.t1 = std::max(o.t1, o.outline.back().x);
+                }
+                if (o.t1 < -eps || o.t0 > 1 + eps) continue;
+                openings.push_back(std::move(o));
             }
             std::sort(openings.begin(), openings.end(), [](const Opening& x, const Opening& y) { return x.t0 < y.t0; });
             double t = 0;
+            const double te = eps / glm::length(d);  // eps as a share of the wall
             for (const Opening& o : openings) {
-                if (o.t0 > t + eps) add(c, wall_quad(a + t * d, a + o.t0 * d, 0, plan.height), cell_color(c, false), next_id++, centre);
-                const double ob = std::min(o.bottom, o.top), ot = std::max(o.bottom, o.top);
-                if (ob > eps) add(c, wall_quad(a + o.t0 * d, a + o.t1 * d, 0, ob), cell_color(c, false), next_id++, centre);
-                if (ot < plan.height - eps) add(c, wall_quad(a + o.t0 * d, a + o.t1 * d, ot, plan.height), cell_color(c, false), next_id++, centre);
+                if (o.t0 > t + te) add(c, wall_quad(a + t * d, a + o.t0 * d, 0, plan.height), cell_color(c, false), next_id++, centre);
+                // Below each edge of the opening's lower side, wall down to the floor; above each edge of its upper
+                // side, wall up to the ceiling: convex pieces, however the opening is shaped
+                glm::dvec2 mean_th(0);
+                for (const glm::dvec2& q : o.outline) mean_th += q / double(o.outline.size());
+                for (std::size_t k = 0; k < o.outline.size(); ++k) {
+                    glm::dvec2 e0 = o.outline[k], e1 = o.outline[(k + 1) % o.outline.size()];
+                    if (std::abs(e1.x - e0.x) <= te) continue;  // an upright side: no wall above or below it
+                    if (e0.x > e1.x) std::swap(e0, e1);
+                    const double h_at_mean = e0.y + (e1.y - e0.y) * (mean_th.x - e0.x) / (e1.x - e0.x);
+                    const Vec2 pa = a + e0.x * d, pb = a + e1.x * d;
+                    if (mean_th.y > h_at_mean) {  // the opening is above this edge: wall from the floor up to it
+                        if (std::max(e0.y, e1.y) > eps) add(c, wall_piece(pa, pb, 0, 0, e0.y, e1.y, eps), cell_color(c, false), next_id++, centre);
+                    } else if (std::min(e0.y, e1.y) < plan.height - eps) {
+                        add(c, wall_piece(pa, pb, e0.y, e1.y, plan.height, plan.height, eps), cell_color(c, false), next_id++, centre);
+                    }
+                }
                 t = std::max(t, o.t1);
             }
-            if (t < 1 - eps) add(c, wall_quad(a + t * d, b, 0, plan.height), cell_color(c, false), next_id++, centre);
+            if (t < 1 - te) add(c, wall_quad(a + t * d, b, 0, plan.height), cell_color(c, false), next_id++, centre);
         }
         std::vector<Vec3> floor;
         for (const Vec2& v : outline) floor.push_back(world_point(v, 0));

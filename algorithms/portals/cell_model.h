@@ -29,7 +29,7 @@ struct CellPolygon {
 struct Portal {
     std::uint32_t from, to;      // going through it from cell `from` into cell `to`
     Vec2 left, right;            // its ends in the plan, as seen going through (left on the left)
-    std::vector<Vec3> opening;   // world: the opening's quad, from its bottom to its top
+    std::vector<Vec3> opening;   // world: the opening's outline (a rectangle, or the shape the plan gives), convex
     Plane plane;                 // of the opening; its front faces `to`
     std::uint32_t twin;          // the same opening the other way
 };
@@ -58,6 +58,9 @@ Scene model_scene(const CellModel& model);
 // The cell whose outline holds p (boundaries included), by testing every cell: the reference for the BSP.
 std::optional<std::uint32_t> cell_at(const CellModel& model, Vec2 p);
 bool inside(const std::vector<Vec2>& outline, Vec2 p, double eps);
+// Whether a point of the opening's plane lies within its outline, at least `margin` inside (a negative margin lets
+// points on the edge and just beyond count).
+bool in_opening(const Portal& p, const Vec3& point, double margin);
 
 inline Vec2 plan_point(const Vec3& world) { return {world.x, -world.z}; }
 inline Vec3 world_point(Vec2 plan, double height) { return {plan.x, height, -plan.y}; }

@@ -58,11 +58,9 @@ std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cel
         for (std::uint32_t k : m.cells[cell].portals) {
             const Portal& portal = m.portals[k];
             const Vec2 along = portal.left - portal.right;
-            const double s = glm::dot(q - portal.right, along) / glm::dot(along, along);
-            double bottom = 1e300, top = -1e300;
-            for (const Vec3& v : portal.opening) bottom = std::min(bottom, v.y), top = std::max(top, v.y);
-            if (std::abs(cross(along, q - portal.right)) <= m.tol.epsilon * glm::length(along) && s > 1e-9 && s < 1 - 1e-9 &&
-                y > bottom && y < top)
+            // on the opening's wall, and strictly within its outline there (a ray along its edge meets the wall)
+            if (std::abs(cross(along, q - portal.right)) <= m.tol.epsilon * glm::length(along) &&
+                in_opening(portal, world_point(q, y), m.tol.epsilon))
                 next = portal.to;
         }
         if (next < 0) break;

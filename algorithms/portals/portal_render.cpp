@@ -66,11 +66,7 @@ std::vector<Plane> narrowed(const Render& r, const std::vector<Plane>& f, const 
 
 bool eye_in_opening(const Render& r, const Portal& p) {
     if (std::abs(p.plane.distance(r.eye)) > r.model->tol.epsilon) return false;
-    const Vec2 e = plan_point(r.eye), along = p.left - p.right;
-    const double t = glm::dot(e - p.right, along) / glm::dot(along, along);
-    double lo = 1e300, hi = -1e300;
-    for (const Vec3& v : p.opening) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
-    return t >= 0 && t <= 1 && r.eye.y >= lo && r.eye.y <= hi;
+    return in_opening(p, r.eye, -r.model->tol.epsilon);
 }
 
 void draw_polygons(Render& r, std::uint32_t cell, const std::vector<Plane>& f, std::vector<PortalEvent>& events) {

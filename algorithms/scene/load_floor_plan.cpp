@@ -9,6 +9,21 @@
 namespace hsr::algo {
 namespace {
 
+// Points in order round a convex polygon with area (either way round; no three in a row).
+bool convex_with_area(const std::vector<glm::dvec2>& p, double eps) {
+    if (p.size() < 3) return false;
+    double sign = 0, area = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
+        const double turn = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+        if (std::abs(turn) <= eps) return false;
+        if (sign != 0 && (turn > 0) != (sign > 0)) return false;
+        sign = turn;
+        area += a.x * b.y - b.x * a.y;
+    }
+    return std::abs(area) > eps;
+}
+
 glm::dvec2 point2(const TomlReader& r, const toml::node& n, const std::string& field) {
     const toml::array* a = n.as_array();
     if (!a || a->size() != 2) r.fail(&n, field, "expected [x, y] (2 numbers)");
@@ -135,11 +150,11 @@ FloorPlan read_floor_plan(const TomlReader& r, const toml::table* t) {
             const std::string fi = index(join(f, "portals"), i);
             const toml::table* pt = portals->get(i)->as_table();
             if (!pt) r.fail(portals->get(i), fi, "expected a table");
-            r.only_keys(*pt, fi, {"between", "from", "to", "bottom", "top"});
+            r.only_keys(*pt, fi, {"between", "from", "to", "bottom", "top", "shape"});
             const std::vector<std::string> between = r.strings(*pt, "between", fi);
             if (between.size() != 2 || between[0] == between[1])
                 r.fail(pt->get("between"), join(fi, "between"), "expected the names of two different cells");
-            ScenePortal p{{between[0], between[1]}, {}, {}, 0, 0, int(pt->source().begin.line)};
+            ScenePortal p{{between[0], between[1]}, {}, {}, 0, 0, {}, int(pt->source().begin.line)};
             for (const std::string& name : between)
                 if (cell_named(name) == plan.cells.end()) r.fail(pt->get("between"), join(fi, "between"), "no cell is named \"" + name + "\"");
             if (!pt->get("from") || !pt->get("to")) r.fail(pt, fi, "a portal needs from = [x, y] and to = [x, y]");
@@ -153,6 +168,18 @@ FloorPlan read_floor_plan(const TomlReader& r, const toml::table* t) {
             p.top = r.number(*pt, "top", fi, plan.height);
             if (!(p.bottom >= 0 && p.bottom < p.top && p.top <= plan.height))
                 r.fail(pt->get("top"), join(fi, "top"), "expected 0 <= bottom < top <= the rooms' height");
+            if (const toml::array* shape = r.array(*pt, "shape", fi, false)) {
+                if (pt->contains("bottom") || pt->contains("top"))
+                    r.fail(pt->get("shape"), join(fi, "shape"), "give either shape or bottom and top, not both");
+                for (std::size_t k = 0; k < shape->size(); ++k) {
+                    const glm::dvec2 q = point2(r, *shape->get(k), index(join(fi, "shape"), k));
+                    if (!(q.x >= 0 && q.x <= 1 && q.y >= 0 && q.y <= plan.height))
+                        r.fail(shape->get(k), index(join(fi, "shape"), k), "expected [s, h] with 0 <= s <= 1 (from `from` to `to`) and 0 <= h <= the rooms' height");
+                    p.shape.push_back(q);
+                }
+                if (!convex_with_area(p.shape, eps))
+                    r.fail(pt->get("shape"), join(fi, "shape"), "expected 3 or more points making a convex polygon with area, in order");
+            }
             plan.portals.push_back(std::move(p));
         }
     return plan;

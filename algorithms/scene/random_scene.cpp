@@ -60,7 +60,7 @@ Scene cell_maze(CellMaze o) {
         if (!joins && chance(rng) >= o.extra_doors) continue;
         part[find(w.a)] = find(w.b);
         const double x = (w.a % o.cols) * size, y = (w.a / o.cols) * size, t = at(rng);
-        ScenePortal p{{s.floor_plan.cells[w.a].name, s.floor_plan.cells[w.b].name}, {}, {}, 0, s.floor_plan.height, 0};
+        ScenePortal p{{s.floor_plan.cells[w.a].name, s.floor_plan.cells[w.b].name}, {}, {}, 0, s.floor_plan.height, {}, 0};
         if (w.vertical) p.from = {x + size, y + t}, p.to = {x + size, y + t + door};
         else p.from = {x + t, y + size}, p.to = {x + t + door, y + size};
         s.floor_plan.portals.push_back(p);

@@ -60,9 +60,17 @@ std::string scene_toml(const Scene& s) {
             for (const auto& p : cell.outline) outline.push_back(vec2(p));
             cells.push_back(toml::table{{"name", cell.name}, {"outline", std::move(outline)}});
         }
-        for (const auto& p : f.portals)
-            portals.push_back(toml::table{{"between", toml::array{p.between[0], p.between[1]}}, {"from", vec2(p.from)},
-                                          {"to", vec2(p.to)}, {"bottom", p.bottom}, {"top", p.top}});
+        for (const auto& p : f.portals) {
+            toml::table portal{{"between", toml::array{p.between[0], p.between[1]}}, {"from", vec2(p.from)}, {"to", vec2(p.to)}};
+            if (p.shape.empty()) {
+                portal.insert("bottom", p.bottom), portal.insert("top", p.top);
+            } else {
+                toml::array shape;
+                for (const auto& q : p.shape) shape.push_back(vec2(q));
+                portal.insert("shape", std::move(shape));
+            }
+            portals.push_back(std::move(portal));
+        }
         plan.insert("cells", std::move(cells));
         if (!portals.empty()) plan.insert("portals", std::move(portals));
         root.insert("floor_plan", std::move(plan));

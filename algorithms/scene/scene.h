@@ -65,6 +65,9 @@ struct ScenePortal {
     std::string between[2];   // the names of the two cells it joins
     glm::dvec2 from, to;      // the opening, on the wall the two cells share (plan)
     double bottom = 0, top = 0;  // heights of the opening (top 0: up to the ceiling)
+    // Or any convex shape: points (s, h), s from 0 at `from` to 1 at `to` along the wall, h the height (empty: the
+    // rectangle from bottom to top)
+    std::vector<glm::dvec2> shape;
     int line;
 };
 struct FloorPlan {

@@ -82,7 +82,7 @@ TEST_CASE("the from-region PVS is conservative: a ray from anywhere in a cell se
 
 TEST_CASE("the PVS is conservative in 3D: rays at any height and slope through windows and doors reach only PVS cells", "[portals][pvs][3d]") {
     int through_two = 0;  // rays that pass two openings in a row, over all the scenes
-    for (const char* file : {"cells_lecture.toml", "cells_ring.toml", "cells_general.toml", "cells_windows_3d.toml"}) {
+    for (const char* file : {"cells_lecture.toml", "cells_ring.toml", "cells_general.toml", "cells_windows_3d.toml", "cells_shaped_openings.toml"}) {
         INFO(file);
         const Built b = build(scene_named(file));
         std::mt19937 rng(17);
@@ -123,6 +123,33 @@ TEST_CASE("windows at different heights: the plan sees through, the 3D test does
           std::vector<std::uint32_t>{named(m, "A"), named(m, "B"), named(m, "C")});
 }
 
+TEST_CASE("openings of any shape: the wall pieces round them cover the wall but the opening, once", "[portals][shapes]") {
+    const Built b = build(scene_named("cells_shaped_openings.toml"));
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> along(0.01, 2.99), height(0.01, 2.99);
+    for (const Portal& p : b.model.portals) {
+        INFO(b.model.cells[p.from].name << " to " << b.model.cells[p.to].name);
+        int in_opening_count = 0;
+        for (int k = 0; k < 3000; ++k) {
+            // a point of the wall (x = 3 or 6, plan y in [0, 3]), and a ray to it from inside `from`, square on
+            const Vec3 at = world_point({p.left.x, along(rng)}, height(rng));
+            const Vec3 from_inside = at - 0.5 * p.plane.n;
+            const Ray ray{from_inside, p.plane.n};
+            int walls_hit = 0;
+            for (std::uint32_t q : b.model.cells[p.from].polygons) {
+                const CellPolygon& poly = b.model.polygons[q];
+                if (std::abs(poly.plane.distance(at)) < 1e-9 && hit(ray, poly.vertices, poly.plane)) ++walls_hit;
+            }
+            const bool open = in_opening(p, at, 1e-6);
+            const bool on_edge = !open && in_opening(p, at, -1e-6);
+            if (on_edge) continue;  // within a micron of the opening's edge: either may claim it
+            in_opening_count += open;
+            CHECK(walls_hit == (open ? 0 : 1));
+        }
+        CHECK(in_opening_count > 100);
+    }
+}
+
 TEST_CASE("cell location by the BSP tree agrees with testing every cell, for 10^5 random points", "[portals][bsp]") {
     const Scene s = scene_named("cells_chain_1000.toml");
     const CellModel m = cell_model(s);
@@ -147,7 +174,8 @@ TEST_CASE("cell location by the BSP tree agrees with testing every cell, for 10^
 TEST_CASE("portal_render draws every polygon a ray cast from the eye sees", "[portals][render]") {
     const bool bbox = GENERATE(false, true);
     INFO((bbox ? "bounding-box frusta" : "exact frusta"));
-    for (const char* file : {"cells_lecture.toml", "cells_l_corridor.toml", "cells_ring.toml", "cells_general.toml"}) {
+    for (const char* file : {"cells_lecture.toml", "cells_l_corridor.toml", "cells_ring.toml", "cells_general.toml",
+                             "cells_windows_3d.toml", "cells_shaped_openings.toml"}) {
         INFO(file);
         Built b = build(scene_named(file));
         std::mt19937 rng(11);
