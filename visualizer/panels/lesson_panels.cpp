@@ -97,7 +97,13 @@ void timeline_panel(const Session& s, const PlaybackState& playback, const Panel
     float speed = playback.speed;
     if (ImGui::SliderFloat("steps/s", &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
     ImGui::SameLine();
-    ImGui::TextColored(dim_text, "%s   Space play · ←/→ step · Shift micro-step · Home/End", step_text(s).c_str());
+    // the keys' hint as far as it fits beside the step: whole, shorter, or not at all
+    const std::string step = step_text(s);
+    const float room = ImGui::GetContentRegionAvail().x;
+    std::string line = step + "   Space play · ←/→ step · Shift micro-step · Home/End";
+    if (ImGui::CalcTextSize(line.c_str()).x > room) line = step + "   Space · ←/→ · F1 keys";
+    if (ImGui::CalcTextSize(line.c_str()).x > room) line = step;
+    ImGui::TextColored(dim_text, "%s", line.c_str());
 
     int cursor = int(s.cursor());
     ImGui::SetNextItemWidth(-1);
