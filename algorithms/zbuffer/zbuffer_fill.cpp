@@ -14,19 +14,24 @@ namespace {
 // when the step bound stopped it (at the same pixel the machine's own loop would stop).
 bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int y, Span span, double z, const ZBufferOptions& o,
                double levels, std::uint64_t& tested, std::uint64_t& written) {
-    const std::size_t row = std::size_t(y) * std::size_t(o.viewport.width);
-    for (int x = span.begin; x < span.end; ++x, z += p.plane.per_x) {
-        if (out.tested == o.max_pixel_tests) return false;
-        const std::size_t k = row + std::size_t(x);
+    // the pixels the step bound still allows: the loop then needs no test of its own
+    const std::uint64_t left = o.max_pixel_tests - out.tested;
+    const int end = std::uint64_t(span.end - span.begin) > left ? span.begin + int(left) : span.end;
+    std::uint32_t* depth = out.depth.data() + std::size_t(y) * std::size_t(o.viewport.width);
+    std::int32_t* polygon = out.polygon.data() + std::size_t(y) * std::size_t(o.viewport.width);
+    const double per_x = p.plane.per_x;
+    std::uint64_t wrote = 0;
+    for (int x = span.begin; x < end; ++x, z += per_x) {
         const std::uint64_t incoming = levels > 0 ? std::uint64_t(round_half_away(levels * std::clamp(z, 0.0, 1.0)))
                                                   : code_of_window_depth(o.format, z, o.range, o.perspective);
-        ++tested, ++out.tested;
-        if (incoming >= out.depth[k]) continue;
-        out.depth[k] = std::uint32_t(incoming);
-        out.polygon[k] = index;  // the colour and id follow at the end (resolve_image): less to write per pixel
-        ++written, ++out.written;
+        if (incoming >= depth[x]) continue;
+        depth[x] = std::uint32_t(incoming);
+        polygon[x] = index;  // the colour and id follow at the end (resolve_image): less to write per pixel
+        ++wrote;
     }
-    return true;
+    const auto n = std::uint64_t(end - span.begin);
+    tested += n, out.tested += n, written += wrote, out.written += wrote;
+    return end == span.end;
 }
 
 // The image from the polygon buffer: each pixel the colour and id of the polygon it holds.

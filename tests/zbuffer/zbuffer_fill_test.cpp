@@ -193,6 +193,21 @@ TEST_CASE("the step bound ends the fill with its own event", "[zbuffer][bound]")
     const FrameDepth f = std::move(m).result();
     CHECK(f.bounded);
     CHECK(f.tested == 5);
+    // with polygon-level events the fill takes its faster path: it stops at the same pixel, with the same buffers
+    for (const std::uint64_t bound : {0u, 1u, 5u, 7u, 23u, 1000u}) {
+        INFO("bound " << bound);
+        const auto run = [&](EventDetail detail) {
+            return zbuffer_fill({ndc_triangle(1, {-1, -1}, {1, -1}, {0, 1}, 0, vp), ndc_triangle(2, {-1, 1}, {1, 0}, {-1, -1}, 0.5, vp)},
+                                {.viewport = vp, .detail = detail, .max_pixel_tests = bound})
+                .run_to_end();
+        };
+        const FrameDepth a = run(EventDetail::pixel), b = run(EventDetail::polygon);
+        CHECK(a.tested == b.tested);
+        CHECK(a.written == b.written);
+        CHECK(a.bounded == b.bounded);
+        CHECK(a.depth == b.depth);
+        CHECK(a.image.ids == b.image.ids);
+    }
 }
 
 TEST_CASE("z-merge of two halves of a scene equals the z-buffer of the whole", "[zbuffer][merge]") {
