@@ -180,6 +180,14 @@ struct Lessonplay {
         std::printf("hsrviz: playing %s with %s\n", path.c_str(), algorithm.value_or("the lesson's algorithm").c_str());
     }
 
+    // S: the scene as edited, to hsrviz-export/NAME-edited.toml
+    void save_edited(const algo::Scene& scene) const {
+        const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
+        std::filesystem::create_directories("hsrviz-export");
+        const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene));
+        std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
+    }
+
     void update(const UiActions& a, double dt, const AppOptions& o) {
         if (a.reload || watch.changed(dt)) load(o);
         if (a.toggle_presets) show_presets = !show_presets;
@@ -227,12 +235,7 @@ struct Lessonplay {
             if (a.undo) edited |= bsp->undo();
             if (a.redo) edited |= bsp->redo();
             if (edited) classroom.attach(*session);
-            if (a.save_scene) {
-                const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
-                std::filesystem::create_directories("hsrviz-export");
-                const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(bsp->edited_scene()));
-                std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
-            }
+            if (a.save_scene) save_edited(bsp->edited_scene());
         }
         if (a.move_eye) {
             if (auto* bsp = dynamic_cast<BspSession*>(session.get())) bsp->move_eye(*a.move_eye);
@@ -243,6 +246,14 @@ struct Lessonplay {
         if (auto* zb = dynamic_cast<ZBufferSession*>(session.get())) {
             if (a.depth_format) zb->set_format(*a.depth_format);
             if (a.depth_range) zb->set_range(*a.depth_range);
+            bool edited = false;  // editing on the fat pixels
+            if (a.move_screen_vertex) edited |= zb->move_vertex(a.move_screen_vertex->polygon, a.move_screen_vertex->vertex, a.move_screen_vertex->pixel);
+            if (a.add_triangle) edited |= zb->add_triangle((*a.add_triangle)[0], (*a.add_triangle)[1], (*a.add_triangle)[2]);
+            if (a.delete_polygon) edited |= zb->delete_polygon(*a.delete_polygon);
+            if (a.undo) edited |= zb->undo();
+            if (a.redo) edited |= zb->redo();
+            if (edited) classroom.attach(*session);
+            if (a.save_scene) save_edited(zb->edited_scene());
         }
         Session& p = *session;
         const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
@@ -383,6 +394,24 @@ std::optional<std::size_t> segment_near(const Renderer& r, const Session* s, flo
     return std::nullopt;
 }
 
+// The z-buffer lesson's frame-buffer grid as the canvas draws it, or nullopt when none is shown (3D, an overlay).
+std::optional<FatGrid> fat_grid(const Lessonplay& lp, const ImGuiIO& io) {
+    const auto* zb = dynamic_cast<const ZBufferSession*>(lp.session.get());
+    if (!zb || lp.zbuffer_3d || lp.show_presets || lp.show_keys || lp.show_report) return std::nullopt;
+    const PanelLayout l{io.DisplaySize.x, io.DisplaySize.y, clamp_side(lp.side, io.DisplaySize.x)};
+    return zbuffer_frame_grid(*zb, 0, 0, l.width - l.side, l.height - l.bottom);
+}
+
+// The scene vertex of a z-buffer lesson within a few points of a window point, as (polygon, vertex).
+std::optional<std::pair<std::size_t, std::size_t>> screen_vertex_near(const ZBufferSession& zb, const FatGrid& g, float x, float y) {
+    const auto& polygons = zb.edited_scene().polygons;
+    for (std::size_t i = 0; i < polygons.size(); ++i)
+        for (std::size_t k = 0; k < polygons[i].vertices.size(); ++k)
+            if (const auto s = zb.on_screen(polygons[i].vertices[k]))
+                if (std::hypot(g.x0 + float(s->x) * g.cell - x, g.y0 + float(s->y) * g.cell - y) < 10) return std::pair{i, k};
+    return std::nullopt;
+}
+
 // F1: every key, over the view.
 void keys_panel(const PanelLayout& l) {
     static constexpr std::pair<const char*, const char*> rows[] = {
@@ -394,7 +423,7 @@ void keys_panel(const PanelLayout& l) {
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
-        {"Shift+drag, right-click", "2D scenes: draw a new segment; delete the segment clicked"},
+        {"Shift+drag, right-click", "2D scenes: a new segment; z-buffer pixels: a new triangle; delete what is clicked"},
     };
     ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
@@ -676,6 +705,10 @@ int run_app(const AppOptions& o) {
         std::int64_t dragging_input = -1;  // the vertex of a 2D scene being dragged: its input (−1: none) …
         std::size_t dragging_corner = 0;   // … and which of its vertices
         std::optional<glm::dvec3> drawing_from;  // Shift+drag in a 2D scene: where the new segment starts
+        // the fat pixels of a z-buffer lesson: the vertex being dragged (polygon, vertex), or where a Shift+drag began
+        bool screen_dragging = false, screen_drawing = false;
+        std::pair<std::size_t, std::size_t> screen_vertex{0, 0};
+        glm::dvec2 screen_drawing_from(0);
         if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
 
         std::size_t next_key = 0;
@@ -696,7 +729,13 @@ int run_app(const AppOptions& o) {
                     key_event(input->key, e);
                     SDL_PushEvent(&e);
                 } else {
-                    const glm::vec2 a = window_point(renderer, {input->from, 0.0}), b = window_point(renderer, {input->to, 0.0});
+                    // the fat-pixel view takes grid pixels; every other view the scene's plane z = 0
+                    const auto grid = fat_grid(lp, io);
+                    const auto to_window = [&](glm::dvec2 p) {
+                        return grid ? glm::vec2(grid->x0 + float(p.x) * grid->cell, grid->y0 + float(p.y) * grid->cell)
+                                    : window_point(renderer, {p, 0.0});
+                    };
+                    const glm::vec2 a = to_window(input->from), b = to_window(input->to);
                     const auto ax = int(std::lround(a.x)), ay = int(std::lround(a.y)), bx = int(std::lround(b.x)), by = int(std::lround(b.y));
                     const bool right = input->kind == ScriptedInput::Kind::right_click;
                     scripted_shift = input->kind == ScriptedInput::Kind::shift_drag;
@@ -712,6 +751,34 @@ int run_app(const AppOptions& o) {
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 if (e.type == SDL_QUIT) running = false;
                 if (!io.WantCaptureKeyboard) keys(e, actions);
+                // the z-buffer's fat pixels (an ImGui canvas, so before the capture test): drag a vertex, Shift+drag
+                // a new triangle, right-click a polygon away
+                if (const auto grid = fat_grid(lp, io)) {
+                    const auto& zb = dynamic_cast<const ZBufferSession&>(*lp.session);
+                    const auto pixel = [&](int x, int y) { return glm::dvec2((float(x) - grid->x0) / grid->cell, (float(y) - grid->y0) / grid->cell); };
+                    const auto on_grid = [&](glm::dvec2 p) { return p.x >= 0 && p.y >= 0 && p.x < zb.lesson().grid.width && p.y < zb.lesson().grid.height; };
+                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
+                        const auto near = screen_vertex_near(zb, *grid, float(e.button.x), float(e.button.y));
+                        screen_dragging = near.has_value();
+                        if (near) screen_vertex = *near;
+                        screen_drawing = !screen_dragging && (SDL_GetModState() & KMOD_SHIFT) && on_grid(pixel(e.button.x, e.button.y));
+                        screen_drawing_from = pixel(e.button.x, e.button.y);
+                    }
+                    if (e.type == SDL_MOUSEMOTION && screen_dragging)
+                        actions.move_screen_vertex = UiActions::ScreenVertexMove{screen_vertex.first, screen_vertex.second, pixel(e.motion.x, e.motion.y)};
+                    if (e.type == SDL_MOUSEBUTTONUP && e.button.button == SDL_BUTTON_LEFT && screen_drawing) {
+                        const glm::dvec2 to = pixel(e.button.x, e.button.y);
+                        actions.add_triangle = std::array{screen_drawing_from, glm::dvec2(to.x, screen_drawing_from.y), to};
+                    }
+                    if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_RIGHT) {
+                        const glm::dvec2 p = pixel(e.button.x, e.button.y);
+                        if (on_grid(p)) {
+                            const std::int32_t owner = zb.view().owner[std::size_t(int(p.y)) * std::size_t(zb.lesson().grid.width) + std::size_t(int(p.x))];
+                            if (owner >= 0) actions.delete_polygon = std::size_t(owner);
+                        }
+                    }
+                    if (e.type == SDL_MOUSEBUTTONUP) screen_dragging = screen_drawing = false;
+                }
                 if (!io.WantCaptureMouse) {  // drag the eye of a 2D lesson, or orbit and zoom the 3D view
                     if (e.type == SDL_MOUSEBUTTONDOWN && e.button.button == SDL_BUTTON_LEFT) {
                         const float x = float(e.button.x), y = float(e.button.y);

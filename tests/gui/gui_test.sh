@@ -158,6 +158,14 @@ case "$case" in
     # the machine reran on the edited scene: a different number of steps, the cursor still at step 1
     grep -q "at step 1 of" after.txt
     test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"
+    # the z-buffer's fat pixels (grid coordinates): draw a triangle, drag its corner, right-click polygon 3 away, save
+    "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot zb.png --frames 10 \
+      --keys "ShiftDrag:2:2:12:10,Drag:2:2:5:7,End,RightClick:16:21,S" > zb.txt
+    zsaved=hsrviz-export/07_zbuffer_fill-edited.toml
+    test "$(grep -c '^\[\[polygons\]\]' "$zsaved")" -eq 3   # 3 triangles, one added, one deleted
+    grep -q '^id = 4$' "$zsaved"
+    if grep -q '^id = 3$' "$zsaved"; then exit 1; fi
+    grep -q "at step 515 of 515" zb.txt                      # the fill reran on the edited scene
     if "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot x.png --frames 2 --keys "Drag:1:2" 2> bad.txt; then exit 1; fi
     grep -q 'unknown key or gesture "Drag:1:2"' bad.txt ;;
   presets)  # P lists the extreme cases of the lesson's algorithm; 2 plays the second with it; 0 a random scene; B goes back

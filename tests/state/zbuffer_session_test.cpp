@@ -97,3 +97,44 @@ TEST_CASE("the z-merge lesson's merged image is the z-buffer of the whole scene"
     CHECK(s.view().from_b_count > 0);
     CHECK(s.view().from_a_count + s.view().from_b_count == whole.polygon.size());
 }
+
+TEST_CASE("editing in the fat-pixel view: move a vertex on the screen, add and delete polygons, undo, redo", "[state][zbuffer][editing]") {
+    ZBufferSession s(load_lesson(data_dir() + "/lessons/07_zbuffer_fill.toml"));
+    const std::size_t n = s.edited_scene().polygons.size();
+    s.seek(40);
+    // a vertex dragged on the screen lands where it was dropped, at the depth it had
+    const auto before = s.on_screen(s.edited_scene().polygons[0].vertices[0]);
+    REQUIRE(before);
+    const glm::dvec2 to(before->x + 1.5, before->y - 2.25);
+    REQUIRE(s.move_vertex(0, 0, to));
+    const auto after = s.on_screen(s.edited_scene().polygons[0].vertices[0]);
+    REQUIRE(after);
+    CHECK(after->x == Approx(to.x).margin(1e-9));
+    CHECK(after->y == Approx(to.y).margin(1e-9));
+    CHECK(after->z == Approx(before->z).margin(1e-12));
+    CHECK(s.cursor() == 40);
+    // a second move of the same vertex is the same drag: one undo takes both back
+    REQUIRE(s.move_vertex(0, 0, to + glm::dvec2(0.5, 0)));
+    CHECK(s.undo());
+    CHECK(s.on_screen(s.edited_scene().polygons[0].vertices[0])->x == Approx(before->x).margin(1e-9));
+    // a triangle added on the screen: in the fill, with the next id; deleted again
+    REQUIRE(s.add_triangle({2, 2}, {12, 3}, {6, 10}));
+    CHECK(s.edited_scene().polygons.size() == n + 1);
+    s.seek_end();
+    const SceneId added = s.edited_scene().polygons.back().id;
+    CHECK(std::count(s.view().owner.begin(), s.view().owner.end(), std::int32_t(n)) > 20);  // it covers pixels
+    CHECK(added > s.edited_scene().polygons[0].id);
+    REQUIRE(s.delete_polygon(n));
+    CHECK(s.edited_scene().polygons.size() == n);
+    CHECK(s.undo());
+    CHECK(s.edited_scene().polygons.size() == n + 1);
+    CHECK(s.redo());
+    CHECK(s.edited_scene().polygons.size() == n);
+    // refused: a triangle with no area (three points on a line), a polygon out of range, deleting the last one
+    const std::size_t count = s.edited_scene().polygons.size();
+    CHECK_FALSE(s.add_triangle({2, 2}, {6, 4}, {10, 6}));
+    CHECK(s.edited_scene().polygons.size() == count);
+    CHECK_FALSE(s.delete_polygon(99));
+    while (s.edited_scene().polygons.size() > 1) REQUIRE(s.delete_polygon(0));
+    CHECK_FALSE(s.delete_polygon(0));
+}

@@ -2,11 +2,13 @@
 // so panels never change state themselves.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "zbuffer/depth_format.h"
@@ -38,6 +40,15 @@ struct UiActions {
     bool undo = false, redo = false, save_scene = false;  // Ctrl+Z, Ctrl+Y, S
     std::optional<std::pair<glm::dvec3, glm::dvec3>> add_segment;  // Shift+drag in a 2D scene: a new segment
     std::optional<std::size_t> delete_input;                       // right-click on a 2D scene's segment
+    // z-buffer lessons, in the fat-pixel view: a scene vertex dragged to a pixel position, a triangle drawn, a polygon
+    // right-clicked away (positions in pixels of the grid, x right and y down)
+    struct ScreenVertexMove {
+        std::size_t polygon, vertex;
+        glm::dvec2 pixel;
+    };
+    std::optional<ScreenVertexMove> move_screen_vertex;
+    std::optional<std::array<glm::dvec2, 3>> add_triangle;
+    std::optional<std::size_t> delete_polygon;
     bool toggle_presets = false;                                   // P
     bool column_narrower = false, column_wider = false;            // [ and ]
     bool toggle_report = false;                                    // R

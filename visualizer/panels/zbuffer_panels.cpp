@@ -78,13 +78,21 @@ void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
 
 }  // namespace
 
-void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h) {
+FatGrid zbuffer_frame_grid(const ZBufferSession& s, float x, float y, float w, float h) {
     const ZView& v = s.view();
-    ImDrawList* d = begin_canvas("##zbuffer canvas", x, y, w, h);
     const float margin = 24, diagram = 70;
     const float cell = std::max(2.0f, std::min((w - 3 * margin) / (2.0f * float(v.viewport.width)),
                                                (h - 2 * margin - diagram - 24) / float(v.viewport.height)));
-    const ImVec2 frame(x + margin, y + margin + 20), depth(frame.x + cell * float(v.viewport.width) + margin, frame.y);
+    return {x + margin, y + margin + 20, cell};
+}
+
+void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h) {
+    const ZView& v = s.view();
+    ImDrawList* d = begin_canvas("##zbuffer canvas", x, y, w, h);
+    const float margin = 24;
+    const FatGrid grid = zbuffer_frame_grid(s, x, y, w, h);
+    const float cell = grid.cell;
+    const ImVec2 frame(grid.x0, grid.y0), depth(frame.x + cell * float(v.viewport.width) + margin, frame.y);
     d->AddText(ImVec2(frame.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "frame buffer");
     d->AddText(ImVec2(depth.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "depth buffer (bright = near)");
     const algo::Color background{26, 28, 33};

@@ -1,9 +1,15 @@
 #include "state/zbuffer_session.h"
 
+#include <algorithm>
 #include <array>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/overloaded.h"
 #include "raycast/ray_cast.h"
+#include "core/numeric.h"
+#include "scene/load_scene.h"
 
 namespace hsr::viz {
 namespace {
@@ -48,6 +54,89 @@ ZBufferSession::ZBufferSession(Lesson lesson, PlayerOptions options)
       format_(lesson.depth_format),
       options_(options),
       unlike_ray_cast_(unlike_ray_cast(scene_, lesson.grid, format_)) {}
+
+std::optional<glm::dvec3> ZBufferSession::on_screen(const glm::dvec4& world) const {
+    const glm::dvec4 c = view_projection(scene_.camera) * glm::dvec4(glm::dvec3(world), 1.0);
+    if (!(c.w > 0)) return std::nullopt;
+    const Viewport vp = lesson().grid;
+    return glm::dvec3((c.x / c.w + 1) / 2 * vp.width, (1 - c.y / c.w) / 2 * vp.height, (c.z / c.w + 1) / 2);
+}
+
+glm::dvec4 ZBufferSession::world_at(glm::dvec2 pixel, double depth) const {
+    const Viewport vp = lesson().grid;
+    const glm::dvec4 ndc(pixel.x / vp.width * 2 - 1, 1 - pixel.y / vp.height * 2, depth * 2 - 1, 1);
+    const glm::dvec4 w = glm::inverse(view_projection(scene_.camera)) * ndc;
+    return {glm::dvec3(w) / w.w, 1.0};
+}
+
+bool ZBufferSession::edit(Scene edited, std::optional<std::pair<std::size_t, std::size_t>> moved) {
+    try {  // the fill takes convex polygons with area: an edit that breaks that is not made
+        for (const ScenePolygon& p : edited.polygons) {
+            if (!has_area(p.vertices)) return false;
+            require_convex(p);
+        }
+    } catch (const InvalidInput&) {
+        return false;
+    }
+    if (edited.polygons.empty()) return false;
+    if (!(moved && last_moved_ == moved && !undo_.empty())) undo_.push_back(scene_);
+    last_moved_ = moved;
+    redo_.clear();
+    scene_ = std::move(edited);
+    rerun();
+    return true;
+}
+
+bool ZBufferSession::move_vertex(std::size_t polygon, std::size_t vertex, glm::dvec2 pixel) {
+    if (polygon >= scene_.polygons.size() || vertex >= scene_.polygons[polygon].vertices.size()) return false;
+    const auto at = on_screen(scene_.polygons[polygon].vertices[vertex]);
+    if (!at) return false;
+    Scene edited = scene_;
+    edited.polygons[polygon].vertices[vertex] = world_at(pixel, at->z);
+    return edit(std::move(edited), std::pair{polygon, vertex});
+}
+
+bool ZBufferSession::delete_polygon(std::size_t polygon) {
+    if (polygon >= scene_.polygons.size()) return false;
+    Scene edited = scene_;
+    edited.polygons.erase(edited.polygons.begin() + std::ptrdiff_t(polygon));
+    return edit(std::move(edited));
+}
+
+bool ZBufferSession::add_triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    // at the window depth of the middle of the scene's depths, so that it lies among the polygons there
+    double lo = 1, hi = 0;
+    for (const ScenePolygon& p : scene_.polygons)
+        for (const auto& v : p.vertices)
+            if (const auto s = on_screen(v)) lo = std::min(lo, s->z), hi = std::max(hi, s->z);
+    const double depth = lo <= hi ? (lo + hi) / 2 : 0.5;
+    static constexpr Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
+    SceneId id = 1;
+    for (const ScenePolygon& p : scene_.polygons) id = std::max(id, p.id + 1);
+    Scene edited = scene_;
+    edited.polygons.push_back({id, palette[std::size_t(id) % std::size(palette)], {world_at(a, depth), world_at(b, depth), world_at(c, depth)}});
+    return edit(std::move(edited));
+}
+
+bool ZBufferSession::undo() {
+    if (undo_.empty()) return false;
+    redo_.push_back(std::move(scene_));
+    scene_ = std::move(undo_.back());
+    undo_.pop_back();
+    last_moved_.reset();
+    rerun();
+    return true;
+}
+
+bool ZBufferSession::redo() {
+    if (redo_.empty()) return false;
+    undo_.push_back(std::move(scene_));
+    scene_ = std::move(redo_.back());
+    redo_.pop_back();
+    last_moved_.reset();
+    rerun();
+    return true;
+}
 
 void ZBufferSession::rerun() {
     replace_player(make_player(scene_, lesson().grid, format_, options_));

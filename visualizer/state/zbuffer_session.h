@@ -2,6 +2,12 @@
 // user can change (the machine reruns; the step stays).
 #pragma once
 
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
 #include "state/session.h"
 #include "state/zbuffer_view.h"
 
@@ -20,16 +26,33 @@ public:
     // mostly), for the finished fill.
     std::size_t pixels_unlike_ray_cast() const { return unlike_ray_cast_; }
 
+    // Editing the scene in the fat-pixel view, each edit rerunning the fill at the same step: a vertex moved to a
+    // point of the screen (pixels, x right and y down) at the window depth it had, a polygon deleted, a triangle
+    // added at the depth of the scene's middle; undo and redo. An edit that would leave a polygon concave, or
+    // nothing at all, is refused (false).
+    bool move_vertex(std::size_t polygon, std::size_t vertex, glm::dvec2 pixel);
+    bool delete_polygon(std::size_t polygon);
+    bool add_triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
+    bool undo();
+    bool redo();
+    const algo::Scene& edited_scene() const { return scene_; }
+    // Where a scene vertex lands: pixels (x, y) and window depth; nullopt behind the eye.
+    std::optional<glm::dvec3> on_screen(const glm::dvec4& world) const;
+
 private:
     std::string describe_event(const algo::ZBufferEvent& e) const override;
     int line_of(const algo::ZBufferEvent& e) const override;
     bool is_major(const algo::ZBufferEvent& e) const override;
     void rerun();
+    bool edit(algo::Scene edited, std::optional<std::pair<std::size_t, std::size_t>> moved = std::nullopt);
+    glm::dvec4 world_at(glm::dvec2 pixel, double depth) const;  // the inverse of on_screen
 
     algo::Scene scene_;  // the lesson's, with the near and far the user chose
     algo::DepthFormat format_;
     PlayerOptions options_;
     std::size_t unlike_ray_cast_ = 0;
+    std::vector<algo::Scene> undo_, redo_;
+    std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // a drag is one undo step
 };
 
 }  // namespace hsr::viz
