@@ -73,4 +73,19 @@ double relative_error(const Vec4& a, const ExactPoint& b, double scale) {
     return e / std::max(1.0, scale);
 }
 
+double vertex_set_error(const std::vector<Vec4>& got, const std::vector<ExactPoint>& exact, double scale) {
+    double e = 0;
+    for (const Vec4& g : got) {
+        double best = 1e300;
+        for (const ExactPoint& x : exact) best = std::min(best, relative_error(g, x, scale));
+        e = std::max(e, best);
+    }
+    for (const ExactPoint& x : exact) {
+        double best = 1e300;
+        for (const Vec4& g : got) best = std::min(best, relative_error(g, x, scale));
+        e = std::max(e, best);
+    }
+    return e;
+}
+
 }  // namespace hsr::analysis

@@ -32,5 +32,8 @@ std::vector<ExactPoint> exact_clip_polygon(const std::vector<Vec4>& polygon, Cli
 
 // |a − b|∞ / max(1, scale)
 double relative_error(const Vec4& a, const ExactPoint& b, double scale);
+// A clipped polygon's error: the largest relative_error of a vertex of either set from the nearest of the other
+// (each vertex near some exact one, and each exact one near some vertex).
+double vertex_set_error(const std::vector<Vec4>& got, const std::vector<ExactPoint>& exact, double scale);
 
 }  // namespace hsr::analysis

@@ -61,7 +61,7 @@ const char* clip_name(ClipAlgorithm a) {
 
 // The largest relative error of the machine's visible part against the exact answer for the same input.
 double exact_error(const ClipJob& job, SceneId id, const std::vector<Vec4>& got) {
-    double scale = 0, e = 0;
+    double scale = 0;
     const auto scale_of = [&](const std::vector<Vec4>& v) {
         for (const Vec4& p : v)
             for (int i = 0; i < 4; ++i) scale = std::max(scale, std::fabs(p[i]));
@@ -79,17 +79,7 @@ double exact_error(const ClipJob& job, SceneId id, const std::vector<Vec4>& got)
             scale_of(p.vertices);
             const std::vector<ExactPoint> x = exact_clip_polygon(p.vertices, job.space);
             if (x.empty() != got.empty()) return 1e300;
-            for (const Vec4& g : got) {  // each vertex near some exact one, and each exact one near some vertex
-                double best = 1e300;
-                for (const ExactPoint& q : x) best = std::min(best, relative_error(g, q, scale));
-                e = std::max(e, best);
-            }
-            for (const ExactPoint& q : x) {
-                double best = 1e300;
-                for (const Vec4& g : got) best = std::min(best, relative_error(g, q, scale));
-                e = std::max(e, best);
-            }
-            return e;
+            return vertex_set_error(got, x, scale);
         }
     return 0;  // a point: no intersection, nothing to round
 }

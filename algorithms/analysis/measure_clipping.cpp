@@ -69,22 +69,6 @@ ErrorTally segment_errors(const std::vector<std::pair<Vec4, Vec4>>& in, const st
     return t;
 }
 
-// The distance between two vertex sets, both ways (a vertex of either far from every vertex of the other).
-double vertex_set_error(const std::vector<Vec4>& got, const std::vector<ExactPoint>& exact, double scale) {
-    double e = 0;
-    for (const Vec4& g : got) {
-        double best = 1e300;
-        for (const ExactPoint& x : exact) best = std::min(best, relative_error(g, x, scale));
-        e = std::max(e, best);
-    }
-    for (const ExactPoint& x : exact) {
-        double best = 1e300;
-        for (const Vec4& g : got) best = std::min(best, relative_error(g, x, scale));
-        e = std::max(e, best);
-    }
-    return e;
-}
-
 std::string mean_text(double mean) {
     char b[48];
     std::snprintf(b, sizeof b, "mean error %.3e", mean);

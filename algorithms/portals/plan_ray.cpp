@@ -7,19 +7,24 @@ namespace {
 
 double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
+// Where the line p + t·d leaves a convex outline (counter-clockwise: it leaves where it crosses an edge rightwards);
+// 1e300 when it crosses none.
+double exit_parameter(const std::vector<Vec2>& o, Vec2 p, Vec2 d) {
+    double t_exit = 1e300;
+    for (std::size_t i = 0; i < o.size(); ++i) {
+        const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
+        const double denom = cross(d, e);
+        if (denom > 0) t_exit = std::min(t_exit, cross(a - p, e) / denom);
+    }
+    return t_exit;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cell, Vec2 p, Vec2 d) {
     std::vector<std::uint32_t> seen{cell};
     for (std::size_t guard = 0; guard < m.cells.size(); ++guard) {  // a straight ray enters each convex cell once
-        // where the ray leaves the cell (the outline is counter-clockwise: it leaves where it crosses an edge rightwards)
-        const auto& o = m.cells[cell].outline;
-        double t_exit = 1e300;
-        for (std::size_t i = 0; i < o.size(); ++i) {
-            const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
-            const double denom = cross(d, e);
-            if (denom > 0) t_exit = std::min(t_exit, cross(a - p, e) / denom);
-        }
+        const double t_exit = exit_parameter(m.cells[cell].outline, p, d);
         if (t_exit >= 1e300) break;
         const Vec2 q = p + t_exit * d;
         // through an opening (strictly inside it), or into a wall
@@ -43,13 +48,7 @@ std::vector<std::uint32_t> cells_along_ray(const CellModel& m, std::uint32_t cel
     std::vector<std::uint32_t> seen{cell};
     double t = 0;  // along the ray, as far as the cell entered last
     for (std::size_t guard = 0; guard < m.cells.size(); ++guard) {
-        const auto& o = m.cells[cell].outline;
-        double t_exit = 1e300;
-        for (std::size_t i = 0; i < o.size(); ++i) {
-            const Vec2 a = o[i], e = o[(i + 1) % o.size()] - a;
-            const double denom = cross(d2, e);
-            if (denom > 0) t_exit = std::min(t_exit, cross(a - p2, e) / denom);
-        }
+        const double t_exit = exit_parameter(m.cells[cell].outline, p2, d2);
         if (t_exit >= 1e300 || t_exit < t) break;
         const double y = p.y + d.y * t_exit;  // the height where it meets the cell's outline
         if (y <= 0 || y >= m.height) break;   // the floor or the ceiling came first

@@ -14,6 +14,8 @@
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
+#include "analysis/measurement.h"
+#include "bench_points.h"
 #include "state/clip_session.h"
 
 using namespace hsr::algo;
@@ -21,21 +23,9 @@ using namespace hsr::viz;
 
 namespace {
 
-Vec4 random_point(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> xyz(-4, 4), w(-1, 3);
-    return {xyz(rng), xyz(rng), xyz(rng), w(rng)};
-}
+using hsr::bench::random_clip_point;
 
-double median_ms(const std::function<void()>& f) {
-    std::vector<double> ms;
-    for (int k = 0; k < 5; ++k) {
-        const auto t = std::chrono::steady_clock::now();
-        f();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count());
-    }
-    std::sort(ms.begin(), ms.end());
-    return ms[2];
-}
+double median_ms(const std::function<void()>& f) { return hsr::analysis::median_ms(5, f); }
 
 void BM_ClipCost(benchmark::State& state) {
     const auto algorithm = ClipAlgorithm(state.range(0));
@@ -44,8 +34,8 @@ void BM_ClipCost(benchmark::State& state) {
     std::mt19937_64 rng(5);
     ClipJob job{.space = ClipSpace::homogeneous};
     for (int i = 0; i < n; ++i) {
-        if (polygons) job.polygons.push_back({i + 1, {random_point(rng), random_point(rng), random_point(rng), random_point(rng)}});
-        else job.segments.push_back({i + 1, random_point(rng), random_point(rng)});
+        if (polygons) job.polygons.push_back({i + 1, {random_clip_point(rng), random_clip_point(rng), random_clip_point(rng), random_clip_point(rng)}});
+        else job.segments.push_back({i + 1, random_clip_point(rng), random_clip_point(rng)});
     }
     for (auto _ : state) {
         std::size_t kept = 0, events = 0;

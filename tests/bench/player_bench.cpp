@@ -12,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include "clipping/cohen_sutherland.h"
+#include "bench_points.h"
 #include "state/clip_session.h"
 
 using namespace hsr::algo;
@@ -19,16 +20,13 @@ using namespace hsr::viz;
 
 namespace {
 
-Vec4 random_point(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> xyz(-4, 4), w(-1, 3);
-    return {xyz(rng), xyz(rng), xyz(rng), w(rng)};
-}
+using hsr::bench::random_clip_point;
 
 // Many segments, clipped one after another by Cohen–Sutherland: a large view (every primitive) and small events.
 ClipJob many_segments(int n) {
     std::mt19937_64 rng(1);
     ClipJob job{.space = ClipSpace::homogeneous};
-    for (int i = 0; i < n; ++i) job.segments.push_back({i + 1, random_point(rng), random_point(rng)});
+    for (int i = 0; i < n; ++i) job.segments.push_back({i + 1, random_clip_point(rng), random_clip_point(rng)});
     return job;
 }
 
@@ -104,7 +102,7 @@ void BM_SeekOneBigPolygon(benchmark::State& state) {
 void BM_DrainCohenSutherland(benchmark::State& state) {
     std::mt19937_64 rng(3);
     std::vector<ClipSegment> segments;
-    for (int i = 0; i < 1024; ++i) segments.push_back({i, random_point(rng), random_point(rng)});
+    for (int i = 0; i < 1024; ++i) segments.push_back({i, random_clip_point(rng), random_clip_point(rng)});
     std::size_t i = 0;
     for (auto _ : state) {
         auto m = cohen_sutherland(segments[i++ % segments.size()]);

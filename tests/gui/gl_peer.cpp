@@ -7,6 +7,7 @@
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
 
+#include "analysis/measurement.h"
 #include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::test {
@@ -15,16 +16,7 @@ using namespace hsr::algo;
 
 namespace {
 
-double median_ms(int repeats, const std::function<void()>& f) {
-    std::vector<double> ms;
-    for (int k = 0; k < std::max(1, repeats); ++k) {
-        const auto t = std::chrono::steady_clock::now();
-        f();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count());
-    }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
-}
+using analysis::median_ms;
 
 GLuint shader(GLenum type, const char* source) {
     const GLuint s = glCreateShader(type);

@@ -98,17 +98,14 @@ void BspSession::move_vertex(std::size_t input, std::size_t vertex, Vec3 to) {
     edited.polygons[input].vertices[vertex] = to;
     if (algo::measure(edited.polygons[input].vertices) <= 1e-9) return;  // a segment of no length is not an edit
     // a drag is many small moves: one undo step for consecutive moves of the same vertex
-    const bool same_drag = !undo_.empty() && last_moved_ == std::pair{input, vertex};
-    if (!same_drag) undo_.push_back(job_);
+    history_.record(job_, last_moved_ == std::pair{input, vertex});
     last_moved_ = {input, vertex};
-    redo_.clear();
     job_ = std::move(edited);
     rerun();
 }
 
 void BspSession::edit(algo::BspJob edited) {
-    undo_.push_back(std::move(job_));
-    redo_.clear();
+    history_.record(job_);
     last_moved_.reset();
     job_ = std::move(edited);
     rerun();
@@ -135,20 +132,14 @@ bool BspSession::delete_input(std::size_t input) {
 }
 
 bool BspSession::undo() {
-    if (undo_.empty()) return false;
-    redo_.push_back(std::move(job_));
-    job_ = std::move(undo_.back());
-    undo_.pop_back();
+    if (!history_.undo(job_)) return false;
     last_moved_.reset();
     rerun();
     return true;
 }
 
 bool BspSession::redo() {
-    if (redo_.empty()) return false;
-    undo_.push_back(std::move(job_));
-    job_ = std::move(redo_.back());
-    redo_.pop_back();
+    if (!history_.redo(job_)) return false;
     last_moved_.reset();
     rerun();
     return true;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "state/bsp_view.h"
+#include "state/edit_history.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -50,7 +51,7 @@ private:
     Stats stats_;
     algo::BspJob job_;
     PlayerOptions options_;
-    std::vector<algo::BspJob> undo_, redo_;  // earlier and undone inputs
+    EditHistory<algo::BspJob> history_;  // earlier and undone inputs
     std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // the vertex the last edit moved
     void rerun();
     void measure();                  // stats_ of the tree of job_, and edited_

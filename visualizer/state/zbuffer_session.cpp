@@ -79,9 +79,8 @@ bool ZBufferSession::edit(Scene edited, std::optional<std::pair<std::size_t, std
         return false;
     }
     if (edited.polygons.empty()) return false;
-    if (!(moved && last_moved_ == moved && !undo_.empty())) undo_.push_back(scene_);
+    history_.record(scene_, moved && last_moved_ == moved);
     last_moved_ = moved;
-    redo_.clear();
     scene_ = std::move(edited);
     rerun();
     return true;
@@ -119,20 +118,14 @@ bool ZBufferSession::add_triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 }
 
 bool ZBufferSession::undo() {
-    if (undo_.empty()) return false;
-    redo_.push_back(std::move(scene_));
-    scene_ = std::move(undo_.back());
-    undo_.pop_back();
+    if (!history_.undo(scene_)) return false;
     last_moved_.reset();
     rerun();
     return true;
 }
 
 bool ZBufferSession::redo() {
-    if (redo_.empty()) return false;
-    undo_.push_back(std::move(scene_));
-    scene_ = std::move(redo_.back());
-    redo_.pop_back();
+    if (!history_.redo(scene_)) return false;
     last_moved_.reset();
     rerun();
     return true;

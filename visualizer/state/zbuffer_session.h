@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "state/edit_history.h"
 #include "state/session.h"
 #include "state/zbuffer_view.h"
 
@@ -51,7 +52,7 @@ private:
     algo::DepthFormat format_;
     PlayerOptions options_;
     std::size_t unlike_ray_cast_ = 0;
-    std::vector<algo::Scene> undo_, redo_;
+    EditHistory<algo::Scene> history_;
     std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // a drag is one undo step
 };
 
