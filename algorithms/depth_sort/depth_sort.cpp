@@ -107,7 +107,9 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
         bool draw_r = true;
         for (std::size_t k = 1; k < list.size() && draw_r; ++k) {
             const std::uint32_t q = list[k];
-            if (ext[q].max_z <= ext[r].min_z || ext[r].max_z <= ext[q].min_z) continue;  // z extents apart
+            // Q wholly nearer than R: R may go first. (Not so when Q is wholly farther: once polygons have been moved
+            // to the head, R need not be the farthest, and a Q behind it must be tested like any other.)
+            if (ext[q].max_z <= ext[r].min_z) continue;
             if (++out.pairs > o.max_pairs) {
                 out.bounded = true;
                 co_yield SortBoundReached{SortBound::pairs, o.max_pairs};
@@ -145,18 +147,26 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
                 co_yield PolygonMoved{q, r};
                 break;
             }
+            // Q was moved before: a cycle, or no order could be shown. Split Q by R's plane if that cuts it, else R by
+            // Q's plane.
+            std::uint32_t cut = q, by = r;
+            if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
+            if (!ext[by].has_plane || classify(ext[by].plane, out.polygons[cut].vertices, tol) != PolygonSide::spanning) {
+                if (q_first) {  // neither cuts the other, and Q must go first: that is an order, not a cycle of these
+                    ++out.moves;  // two (Q's mark is from another R); move it again (max_pairs bounds the moves)
+                    list.erase(list.begin() + std::ptrdiff_t(k));
+                    list.insert(list.begin(), q);
+                    co_yield PolygonMoved{q, r};
+                    break;
+                }
+                draw_r = true;  // neither cuts the other and no order shows: nothing orders them better than the list
+                continue;
+            }
             if (q_first) co_yield CycleDetected{q};
-            // Split: Q by R's plane if that cuts it, else R by Q's plane
             if (out.splits == o.max_splits) {
                 out.bounded = true;
                 co_yield SortBoundReached{SortBound::splits, o.max_splits};
                 co_return out;
-            }
-            std::uint32_t cut = q, by = r;
-            if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
-            if (!ext[by].has_plane || classify(ext[by].plane, out.polygons[cut].vertices, tol) != PolygonSide::spanning) {
-                draw_r = true;  // neither cuts the other: nothing can order them better than the list does
-                continue;
             }
             const SplitParts parts = split(ext[by].plane, out.polygons[cut].vertices, tol);
             const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
