@@ -65,7 +65,7 @@ std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
 std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
     std::vector<Measurement> rows;
-    const algo::Scene s = algo::random_triangles({.count = o.quick ? 40u : 120u, .seed = 5, .size = 2.5});
+    const algo::Scene s = algo::random_triangles({.count = o.quick ? 60u : 120u, .seed = 5, .size = 2.5});
     const algo::Image ref = reference(s, vp);
     const std::string setting = std::to_string(s.polygons.size()) + " random triangles, some piercing";
     using R = algo::SplitterRule;

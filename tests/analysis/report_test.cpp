@@ -81,11 +81,11 @@ TEST_CASE("z-buffer: precision falls with the far/near ratio in the fixed-point 
     CHECK(row(rows, "int32", "2e+01").error < 0.01);  // at a modest ratio only pixels on edges differ
 }
 
-TEST_CASE("BSP and depth sort agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
+TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
     const auto rows = analysis::measure_hidden_surfaces(quick);
     for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort"}) {
         INFO(method);
-        CHECK(row(rows, method).error < 0.01);
+        CHECK(row(rows, method).error < 0.002);  // edge pixels only (the depth-sort bug this report found gave 2%)
     }
     CHECK(row(rows, "bsp fewest-splits").extra != row(rows, "bsp first").extra);  // the rules build different trees
 }
