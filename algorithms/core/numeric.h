@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -35,9 +36,11 @@ void require_finite(const glm::dvec4& p, Where&& where) {
 }
 
 // std::llround's answer (halves away from zero) without its call: x − trunc(x) is exact, so the test is too.
+// Out of range (or NaN) it gives what llround gives there on x86, the least long long, without an undefined cast.
 inline long long round_half_away(double x) {
     double r = std::trunc(x);
     if (std::fabs(x - r) >= 0.5) r += std::copysign(1.0, x);
+    if (!(r >= -9223372036854775808.0 && r < 9223372036854775808.0)) return std::numeric_limits<long long>::min();
     return static_cast<long long>(r);
 }
 

@@ -87,7 +87,13 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> c
     // Divide by w, map to the viewport, snap to sub-pixels
     std::vector<glm::dvec3> exact;
     for (const glm::dvec4& c : visible) {
-        const glm::dvec3 ndc = glm::dvec3(c) / c.w;
+        glm::dvec3 ndc = glm::dvec3(c) / c.w;
+        // Clipped, the polygon lies in the view volume but for rounding; with coordinates near the double limits the
+        // rounding is all there is, and the sub-pixel integers below would overflow. Keep x and y in [−1, 1], and
+        // refuse what overflowed outright.
+        if (!std::isfinite(ndc.x) || !std::isfinite(ndc.y) || !std::isfinite(ndc.z))
+            throw InvalidInput("polygon " + std::to_string(id) + " is too large to project: its clip-space coordinates overflow");
+        ndc.x = std::clamp(ndc.x, -1.0, 1.0), ndc.y = std::clamp(ndc.y, -1.0, 1.0);
         const glm::dvec3 s((ndc.x + 1) * 0.5 * viewport.width, (1 - ndc.y) * 0.5 * viewport.height, (ndc.z + 1) * 0.5);
         const ScreenVertex v{round_half_away(s.x * subpixels), round_half_away(s.y * subpixels), std::clamp(s.z, 0.0, 1.0)};
         if (out.vertices.empty() || v.x != out.vertices.back().x || v.y != out.vertices.back().y) {

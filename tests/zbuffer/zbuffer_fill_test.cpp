@@ -1,7 +1,13 @@
 // The z-buffer fill: the top-left rule on shared edges, clipping before the divide, extremes, and the events.
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <random>
 
 #include "catch.h"
+#include "core/numeric.h"
 #include "zbuffer/zbuffer_fill.h"
 
 using namespace hsr::algo;
@@ -227,4 +233,54 @@ TEST_CASE("z-merge of two halves of a scene equals the z-buffer of the whole", "
     std::size_t differ = 0;  // equal depths: the whole scene keeps the first drawn, the merge takes b
     for (std::size_t k = 0; k < merged.depth.size(); ++k) differ += merged.image.ids[k] != whole.image.ids[k];
     CHECK(differ <= 2);
+}
+
+TEST_CASE("coordinates near the double limits project to a well-defined result or a clear refusal", "[zbuffer][extreme]") {
+    // Found by fuzz_geometry (its input is kept as a seed): clipped at w = ε, vertices 1e306 across came out of the
+    // divide far beyond [-1, 1] (rounding was all that was left), and their sub-pixel integers overflowed. The input
+    // is read here as the fuzz target reads it: doubles, up to 8 polygons, before the target's camera.
+    std::ifstream f(HSR_SOURCE_DIR "/tests/fuzz/corpus/geometry/regression-round-half-away-overflow", std::ios::binary);
+    const std::vector<unsigned char> d((std::istreambuf_iterator<char>(f)), {});
+    REQUIRE(d.size() > 100);
+    std::size_t at = 0;
+    const auto next = [&] {
+        double v = 0;
+        if (at + 8 <= d.size()) std::memcpy(&v, d.data() + at, 8), at += 8;
+        return v;
+    };
+    Scene s;
+    s.camera = {.eye = {0, 0, 6}, .target = {0, 0, 0}, .fov_y = 50, .near = 0.5, .far = 30};
+    const int polygons = d[at++] % 9;
+    for (int p = 0; p < polygons && at < d.size(); ++p) {
+        ScenePolygon poly{SceneId(p + 1), {200, 100, 50}, {}};
+        const int n = 3 + d[at++] % 4;
+        for (int k = 0; k < n; ++k) {
+            const double x = next(), y = next(), z = next();
+            poly.vertices.emplace_back(x, y, z, 1.0);
+        }
+        s.polygons.push_back(std::move(poly));
+    }
+    const Viewport vp{64, 48};
+    int projected = 0;
+    for (const ScenePolygon& p : s.polygons) {
+        std::vector<glm::dvec4> clip;
+        for (const auto& v : p.vertices) clip.push_back(to_clip(s, v));
+        try {
+            for (const ScreenVertex& v : project_polygon(p.id, {}, clip, vp).vertices) {
+                CHECK(v.x >= 0);
+                CHECK(v.x <= 64 * subpixels);
+                CHECK(v.y >= 0);
+                CHECK(v.y <= 48 * subpixels);
+            }
+            ++projected;
+        } catch (const InvalidInput& e) {
+            CHECK(std::string(e.what()).find("polygon " + std::to_string(p.id)) != std::string::npos);
+        }
+    }
+    CHECK(projected > 0);
+    CHECK(round_half_away(1e300) == std::numeric_limits<long long>::min());
+    CHECK(round_half_away(std::nan("")) == std::numeric_limits<long long>::min());
+    CHECK(round_half_away(-2.5) == -3);
+    CHECK(round_half_away(2.5) == 3);
+    CHECK(round_half_away(0.49999999999999994) == 0);
 }
