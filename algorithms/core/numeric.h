@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,11 @@ void require_finite(const glm::dvec4& p, Where&& where) {
 }
 
 // std::llround's answer (halves away from zero) without its call: x − trunc(x) is exact, so the test is too.
+// The same for 0 ≤ x < 2^63, as the depth codes need it pixel by pixel: x + 0.5 is exact for x ≥ 0.5 (x and the
+// sum share a binade or the sum stays below the next integer), so truncating it rounds halves up; below 0.5 the
+// answer is 0 (x + 0.5 itself would round 0.49999999999999994 up to 1).
+inline std::uint64_t round_nonnegative(double x) { return x < 0.5 ? 0 : static_cast<std::uint64_t>(x + 0.5); }
+
 // Out of range (or NaN) it gives what llround gives there on x86, the least long long, without an undefined cast.
 inline long long round_half_away(double x) {
     double r = std::trunc(x);

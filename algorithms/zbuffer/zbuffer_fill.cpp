@@ -1,6 +1,7 @@
 #include "zbuffer/zbuffer_fill.h"
 
 #include "zbuffer/z_merge.h"
+#include "zbuffer/binned_fill.h"
 
 #include <algorithm>
 
@@ -22,7 +23,7 @@ bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int 
     const double per_x = p.plane.per_x;
     std::uint64_t wrote = 0;
     for (int x = span.begin; x < end; ++x, z += per_x) {
-        const std::uint64_t incoming = levels > 0 ? std::uint64_t(round_half_away(levels * std::clamp(z, 0.0, 1.0)))
+        const std::uint64_t incoming = levels > 0 ? round_nonnegative(levels * std::clamp(z, 0.0, 1.0))
                                                   : code_of_window_depth(o.format, z, o.range, o.perspective);
         if (incoming >= depth[x]) continue;
         depth[x] = std::uint32_t(incoming);
@@ -52,12 +53,29 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
     // The integer formats' code, inline (code_of_window_depth's formula: this loop runs for every pixel tested)
     const double levels = window_depth_levels(o.format);
     const auto code_at = [&](double z) -> std::uint64_t {
-        if (levels > 0) return std::uint64_t(round_half_away(levels * std::clamp(z, 0.0, 1.0)));
+        if (levels > 0) return round_nonnegative(levels * std::clamp(z, 0.0, 1.0));
         return code_of_window_depth(o.format, z, o.range, o.perspective);
     };
     // Initialise: every depth at the far plane, every colour the background
     FrameDepth out = cleared_buffers(o);
     co_yield BufferCleared{w, h, far_code(o.format, o.range)};
+
+    // Drained with polygon-level events: the same fill tile by tile on every core (binned_fill.h), then its events
+    PolygonCounts counts;
+    if (o.detail == EventDetail::polygon && binned_fill(out, polygons, o, counts)) {
+        for (std::uint32_t index = 0; index < polygons.size(); ++index) {
+            const ScreenPolygon& p = polygons[index];
+            if (p.status != ScreenStatus::drawn) {
+                co_yield PolygonSkipped{index, p.id, p.status};
+                continue;
+            }
+            co_yield PolygonFillStarted{index, p.id, p.plane.per_x};
+            co_yield PolygonFillFinished{index, counts.tested[index], counts.written[index]};
+        }
+        co_yield FillFinished{polygons.size(), out.tested, out.written};
+        resolve_image(out, polygons);
+        co_return out;
+    }
 
     for (std::uint32_t index = 0; index < polygons.size(); ++index) {
         const ScreenPolygon& p = polygons[index];

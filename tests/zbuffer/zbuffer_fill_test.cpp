@@ -284,3 +284,53 @@ TEST_CASE("coordinates near the double limits project to a well-defined result o
     CHECK(round_half_away(2.5) == 3);
     CHECK(round_half_away(0.49999999999999994) == 0);
 }
+
+TEST_CASE("the fill's rounding of depth codes is round_half_away's, for every value a code can take", "[zbuffer][numeric]") {
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<double> xs = {0, 0.49999999999999994, 0.5, 0.5000000000000001, 1.4999999999999998, 1.5, 2.5, 4294967294.5,
+                              4294967295.0, 16777214.5, 65534.5, 65535};
+    for (int k = 0; k < 200000; ++k) xs.push_back(unit(rng) * (k % 3 == 0 ? 65535.0 : k % 3 == 1 ? 16777215.0 : 4294967295.0));
+    for (int k = 0; k < 2000; ++k) xs.push_back(std::nextafter(double(k / 2) + 0.5, k % 2 ? 0.0 : 1e9));  // halves, one ulp off
+    for (const double x : xs) {
+        INFO(x);
+        CHECK(round_nonnegative(x) == std::uint64_t(round_half_away(x)));
+    }
+}
+
+TEST_CASE("the tiled fill of a polygon-level drain gives the machine's buffers and counts, bit for bit", "[zbuffer][binned]") {
+    // detail = polygon takes binned_fill (bands of 64 rows on every core); detail = span runs the machine's own loop
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> xy(-1.2, 1.2), z(-0.9, 0.9), w(0.6, 2.5);
+    for (const Viewport vp : {Viewport{200, 150}, Viewport{1100, 70}, Viewport{7, 300}}) {
+        INFO(vp.width << "×" << vp.height);
+        std::vector<ScreenPolygon> polys;
+        for (int k = 0; k < 400; ++k) {
+            std::vector<glm::dvec4> v;
+            for (int i = 0; i < 3; ++i) {
+                const double ww = w(rng);
+                v.emplace_back(xy(rng) * ww, xy(rng) * ww, z(rng) * ww, ww);
+            }
+            polys.push_back(project_polygon(SceneId(k + 1), {std::uint8_t(k), 0, 0}, v, vp));
+        }
+        for (const DepthFormat format : {DepthFormat::int16, DepthFormat::int24, DepthFormat::float32_reversed}) {
+            INFO("format " << int(format));
+            const auto run = [&](EventDetail detail, std::vector<PolygonFillFinished>& finished) {
+                auto m = zbuffer_fill(polys, {.viewport = vp, .format = format, .detail = detail});
+                for (const auto& e : m)
+                    if (const auto* f = std::get_if<PolygonFillFinished>(&e)) finished.push_back(*f);
+                return std::move(m).result();
+            };
+            std::vector<PolygonFillFinished> a_counts, b_counts;
+            const FrameDepth a = run(EventDetail::span, a_counts), b = run(EventDetail::polygon, b_counts);
+            CHECK(a.depth == b.depth);
+            CHECK(a.polygon == b.polygon);
+            CHECK(a.image.ids == b.image.ids);
+            CHECK(a.image.rgb == b.image.rgb);
+            CHECK(a.tested == b.tested);
+            CHECK(a.written == b.written);
+            CHECK(a_counts == b_counts);
+            CHECK(a.written > 1000);
+        }
+    }
+}
