@@ -4,7 +4,7 @@
 #include <atomic>
 #include <thread>
 
-#include "core/numeric.h"
+#include "zbuffer/depth_test_row.h"
 
 namespace hsr::algo {
 namespace {
@@ -40,17 +40,9 @@ void fill_tile(FrameDepth& out, const std::vector<ScreenPolygon>& polygons, cons
             if (end <= begin) continue;
             double z = row_depth + p.plane.per_x * pixel_centre(span.begin);
             for (int x = span.begin; x < begin; ++x) z += p.plane.per_x;  // the span's own steps up to the tile
-            std::uint32_t* depth = out.depth.data() + std::size_t(y) * std::size_t(o.viewport.width);
-            std::int32_t* owner = out.polygon.data() + std::size_t(y) * std::size_t(o.viewport.width);
-            std::uint64_t wrote = 0;
-            for (int x = begin; x < end; ++x, z += p.plane.per_x) {
-                const std::uint64_t incoming = levels > 0 ? round_nonnegative(levels * std::clamp(z, 0.0, 1.0))
-                                                          : code_of_window_depth(o.format, z, o.range, o.perspective);
-                if (incoming >= depth[x]) continue;
-                depth[x] = std::uint32_t(incoming);
-                owner[x] = std::int32_t(index);
-                ++wrote;
-            }
+            const std::size_t row = std::size_t(y) * std::size_t(o.viewport.width);
+            const std::uint64_t wrote = depth_test_row(out.depth.data() + row, out.polygon.data() + row, begin, end, z, p.plane.per_x,
+                                                       std::int32_t(index), o, levels);
             tested[index] += std::uint64_t(end - begin), written[index] += wrote;
         }
     }

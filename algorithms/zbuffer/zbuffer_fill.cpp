@@ -2,6 +2,7 @@
 
 #include "zbuffer/z_merge.h"
 #include "zbuffer/binned_fill.h"
+#include "zbuffer/depth_test_row.h"
 
 #include <algorithm>
 
@@ -18,18 +19,8 @@ bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int 
     // the pixels the step bound still allows: the loop then needs no test of its own
     const std::uint64_t left = o.max_pixel_tests - out.tested;
     const int end = std::uint64_t(span.end - span.begin) > left ? span.begin + int(left) : span.end;
-    std::uint32_t* depth = out.depth.data() + std::size_t(y) * std::size_t(o.viewport.width);
-    std::int32_t* polygon = out.polygon.data() + std::size_t(y) * std::size_t(o.viewport.width);
-    const double per_x = p.plane.per_x;
-    std::uint64_t wrote = 0;
-    for (int x = span.begin; x < end; ++x, z += per_x) {
-        const std::uint64_t incoming = levels > 0 ? round_nonnegative(levels * std::clamp(z, 0.0, 1.0))
-                                                  : code_of_window_depth(o.format, z, o.range, o.perspective);
-        if (incoming >= depth[x]) continue;
-        depth[x] = std::uint32_t(incoming);
-        polygon[x] = index;  // the colour and id follow at the end (resolve_image): less to write per pixel
-        ++wrote;
-    }
+    const std::size_t row = std::size_t(y) * std::size_t(o.viewport.width);
+    const std::uint64_t wrote = depth_test_row(out.depth.data() + row, out.polygon.data() + row, span.begin, end, z, p.plane.per_x, index, o, levels);
     const auto n = std::uint64_t(end - span.begin);
     tested += n, out.tested += n, written += wrote, out.written += wrote;
     return end == span.end;
@@ -50,32 +41,15 @@ void resolve_image(FrameDepth& out, const std::vector<ScreenPolygon>& polygons) 
 Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons, ZBufferOptions o) {
     const bool per_pixel = o.detail == EventDetail::pixel;
     const int w = o.viewport.width, h = o.viewport.height;
-    // The integer formats' code, inline (code_of_window_depth's formula: this loop runs for every pixel tested)
     const double levels = window_depth_levels(o.format);
-    const auto code_at = [&](double z) -> std::uint64_t {
-        if (levels > 0) return round_nonnegative(levels * std::clamp(z, 0.0, 1.0));
-        return code_of_window_depth(o.format, z, o.range, o.perspective);
-    };
     // Initialise: every depth at the far plane, every colour the background
     FrameDepth out = cleared_buffers(o);
     co_yield BufferCleared{w, h, far_code(o.format, o.range)};
 
-    // Drained with polygon-level events: the same fill tile by tile on every core (binned_fill.h), then its events
+    // Drained with polygon-level events: the same fill tile by tile on every core (binned_fill.h); the loop below
+    // then only tells each polygon's counts
     PolygonCounts counts;
-    if (o.detail == EventDetail::polygon && binned_fill(out, polygons, o, counts)) {
-        for (std::uint32_t index = 0; index < polygons.size(); ++index) {
-            const ScreenPolygon& p = polygons[index];
-            if (p.status != ScreenStatus::drawn) {
-                co_yield PolygonSkipped{index, p.id, p.status};
-                continue;
-            }
-            co_yield PolygonFillStarted{index, p.id, p.plane.per_x};
-            co_yield PolygonFillFinished{index, counts.tested[index], counts.written[index]};
-        }
-        co_yield FillFinished{polygons.size(), out.tested, out.written};
-        resolve_image(out, polygons);
-        co_return out;
-    }
+    const bool filled = o.detail == EventDetail::polygon && binned_fill(out, polygons, o, counts);
 
     for (std::uint32_t index = 0; index < polygons.size(); ++index) {
         const ScreenPolygon& p = polygons[index];
@@ -84,6 +58,10 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
             continue;
         }
         co_yield PolygonFillStarted{index, p.id, p.plane.per_x};
+        if (filled) {
+            co_yield PolygonFillFinished{index, counts.tested[index], counts.written[index]};
+            continue;
+        }
         std::uint64_t tested = 0, written = 0;
         // For each scan line the polygon covers: its span, and the depth at the span's first pixel
         double row_depth = p.plane.at(0, pixel_centre(p.row_begin));  // d at x = 0, stepped by −b/c per row
@@ -109,7 +87,7 @@ Steps<ZBufferEvent, FrameDepth> zbuffer_fill(std::vector<ScreenPolygon> polygons
                     co_return out;
                 }
                 const std::size_t k = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                const std::uint64_t incoming = code_at(z);
+                const std::uint64_t incoming = depth_code(z, o, levels);
                 const std::uint64_t stored = out.depth[k];
                 ++tested, ++out.tested;
                 if (per_pixel) co_yield PixelTested{x, y, z, incoming, stored, incoming < stored};
