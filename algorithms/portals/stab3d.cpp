@@ -41,7 +41,9 @@ void add_candidates(const std::vector<Vec3>& edges_of, const std::vector<Vec3>& 
     }
 }
 
-// Sutherland–Hodgman against one plane, keeping what is on its positive side or within tol of it.
+// Sutherland–Hodgman against one plane, keeping what is on its positive side or within tol of it. (Not
+// portal_render's clip_poly: that drops slivers with no area to speak of, and here a sliver may be a real band of
+// sightlines 1e-9 wide; the test must keep it to stay conservative.)
 std::vector<Vec3> clip(const std::vector<Vec3>& poly, const Plane& pl, double tol) {
     std::vector<Vec3> out;
     for (std::size_t i = 0; i < poly.size(); ++i) {
