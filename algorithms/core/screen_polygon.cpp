@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include "clipping/straight_clip.h"
 #include "core/numeric.h"
+#include "core/parallel.h"
 #include "core/plane.h"
 
 namespace hsr::algo {
@@ -64,7 +66,7 @@ void require_convex(const ScenePolygon& p) {
 }
 
 
-ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport) {
+ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec4> clip_vertices, Viewport viewport) {
     ScreenPolygon out{.id = id, .color = color};
     // Clip in homogeneous clip space before the divide (near plane included)
     // (the straight-line form of Sutherland–Hodgman: the machine's answer bit for bit, without its events, which
@@ -73,20 +75,26 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> c
     // Wholly inside every plane (most polygons of a scene): each of the 7 stages would only pass the list on, one
     // place turned (it emits the end of each edge), so the answer is the list turned by 7, with no clipping work.
     const bool inside = std::all_of(clip_vertices.begin(), clip_vertices.end(), [](const glm::dvec4& v) { return plain_outcode(v) == 0; });
-    std::vector<glm::dvec4> visible;
+    std::vector<glm::dvec4> clipped;
+    std::size_t first = 0;  // where the visible list starts in `visible`
     if (inside && !clip_vertices.empty()) {
-        visible = std::move(clip_vertices);
-        std::rotate(visible.begin(), visible.begin() + std::ptrdiff_t(7 % visible.size()), visible.end());
+        first = 7 % clip_vertices.size();
     } else {
-        visible = plain_sutherland_hodgman(std::move(clip_vertices));
+        clipped = plain_sutherland_hodgman(std::vector<glm::dvec4>(clip_vertices.begin(), clip_vertices.end()));
+        clip_vertices = clipped;
     }
+    const std::span<const glm::dvec4> visible = clip_vertices;
     if (visible.size() < 3) {
         out.status = ScreenStatus::outside_view;
         return out;
     }
-    // Divide by w, map to the viewport, snap to sub-pixels
-    std::vector<glm::dvec3> exact;
-    for (const glm::dvec4& c : visible) {
+    // Divide by w, map to the viewport, snap to sub-pixels (the unsnapped positions kept for the depth plane, in a
+    // buffer each thread reuses: a scene has many polygons and few vertices each)
+    thread_local std::vector<glm::dvec3> exact;
+    exact.clear();
+    out.vertices.reserve(visible.size());
+    for (std::size_t k = 0; k < visible.size(); ++k) {
+        const glm::dvec4& c = visible[(first + k) % visible.size()];
         glm::dvec3 ndc = glm::dvec3(c) / c.w;
         // Clipped, the polygon lies in the view volume but for rounding; with coordinates near the double limits the
         // rounding is all there is, and the sub-pixel integers below would overflow. Keep x and y in [−1, 1], and
@@ -123,17 +131,36 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> c
     return out;
 }
 
+ScreenPolygon project_polygon(SceneId id, Color color, const std::vector<glm::dvec4>& clip_vertices, Viewport viewport) {
+    return project_polygon(id, color, std::span<const glm::dvec4>(clip_vertices), viewport);
+}
+
+std::vector<ScreenPolygon> project_polygons(std::span<const ClipSpacePolygon> polygons, Viewport viewport) {
+    std::vector<ScreenPolygon> out(polygons.size());
+    for_each_chunk(polygons.size(), 2000, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) out[k] = project_polygon(polygons[k].id, polygons[k].color, polygons[k].vertices, viewport);
+    });
+    return out;
+}
+
 std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewport) {
-    std::vector<ScreenPolygon> out;
-    for (const ScenePolygon& p : scene.polygons) {
-        for (std::size_t k = 0; k < p.vertices.size(); ++k)
-            require_finite(p.vertices[k], [&] { return "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k); });
-        if (p.vertices.size() < 3) continue;  // a 2D segment: nothing to fill
+    // in chunks on every core (a city has 10^6 triangles), each chunk's answers in the scene's order
+    std::vector<std::vector<ScreenPolygon>> chunks(worker_count());
+    for_each_chunk(scene.polygons.size(), 2000, [&](std::size_t begin, std::size_t end, std::size_t chunk) {
         std::vector<glm::dvec4> clip;
-        if (scene.coordinates == Coordinates::world) require_convex(p);
-        for (const auto& v : p.vertices) clip.push_back(to_clip(scene, v));
-        out.push_back(project_polygon(p.id, p.color, std::move(clip), viewport));
-    }
+        for (std::size_t i = begin; i < end; ++i) {
+            const ScenePolygon& p = scene.polygons[i];
+            for (std::size_t k = 0; k < p.vertices.size(); ++k)
+                require_finite(p.vertices[k], [&] { return "polygon " + std::to_string(p.id) + " vertex " + std::to_string(k); });
+            if (p.vertices.size() < 3) continue;  // a 2D segment: nothing to fill
+            if (scene.coordinates == Coordinates::world) require_convex(p);
+            clip.clear();
+            for (const auto& v : p.vertices) clip.push_back(to_clip(scene, v));
+            chunks[chunk].push_back(project_polygon(p.id, p.color, std::span<const glm::dvec4>(clip), viewport));
+        }
+    });
+    std::vector<ScreenPolygon> out = std::move(chunks[0]);
+    for (std::size_t k = 1; k < chunks.size(); ++k) std::move(chunks[k].begin(), chunks[k].end(), std::back_inserter(out));
     return out;
 }
 

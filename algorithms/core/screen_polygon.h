@@ -69,7 +69,17 @@ void require_convex(const ScenePolygon& p);
 void require_convex(std::span<const glm::dvec3> polygon, SceneId id);
 
 // One polygon given in clip space (x, y, z, w), as above.
-ScreenPolygon project_polygon(SceneId id, Color color, std::vector<glm::dvec4> clip_vertices, Viewport viewport);
+ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec4> clip_vertices, Viewport viewport);
+ScreenPolygon project_polygon(SceneId id, Color color, const std::vector<glm::dvec4>& clip_vertices, Viewport viewport);
+
+// Many polygons given in clip space, each as project_polygon, on every core; the answers in their order.
+// InvalidInput names the first polygon (in that order) refused.
+struct ClipSpacePolygon {
+    SceneId id = 0;
+    Color color;
+    std::vector<glm::dvec4> vertices;
+};
+std::vector<ScreenPolygon> project_polygons(std::span<const ClipSpacePolygon> polygons, Viewport viewport);
 
 // The pixels [begin, end) of row j whose centres the polygon covers under the top-left rule (the intersection of
 // every edge's half-plane), clamped to the viewport. Empty when end ≤ begin.

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <thread>
 
+#include "core/span_walker.h"
 #include "zbuffer/depth_test_row.h"
 
 namespace hsr::algo {
@@ -28,14 +29,18 @@ void fill_tile(FrameDepth& out, const std::vector<ScreenPolygon>& polygons, cons
                double levels, int tx, int ty, std::uint64_t* tested, std::uint64_t* written) {
     const int x0 = tx * tile_w, x1 = std::min(o.viewport.width, x0 + tile_w);
     const int y0 = ty * tile_h, y1 = std::min(o.viewport.height, y0 + tile_h);
-    for (const std::uint32_t index : list) {
+    for (std::size_t n = 0; n < list.size(); ++n) {
+        // the polygons are far apart in memory: ask for the ones a few places ahead (and their vertices) now
+        if (n + 8 < list.size()) __builtin_prefetch(&polygons[list[n + 8]]);
+        if (n + 4 < list.size()) __builtin_prefetch(polygons[list[n + 4]].vertices.data());
+        const std::uint32_t index = list[n];
         const ScreenPolygon& p = polygons[index];
         // the row depth by the same additions as the machine: from the polygon's first row
         double row_depth = p.plane.at(0, pixel_centre(p.row_begin));
         int y = p.row_begin;
         for (; y < y0; ++y) row_depth += p.plane.per_y;
-        for (; y < std::min(p.row_end, y1); ++y, row_depth += p.plane.per_y) {
-            const Span span = span_on_row(p, y, o.viewport);
+        for (SpanWalker walk(p, y, o.viewport); y < std::min(p.row_end, y1); ++y, row_depth += p.plane.per_y, walk.next_row()) {
+            const Span span = walk.span();
             const int begin = std::max(span.begin, x0), end = std::min(span.end, x1);
             if (end <= begin) continue;
             double z = row_depth + p.plane.per_x * pixel_centre(span.begin);

@@ -107,12 +107,11 @@ std::vector<int> gl_ids(const std::vector<Triangle>& tris, int width, int height
 
 std::vector<int> our_ids(const std::vector<Triangle>& tris, int width, int height, double* fill_ms, int repeats) {
     FrameDepth f{Image(0, 0), {}, {}};
+    // given in clip space, as OpenGL's buffer is (uploaded before its timing)
+    std::vector<ClipSpacePolygon> clip;
+    for (std::size_t k = 0; k < tris.size(); ++k) clip.push_back({SceneId(k + 1), {}, {tris[k].v[0], tris[k].v[1], tris[k].v[2]}});
     const double ms = median_ms(repeats, [&] {
-        std::vector<ScreenPolygon> polys;
-        polys.reserve(tris.size());
-        for (std::size_t k = 0; k < tris.size(); ++k)
-            polys.push_back(project_polygon(SceneId(k + 1), {}, {tris[k].v[0], tris[k].v[1], tris[k].v[2]}, {width, height}));
-        f = zbuffer_fill(std::move(polys), {.viewport = {width, height}, .format = DepthFormat::int24, .range = {1, 10},
+        f = zbuffer_fill(project_polygons(clip, {width, height}), {.viewport = {width, height}, .format = DepthFormat::int24, .range = {1, 10},
                                             .perspective = true, .detail = EventDetail::polygon})
                 .run_to_end();
     });

@@ -27,7 +27,7 @@ struct GlContext {
 // Index + 1 per pixel (0 for background), rows top first. `draw_ms`, when given, receives the median of `repeats`
 // clears and draws finished with glFinish (the triangles already uploaded; reading back not counted).
 std::vector<int> gl_ids(const std::vector<Triangle>& tris, int width, int height, double* draw_ms = nullptr, int repeats = 1);
-// The same from our z-buffer machine drained with polygon-level events; `fill_ms` times projection and fill.
+// The same from our z-buffer machine drained with polygon-level events; `fill_ms` times projection (project_polygons) and fill.
 std::vector<int> our_ids(const std::vector<Triangle>& tris, int width, int height, double* fill_ms = nullptr, int repeats = 1);
 
 }  // namespace hsr::test
