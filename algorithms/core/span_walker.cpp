@@ -33,4 +33,6 @@ SpanWalker::SpanWalker(const ScreenPolygon& p, int row, Viewport viewport)
     }
 }
 
+Span SpanWalker::direct_span() const { return span_on_row(*polygon_, row_, viewport_); }
+
 }  // namespace hsr::algo

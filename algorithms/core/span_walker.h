@@ -22,7 +22,7 @@ public:
 
     // The current row's span, as span_on_row(p, row(), viewport).
     Span span() const {
-        if (direct_) return span_on_row(*polygon_, row_, viewport_);
+        if (direct_) return direct_span();
         if (row_ < polygon_->row_begin || row_ >= polygon_->row_end || status_ != ScreenStatus::drawn) return {0, 0};
         for (std::size_t i = 0; i < horizontal_count_; ++i)  // outside a horizontal edge: nothing on this row
             if (horizontal_[i].dx * (std::int64_t(row_) * subpixels + subpixels / 2 - horizontal_[i].a_y) < horizontal_[i].threshold) return {0, 0};
@@ -39,6 +39,7 @@ public:
     }
 
 private:
+    Span direct_span() const;  // span_on_row's own answer, out of line so that span() stays small enough to inline
     struct Edge {  // ⌊M/D⌋ on the current row, kept with its remainder
         std::int64_t quotient, remainder, divisor, quotient_step, remainder_step;
         void step() {

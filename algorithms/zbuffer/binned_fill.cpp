@@ -39,6 +39,7 @@ void fill_tile(FrameDepth& out, const std::vector<ScreenPolygon>& polygons, cons
         double row_depth = p.plane.at(0, pixel_centre(p.row_begin));
         int y = p.row_begin;
         for (; y < y0; ++y) row_depth += p.plane.per_y;
+        std::uint64_t tested_here = 0, written_here = 0;
         for (SpanWalker walk(p, y, o.viewport); y < std::min(p.row_end, y1); ++y, row_depth += p.plane.per_y, walk.next_row()) {
             const Span span = walk.span();
             const int begin = std::max(span.begin, x0), end = std::min(span.end, x1);
@@ -46,10 +47,11 @@ void fill_tile(FrameDepth& out, const std::vector<ScreenPolygon>& polygons, cons
             double z = row_depth + p.plane.per_x * pixel_centre(span.begin);
             for (int x = span.begin; x < begin; ++x) z += p.plane.per_x;  // the span's own steps up to the tile
             const std::size_t row = std::size_t(y) * std::size_t(o.viewport.width);
-            const std::uint64_t wrote = depth_test_row(out.depth.data() + row, out.polygon.data() + row, begin, end, z, p.plane.per_x,
-                                                       std::int32_t(index), o, levels);
-            tested[index] += std::uint64_t(end - begin), written[index] += wrote;
+            written_here += depth_test_row(out.depth.data() + row, out.polygon.data() + row, begin, end, z, p.plane.per_x,
+                                           std::int32_t(index), o, levels);
+            tested_here += std::uint64_t(end - begin);
         }
+        tested[index] += tested_here, written[index] += written_here;
     }
 }
 

@@ -19,17 +19,16 @@ inline std::uint64_t depth_code(double z, const ZBufferOptions& o, double levels
 // Pixels [begin, end) of one row (`depth` and `owner` point at the row), the polygon's depth z at `begin` stepped by
 // per_x: where it is nearer, the pixel takes its code and its index (colour and id follow from the index later).
 // Returns how many pixels it won.
-inline std::uint64_t depth_test_row(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
-                                    std::int32_t index, const ZBufferOptions& o, double levels) {
-    std::uint64_t won = 0;
-    for (int x = begin; x < end; ++x, z += per_x) {
-        const std::uint64_t incoming = depth_code(z, o, levels);
-        if (incoming >= depth[x]) continue;
-        depth[x] = std::uint32_t(incoming);
-        owner[x] = index;
-        ++won;
-    }
-    return won;
-}
+std::uint64_t depth_test_row(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x, std::int32_t index,
+                             const ZBufferOptions& o, double levels);
+
+// The two forms depth_test_row chooses between, for the test that holds them to the same answers: pixel by pixel,
+// and, for the integer formats on processors with AVX2, four pixels at a time (the same z, stepped by the same
+// additions one after another, and the same codes; only the test and the writes are done four at once). Where AVX2
+// is missing the wide form is the pixel-by-pixel one.
+std::uint64_t depth_test_row_by_pixel(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
+                                      std::int32_t index, const ZBufferOptions& o, double levels);
+std::uint64_t depth_test_row_wide(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
+                                  std::int32_t index, const ZBufferOptions& o, double levels);
 
 }  // namespace hsr::algo
