@@ -36,7 +36,11 @@ __attribute__((target("avx2"))) std::uint64_t integer_row_avx2(std::uint32_t* de
     return won;
 }
 
-const bool has_avx2 = __builtin_cpu_supports("avx2");
+// (a static initialiser runs among the constructors, where the processor's features must be read first)
+const bool has_avx2 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+}();
 
 }  // namespace
 
