@@ -4,6 +4,7 @@
 #include <atomic>
 #include <thread>
 
+#include "core/parallel.h"
 #include "core/span_walker.h"
 #include "zbuffer/depth_test_row.h"
 
@@ -73,7 +74,7 @@ bool binned_fill(FrameDepth& out, const std::vector<ScreenPolygon>& polygons, co
     }
     if (most > o.max_pixel_tests - out.tested) return false;
 
-    const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
+    const unsigned threads = worker_count();
     std::vector<std::vector<std::uint64_t>> tested(threads, std::vector<std::uint64_t>(polygons.size())), written = tested;
     std::atomic<std::size_t> next{0};
     const double levels = window_depth_levels(o.format);

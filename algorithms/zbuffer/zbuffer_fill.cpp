@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "core/numeric.h"
+#include "core/parallel.h"
 
 namespace hsr::algo {
 namespace {
@@ -26,14 +27,23 @@ bool fill_span(FrameDepth& out, const ScreenPolygon& p, std::int32_t index, int 
     return end == span.end;
 }
 
-// The image from the polygon buffer: each pixel the colour and id of the polygon it holds.
+// The image from the polygon buffer: each pixel the colour and id of the polygon it holds. (From a table of just
+// those, small enough to stay in the cache, and in chunks of rows on every core for large frames.)
 void resolve_image(FrameDepth& out, const std::vector<ScreenPolygon>& polygons) {
-    for (std::size_t k = 0; k < out.polygon.size(); ++k) {
-        if (out.polygon[k] < 0) continue;
-        const ScreenPolygon& p = polygons[std::size_t(out.polygon[k])];
-        out.image.ids[k] = p.id;
-        out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
-    }
+    struct Look {
+        SceneId id;
+        Color color;
+    };
+    std::vector<Look> looks(polygons.size());
+    for (std::size_t i = 0; i < polygons.size(); ++i) looks[i] = {polygons[i].id, polygons[i].color};
+    for_each_chunk(out.polygon.size(), std::size_t(1) << 16, [&](std::size_t begin, std::size_t end, std::size_t) {
+        for (std::size_t k = begin; k < end; ++k) {
+            if (out.polygon[k] < 0) continue;
+            const Look& p = looks[std::size_t(out.polygon[k])];
+            out.image.ids[k] = p.id;
+            out.image.rgb[3 * k] = p.color.r, out.image.rgb[3 * k + 1] = p.color.g, out.image.rgb[3 * k + 2] = p.color.b;
+        }
+    });
 }
 
 }  // namespace
