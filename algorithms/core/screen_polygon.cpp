@@ -146,6 +146,7 @@ std::vector<ScreenPolygon> project_polygons(std::span<const ClipSpacePolygon> po
 std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewport) {
     // in chunks on every core (a city has 10^6 triangles), each chunk's answers in the scene's order
     std::vector<std::vector<ScreenPolygon>> chunks(worker_count());
+    const glm::dmat4 to_clip_space = view_projection(scene.camera);  // to_clip's matrix, made once
     for_each_chunk(scene.polygons.size(), 2000, [&](std::size_t begin, std::size_t end, std::size_t chunk) {
         std::vector<glm::dvec4> clip;
         for (std::size_t i = begin; i < end; ++i) {
@@ -155,7 +156,7 @@ std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewpor
             if (p.vertices.size() < 3) continue;  // a 2D segment: nothing to fill
             if (scene.coordinates == Coordinates::world) require_convex(p);
             clip.clear();
-            for (const auto& v : p.vertices) clip.push_back(to_clip(scene, v));
+            for (const auto& v : p.vertices) clip.push_back(scene.coordinates == Coordinates::clip ? v : to_clip_space * v);
             chunks[chunk].push_back(project_polygon(p.id, p.color, std::span<const glm::dvec4>(clip), viewport));
         }
     });
