@@ -48,8 +48,11 @@ void draw_depth_sort_view(const DepthSortView& v, LineBatches& out, std::vector<
                 const auto corner = [](int k) { return glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1); };
                 out.faint.line(corner(i), corner(i | axis), box);
             }
+    // the eye lies far along −z, which the default orbit puts under the screen inset: a line from the volume's
+    // near face towards it, labelled where it leaves the volume
+    out.faint.line(shown({0, 0, -1}), shown({0, 0, -1.6}), palette::eye);
     out.bold.point(shown({0, 0, -1.6}), palette::eye);
-    labels.push_back({shown({0, 0, -1.6}), "eye (z grows away)", palette::eye});
+    labels.push_back({shown({0, 0, -1}), "to the eye (z grows away)", palette::eye});
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.15f), colour_of(v.polygons[i], 0.8f), false);
     for (std::uint32_t i : v.drawn) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.75f), colour_of(v.polygons[i], 1), false);
