@@ -50,6 +50,10 @@ inline long long round_half_away(double x) {
     return static_cast<long long>(r);
 }
 
+// ⌊a / b⌋ and ⌈a / b⌉ for b > 0 (C++'s division truncates towards zero): the rasterisers' sub-pixel arithmetic.
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
+
 struct ClipTolerance {
     static constexpr double w_epsilon = 1e-9;  // clip-space w below which a point counts as at or behind the eye
 };

@@ -13,16 +13,6 @@
 namespace hsr::algo {
 namespace {
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
-    return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
-
-std::int64_t row_centre(int row) { return std::int64_t(row) * subpixels + subpixels / 2; }
-
-// The fill rule as a threshold on E: on the edge (E = 0) counts only for left edges and bottom edges (going −x).
-std::int64_t threshold(std::int64_t dx, std::int64_t dy) { return (dy < 0 || (dy == 0 && dx < 0)) ? 0 : 1; }
-
 // Twice the signed area in sub-pixel units²; positive when clockwise on the screen (y down).
 std::int64_t twice_area(const std::vector<ScreenVertex>& v) {
     std::int64_t sum = 0;
@@ -75,15 +65,10 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec
     // Wholly inside every plane (most polygons of a scene): each of the 7 stages would only pass the list on, one
     // place turned (it emits the end of each edge), so the answer is the list turned by 7, with no clipping work.
     const bool inside = std::all_of(clip_vertices.begin(), clip_vertices.end(), [](const glm::dvec4& v) { return plain_outcode(v) == 0; });
+    const bool clip = !inside || clip_vertices.empty();
     std::vector<glm::dvec4> clipped;
-    std::size_t first = 0;  // where the visible list starts in `visible`
-    if (inside && !clip_vertices.empty()) {
-        first = 7 % clip_vertices.size();
-    } else {
-        clipped = plain_sutherland_hodgman(std::vector<glm::dvec4>(clip_vertices.begin(), clip_vertices.end()));
-        clip_vertices = clipped;
-    }
-    const std::span<const glm::dvec4> visible = clip_vertices;
+    if (clip) clipped = plain_sutherland_hodgman(std::vector<glm::dvec4>(clip_vertices.begin(), clip_vertices.end()));
+    const std::span<const glm::dvec4> visible = clip ? std::span<const glm::dvec4>(clipped) : clip_vertices;
     if (visible.size() < 3) {
         out.status = ScreenStatus::outside_view;
         return out;
@@ -93,6 +78,7 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec
     thread_local std::vector<glm::dvec3> exact;
     exact.clear();
     out.vertices.reserve(visible.size());
+    const std::size_t first = clip ? 0 : 7 % visible.size();  // the list turned by 7, read in place
     for (std::size_t k = 0; k < visible.size(); ++k) {
         const glm::dvec4& c = visible[(first + k) % visible.size()];
         glm::dvec3 ndc = glm::dvec3(c) / c.w;
@@ -167,7 +153,7 @@ std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewpor
 
 int edge_bound_on_row(const ScreenVertex& a, const ScreenVertex& b, int row) {
     // E(p) = dx·(p.y − a.y) − dy·(p.x − a.x) ≥ t, with p.x = 256·i + 128 the centre of pixel i
-    const std::int64_t dx = b.x - a.x, dy = b.y - a.y, t = threshold(dx, dy);
+    const std::int64_t dx = b.x - a.x, dy = b.y - a.y, t = fill_rule_threshold(dx, dy);
     const std::int64_t k = dx * (row_centre(row) - a.y) + dy * a.x;  // E = −dy·p.x + k
     const std::int64_t half = subpixels / 2;
     if (dy < 0) return int(std::clamp<std::int64_t>(ceil_div(t - k + half * dy, -subpixels * dy), -1, 1 << 30));
@@ -187,7 +173,7 @@ Span span_on_row(const ScreenPolygon& p, int row, Viewport viewport) {
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
         if (dy < 0) s.begin = std::max(s.begin, edge_bound_on_row(a, b, row));
         else if (dy > 0) s.end = std::min(s.end, edge_bound_on_row(a, b, row));
-        else if (dx * (row_centre(row) - a.y) < threshold(dx, dy)) return {0, 0};  // outside a horizontal edge
+        else if (dx * (row_centre(row) - a.y) < fill_rule_threshold(dx, dy)) return {0, 0};  // outside a horizontal edge
     }
     return s;
 }

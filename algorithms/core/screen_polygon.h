@@ -98,4 +98,11 @@ double edge_x_at_row(const ScreenVertex& a, const ScreenVertex& b, int row);
 // Pixel centres, in pixels.
 inline double pixel_centre(int i) { return i + 0.5; }
 
+// The centre line of row j, in sub-pixels.
+inline std::int64_t row_centre(int row) { return std::int64_t(row) * subpixels + subpixels / 2; }
+
+// The fill rule as a threshold on the edge function E of edge (dx, dy): a pixel centre is inside when E ≥ it, so on
+// the edge (E = 0) counts only for left edges and bottom edges (going −x).
+inline std::int64_t fill_rule_threshold(std::int64_t dx, std::int64_t dy) { return (dy < 0 || (dy == 0 && dx < 0)) ? 0 : 1; }
+
 }  // namespace hsr::algo

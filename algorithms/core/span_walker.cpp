@@ -1,25 +1,19 @@
 #include "core/span_walker.h"
 
+#include "core/numeric.h"
+
 namespace hsr::algo {
-namespace {
-
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
-    return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-}  // namespace
 
 // The arrays are left unset past their counts: the walker is made once per polygon and band of rows.
 // NOLINTNEXTLINE(cppcoreguidelines-pro-type-member-init)
 SpanWalker::SpanWalker(const ScreenPolygon& p, int row, Viewport viewport)
     : polygon_(&p), viewport_(viewport), row_(row), status_(p.status), direct_(p.vertices.size() > most_edges) {
     if (direct_) return;
-    const std::int64_t centre = std::int64_t(row) * subpixels + subpixels / 2;
+    const std::int64_t centre = row_centre(row);
     for (std::size_t i = 0, j = p.vertices.size() - 1; i < p.vertices.size(); j = i++) {
         const ScreenVertex &a = p.vertices[j], &b = p.vertices[i];
         const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-        // the fill rule's threshold on E, as span_on_row: on the edge counts for left edges and bottom edges
-        const std::int64_t t = (dy < 0 || (dy == 0 && dx < 0)) ? 0 : 1;
+        const std::int64_t t = fill_rule_threshold(dx, dy);
         if (dy == 0) {
             horizontal_[horizontal_count_++] = {dx, a.y, t};
             continue;

@@ -25,7 +25,7 @@ public:
         if (direct_) return direct_span();
         if (row_ < polygon_->row_begin || row_ >= polygon_->row_end || status_ != ScreenStatus::drawn) return {0, 0};
         for (std::size_t i = 0; i < horizontal_count_; ++i)  // outside a horizontal edge: nothing on this row
-            if (horizontal_[i].dx * (std::int64_t(row_) * subpixels + subpixels / 2 - horizontal_[i].a_y) < horizontal_[i].threshold) return {0, 0};
+            if (horizontal_[i].dx * (row_centre(row_) - horizontal_[i].a_y) < horizontal_[i].threshold) return {0, 0};
         Span s{0, viewport_.width};
         for (std::size_t i = 0; i < left_count_; ++i) s.begin = std::max(s.begin, int(std::clamp<std::int64_t>(-left_[i].quotient, -1, 1 << 30)));
         for (std::size_t i = 0; i < right_count_; ++i) s.end = std::min(s.end, int(std::clamp<std::int64_t>(right_[i].quotient + 1, -1, 1 << 30)));

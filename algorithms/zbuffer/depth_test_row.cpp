@@ -57,15 +57,10 @@ std::uint64_t depth_test_row_by_pixel(std::uint32_t* depth, std::int32_t* owner,
     return won;
 }
 
-std::uint64_t depth_test_row_wide(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
-                                  std::int32_t index, const ZBufferOptions& o, double levels) {
-    if (levels > 0 && has_avx2) return integer_row_avx2(depth, owner, begin, end, z, per_x, index, levels);
-    return depth_test_row_by_pixel(depth, owner, begin, end, z, per_x, index, o, levels);
-}
-
 std::uint64_t depth_test_row(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x, std::int32_t index,
                              const ZBufferOptions& o, double levels) {
-    return depth_test_row_wide(depth, owner, begin, end, z, per_x, index, o, levels);
+    if (levels > 0 && has_avx2) return integer_row_avx2(depth, owner, begin, end, z, per_x, index, levels);
+    return depth_test_row_by_pixel(depth, owner, begin, end, z, per_x, index, o, levels);
 }
 
 }  // namespace hsr::algo

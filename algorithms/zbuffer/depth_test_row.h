@@ -18,17 +18,14 @@ inline std::uint64_t depth_code(double z, const ZBufferOptions& o, double levels
 
 // Pixels [begin, end) of one row (`depth` and `owner` point at the row), the polygon's depth z at `begin` stepped by
 // per_x: where it is nearer, the pixel takes its code and its index (colour and id follow from the index later).
-// Returns how many pixels it won.
+// Returns how many pixels it won. For the integer formats on processors with AVX2 it tests four pixels at a time
+// (the same z, stepped by the same additions one after another, and the same codes; only the test and the writes
+// are done four at once); otherwise it is depth_test_row_by_pixel.
 std::uint64_t depth_test_row(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x, std::int32_t index,
                              const ZBufferOptions& o, double levels);
 
-// The two forms depth_test_row chooses between, for the test that holds them to the same answers: pixel by pixel,
-// and, for the integer formats on processors with AVX2, four pixels at a time (the same z, stepped by the same
-// additions one after another, and the same codes; only the test and the writes are done four at once). Where AVX2
-// is missing the wide form is the pixel-by-pixel one.
+// The loop pixel by pixel, which the test holds depth_test_row to.
 std::uint64_t depth_test_row_by_pixel(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
                                       std::int32_t index, const ZBufferOptions& o, double levels);
-std::uint64_t depth_test_row_wide(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
-                                  std::int32_t index, const ZBufferOptions& o, double levels);
 
 }  // namespace hsr::algo

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
+#include "core/numeric.h"
+
 namespace hsr::algo {
 namespace {
-
-std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
 
 // The first row whose centre is strictly below y (sub-pixels), clamped to the viewport. An edge spans the rows
 // whose centres lie in (top, bottom]: the fill rule gives a pixel centre on a vertex row to the polygon above.

@@ -41,7 +41,7 @@ TEST_CASE("the depth test four pixels at a time writes what the pixel-by-pixel l
             auto d1 = stored, d2 = stored;
             auto o1 = owner, o2 = owner;
             const std::uint64_t a = depth_test_row_by_pixel(d1.data(), o1.data(), begin, end, z, per_x, 5, o, levels);
-            const std::uint64_t b = depth_test_row_wide(d2.data(), o2.data(), begin, end, z, per_x, 5, o, levels);
+            const std::uint64_t b = depth_test_row(d2.data(), o2.data(), begin, end, z, per_x, 5, o, levels);
             INFO("row [" << begin << ", " << end << "), z " << z << ", per_x " << per_x);
             REQUIRE(a == b);
             REQUIRE(d1 == d2);
