@@ -1,20 +1,38 @@
-// Every algorithm the tool can step through: one line each in registry.cpp.
+// Every algorithm the tool can step through: one line each in registry.cpp. An algorithm's `machine` is a value of
+// its family's own type (the clippers' ClipAlgorithm, the ray cast's Acceleration, …), so the one place that turns
+// an algorithm into a session (visualizer/state/families.h) visits it instead of switching over numbers.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
+#include <variant>
+
+#include "clipping/clip_scene.h"
+#include "culling/backface.h"
+#include "raycast/raycast_events.h"
 
 namespace hsr::algo {
 
-enum class Family : unsigned char { clipping, bsp, backface, zbuffer, raycast, scanline, zmerge, depth_sort, portals, culling };
+// The machines of the families that have no enum of their own in their folder.
+enum class BspMachine : std::uint8_t { build, traversal };  // the traversal lesson starts with the tree built
+enum class ZBufferMachine : std::uint8_t { fill };
+enum class ScanLineMachine : std::uint8_t { scan_line };
+enum class ZMergeMachine : std::uint8_t { merge };
+enum class DepthSortMachine : std::uint8_t { newell };
+enum class PortalMachine : std::uint8_t { pvs, render, render_bbox };  // render_bbox: bounding-box frusta
+enum class CullingMachine : std::uint8_t { bounds, frustum, detail, occluders, hiz };
+
+// One alternative per family.
+using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
+                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it
     std::string_view title;
     int difficulty;               // 1 (first week) … 5
-    Family family;
-    int variant;                  // the family's own enum value (ClipAlgorithm, BspLesson, BackfaceTest, Acceleration)
+    Machine machine;
 };
 
 std::span<const AlgorithmInfo> algorithms();

@@ -43,10 +43,8 @@ bool same_cycle(const std::vector<Vec4>& got, const std::vector<Vec4>& want) {
     return got.empty();
 }
 
-SplitterRule rule_named(const std::string& s) {
-    return s == "first" ? SplitterRule::first : s == "balanced" ? SplitterRule::balanced
-                        : s == "fewest-splits" ? SplitterRule::fewest_splits : SplitterRule::weighted;
-}
+// The loader has checked the name.
+SplitterRule rule_named(const std::string& s) { return parse_splitter_rule(s).value_or(SplitterRule::first); }
 
 DepthFormat format_named(const std::string& s) {
     using F = DepthFormat;

@@ -16,6 +16,14 @@ bool same_vertices(const VertexList& a, const VertexList& b) {
     return a && b && *a == *b;
 }
 
+std::optional<SplitterRule> parse_splitter_rule(std::string_view name) {
+    if (name == "first") return SplitterRule::first;
+    if (name == "balanced") return SplitterRule::balanced;
+    if (name == "fewest-splits") return SplitterRule::fewest_splits;
+    if (name == "weighted") return SplitterRule::weighted;
+    return std::nullopt;
+}
+
 std::string_view to_string(SplitterRule r) {
     switch (r) {
         case SplitterRule::first: return "first polygon";

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -123,7 +124,10 @@ using BspEvent = std::variant<BuildStarted, CandidateScored, SplitterChosen, Pol
 // Names a polygon as the view does ("3", "3f", "3fb"); describe uses it for every polygon it mentions.
 using PolygonNamer = std::function<std::string(BspPolygonId)>;
 std::string describe(const BspEvent& e, const PolygonNamer& name);
-std::string_view to_string(SplitterRule r);
+std::string_view to_string(SplitterRule r);  // as sentences name it: "most balanced"
+// As files and the command line name a rule: "first", "balanced", "fewest-splits", "weighted"; nullopt otherwise.
+std::optional<SplitterRule> parse_splitter_rule(std::string_view name);
+inline constexpr std::string_view splitter_rule_names = "first, balanced, fewest-splits or weighted";
 std::string_view to_string(BspBound b);
 
 }  // namespace hsr::algo

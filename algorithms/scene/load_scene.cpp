@@ -7,6 +7,7 @@
 #include <cmath>
 #include <set>
 
+#include "bsp/bsp_events.h"
 #include "core/plane.h"
 #include "scene/load_floor_plan.h"
 #include "scene/load_mesh.h"
@@ -101,8 +102,8 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
             x.format != "float32-reversed" && x.format != "linear24")
             r.fail(c.get("format"), join(f, "format"), "expected int16, int24, int32, float32, float32-reversed or linear24");
         x.splitter = r.text(c, "splitter", f, "first");
-        if (x.splitter != "first" && x.splitter != "balanced" && x.splitter != "fewest-splits" && x.splitter != "weighted")
-            r.fail(c.get("splitter"), join(f, "splitter"), "expected first, balanced, fewest-splits or weighted");
+        if (!parse_splitter_rule(x.splitter))
+            r.fail(c.get("splitter"), join(f, "splitter"), "expected " + std::string(splitter_rule_names));
         if (const toml::node* size = c.get("size")) {
             const glm::dvec4 v = r.vector(*size, join(f, "size"), 2, 2);
             if (!(v[0] >= 1 && v[0] <= 1024 && v[1] >= 1 && v[1] <= 1024 && v[0] == std::floor(v[0]) && v[1] == std::floor(v[1])))
@@ -151,8 +152,8 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
         r.only_keys(c, f, {"splitter", "eye", "order", "splits"});
         ExpectBsp x{r.text(c, "splitter", f, "first"), std::nullopt, std::nullopt, std::nullopt,
                     int(c.source().begin.line)};
-        if (x.splitter != "first" && x.splitter != "balanced" && x.splitter != "fewest-splits" && x.splitter != "weighted")
-            r.fail(c.get("splitter"), join(f, "splitter"), "expected first, balanced, fewest-splits or weighted");
+        if (!parse_splitter_rule(x.splitter))
+            r.fail(c.get("splitter"), join(f, "splitter"), "expected " + std::string(splitter_rule_names));
         if (const toml::node* eye = c.get("eye")) x.eye = glm::dvec3(r.vector(*eye, join(f, "eye"), 3, 3));
         if (const toml::array* order = r.array(c, "order", f, false)) {
             if (!x.eye) r.fail(&c, join(f, "eye"), "an expected order needs the eye it is seen from");

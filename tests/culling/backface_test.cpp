@@ -8,7 +8,7 @@
 #include "catch.h"
 #include "core/numeric.h"
 #include "culling/backface.h"
-#include "state/cull_session.h"
+#include "state/backface_session.h"
 
 using namespace hsr::algo;
 
@@ -112,10 +112,10 @@ TEST_CASE("back-face culling refuses degenerate and NaN faces by name", "[cullin
 TEST_CASE("the back-face lesson's view folds to the faces the machine keeps", "[culling][backface][state]") {
     for (const char* id : {"backface_view_vector", "backface_plane_equation", "backface_screen_winding"}) {
         INFO(id);
-        hsr::viz::CullSession session(hsr::viz::load_lesson(hsr::viz::data_dir() + "/lessons/06_backface.toml", id));
+        hsr::viz::BackfaceSession session(hsr::viz::load_lesson(hsr::viz::data_dir() + "/lessons/06_backface.toml", id));
         session.seek_end();
         const auto kept = cull_back_faces(faces_of(session.lesson().scene), session.lesson().scene.camera,
-                                          BackfaceTest(session.lesson().algorithm.variant))
+                                          machine_of<BackfaceTest>(session.lesson()))
                               .run_to_end();
         std::vector<std::int32_t> shown;
         for (const auto& f : session.view().faces)

@@ -6,6 +6,7 @@
 
 #include "catch.h"
 #include "state/classroom.h"
+#include "state/families.h"
 #include "state/file_watch.h"
 #include "state/lesson_check.h"
 

@@ -1,6 +1,6 @@
 // Culling lessons: each view folded to the end holds what its machine returns; seeking equals folding.
 #include "catch.h"
-#include "state/culling_session.h"
+#include "state/families.h"
 
 using namespace hsr::viz;
 using namespace hsr::algo;
@@ -20,20 +20,23 @@ TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]
     for (const char* file : files) {
         INFO(file);
         const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
-        const auto session = make_culling_session(lesson, {});
+        const FamilySession session = make_session(lesson);
         session->seek_end();
-        const auto& lessonview = dynamic_cast<const CullingLesson&>(*session);
+        const CullingLesson& lessonview = session.visit([](auto& s) -> const CullingLesson& {
+            if constexpr (std::is_base_of_v<CullingLesson, std::decay_t<decltype(s)>>) return s;
+            else throw std::logic_error("not a culling lesson");
+        });
         const CullingView& v = lessonview.culling_view();
         REQUIRE(v.done);
         const auto& w = *v.world;
         std::vector<std::uint8_t> want;
-        if (lessonview.machine() == "frustum") want = cull_hierarchy(&w.hierarchy, w.scene.camera).run_to_end().kept;
-        if (lessonview.machine() == "detail")
+        if (lessonview.culling_machine() == CullingMachine::frustum) want = cull_hierarchy(&w.hierarchy, w.scene.camera).run_to_end().kept;
+        if (lessonview.culling_machine() == CullingMachine::detail)
             want = cull_hierarchy(&w.hierarchy, w.scene.camera, {.frustum = false, .detail_pixels = w.detail_pixels, .viewport_height = lesson.grid.height})
                        .run_to_end()
                        .kept;
-        if (lessonview.machine() == "occluders") want = occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4}).run_to_end().kept;
-        if (lessonview.machine() == "hiz") want = hiz_render(&w.scene, &w.hierarchy, w.zbuffer).run_to_end().rendered;
+        if (lessonview.culling_machine() == CullingMachine::occluders) want = occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4}).run_to_end().kept;
+        if (lessonview.culling_machine() == CullingMachine::hiz) want = hiz_render(&w.scene, &w.hierarchy, w.zbuffer).run_to_end().rendered;
         CHECK(kept_of(v) == want);
         CHECK(v.kept + v.left_out == w.scene.polygons.size());
     }
@@ -41,11 +44,11 @@ TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]
 
 TEST_CASE("seeking a culling lesson equals folding it from the start", "[state][culling]") {
     const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/25_culling_hiz.toml");
-    const auto s = make_culling_session(lesson, {}), fresh = make_culling_session(lesson, {});
+    const auto s = std::make_unique<HizSession>(lesson), fresh = std::make_unique<HizSession>(lesson);
     s->seek_end();
     const std::size_t n = s->cursor();
-    const auto& a = dynamic_cast<const CullingLesson&>(*s).culling_view();
-    const auto& b = dynamic_cast<const CullingLesson&>(*fresh).culling_view();
+    const CullingView& a = s->view();
+    const CullingView& b = fresh->view();
     for (std::size_t k = 0; k <= n; k += 7) {
         s->seek(k);
         while (fresh->cursor() < k) fresh->micro_step();

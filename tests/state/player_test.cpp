@@ -127,7 +127,7 @@ TEST_CASE("seek(k) equals a fold of the first k events on every shipped lesson's
     for (const char* file : {"01_cohen_sutherland.toml", "02_liang_barsky.toml", "03_sutherland_hodgman.toml"}) {
         INFO(file);
         const Lesson lesson = load_lesson(data_dir() + "/lessons/" + file);
-        const auto algorithm = ClipAlgorithm(lesson.algorithm.variant);
+        const auto algorithm = machine_of<ClipAlgorithm>(lesson);
         const ClipJob job = clip_job(lesson.scene);
         std::vector<ClipView> folds{initial_view(job, algorithm)};
         for (const auto& e : clip_scene(job, algorithm)) {

@@ -31,8 +31,8 @@ TEST_CASE("the PVS lesson folds to the matrix and stab trees the machine builds"
 }
 
 TEST_CASE("seeking a portal_render lesson equals folding it, and its drawn set is the machine's", "[state][portals]") {
-    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"), false);
-    PortalRenderSession fresh(lesson("19_portals_render.toml", "portal_render"), false);
+    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"));
+    PortalRenderSession fresh(lesson("19_portals_render.toml", "portal_render"));
     s.seek_end();
     const std::size_t n = s.cursor();
     REQUIRE(s.view().done);
@@ -52,7 +52,7 @@ TEST_CASE("seeking a portal_render lesson equals folding it, and its drawn set i
 }
 
 TEST_CASE("the way shown is the way to the cell being visited: after a return, the narrowing of the new way only", "[state][portals]") {
-    PortalRenderSession s(lesson("20_portals_bounding_box.toml", "portal_render"), false);
+    PortalRenderSession s(lesson("20_portals_bounding_box.toml", "portal_render"));
     s.seek_end();
     const auto& v = s.view();
     const auto& m = v.world->model;
@@ -65,7 +65,7 @@ TEST_CASE("the way shown is the way to the cell being visited: after a return, t
 }
 
 TEST_CASE("dragging the eye into another cell reruns portal_render from there", "[state][portals]") {
-    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"), false);
+    PortalRenderSession s(lesson("19_portals_render.toml", "portal_render"));
     s.seek_end();
     CHECK(s.view().eye_cell == 4);  // E
     s.move_eye({5.0, 5.0});         // into B

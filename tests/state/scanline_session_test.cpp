@@ -1,6 +1,6 @@
 // Scan-line lessons: the image folded from the spans is the z-buffer's, and the active edge table empties.
 #include "catch.h"
-#include "state/depth_sort_session.h"
+#include "state/families.h"
 #include "state/scanline_session.h"
 
 using namespace hsr::viz;
@@ -40,7 +40,7 @@ TEST_CASE("seeking a scan-line lesson equals folding its events", "[state][scanl
 TEST_CASE("a depth-sort lesson folds to the machine's order and parts", "[state][depth-sort]") {
     auto lesson = load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml");
     auto session = make_session(lesson);
-    auto* s = dynamic_cast<DepthSortSession*>(session.get());
+    auto* s = session.get_if<DepthSortSession>();
     REQUIRE(s);
     s->seek_end();
     const DepthSortResult r = depth_sort(sort_polygons(lesson.scene)).run_to_end();

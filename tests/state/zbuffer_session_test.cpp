@@ -86,7 +86,7 @@ TEST_CASE("a z-buffer lesson with a bad format or grid names the field and line"
 
 TEST_CASE("the z-merge lesson's merged image is the z-buffer of the whole scene", "[state][zbuffer][merge]") {
     auto lesson = load_lesson(HSR_SOURCE_DIR "/lessons/12_z_merge.toml");
-    REQUIRE(lesson.algorithm.family == Family::zmerge);
+    REQUIRE(std::holds_alternative<ZMergeMachine>(lesson.algorithm.machine));
     ZMergeSession s(lesson);
     s.seek_end();
     Scene scene = lesson.scene;

@@ -25,11 +25,8 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 algo::SplitterRule splitter_named(const std::string& s) {
-    if (s == "first") return algo::SplitterRule::first;
-    if (s == "balanced") return algo::SplitterRule::balanced;
-    if (s == "fewest-splits") return algo::SplitterRule::fewest_splits;
-    if (s == "weighted") return algo::SplitterRule::weighted;
-    throw std::runtime_error("unknown splitter \"" + s + "\"; expected first, balanced, fewest-splits or weighted");
+    if (const auto rule = algo::parse_splitter_rule(s)) return *rule;
+    throw std::runtime_error("unknown splitter \"" + s + "\"; expected " + std::string(algo::splitter_rule_names));
 }
 
 algo::DepthFormat format_named(const std::string& s) {

@@ -76,17 +76,17 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     place_in_column(l, 2);
     const CullingView& v = s.culling_view();
     ImGui::Begin("Culling", nullptr, fixed);
-    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · 3: god's eye / camera", std::string(s.machine()).c_str(), v.kept, v.left_out);
-    if (s.machine() == "frustum") {
+    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · 3: god's eye / camera", std::string(to_string(s.culling_machine())).c_str(), v.kept, v.left_out);
+    if (s.culling_machine() == algo::CullingMachine::frustum) {
         ImGui::SameLine();
         ImGui::TextColored(dim_text, "· %u plane tests", v.plane_tests);
     }
-    if (s.machine() == "hiz") {
+    if (s.culling_machine() == algo::CullingMachine::hiz) {
         ImGui::SameLine();
         ImGui::TextColored(dim_text, "· %u texels tested", v.texels);
     }
     if (ImGui::BeginTabBar("culling tabs")) {
-        if (s.machine() == "bounds" && ImGui::BeginTabItem("void space")) {
+        if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem("void space")) {
             void_table(v);
             ImGui::EndTabItem();
         }
@@ -100,7 +100,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
 }
 
 void culling_canvas(const CullingLesson& s, float x, float y, float w, float h) {
-    if (s.machine() != "hiz") return;
+    if (s.culling_machine() != algo::CullingMachine::hiz) return;
     const CullingView& v = s.culling_view();
     // The depth buffer of what has been rendered so far, and its pyramid (cached while the step stays)
     struct Cache {

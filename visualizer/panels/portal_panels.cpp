@@ -149,32 +149,42 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
 
 }  // namespace
 
-void portal_plan_canvas(const Session& s, float x, float y, float w, float h, UiActions& out) {
-    const auto* pvs = dynamic_cast<const PvsSession*>(&s);
-    const auto* render = dynamic_cast<const PortalRenderSession*>(&s);
-    if (!pvs && !render) return;
-    const algo::CellModel& m = pvs ? pvs->view().world->model : render->view().world->model;
+namespace {
+
+// The canvas's window and background, and the fit of the plan into it; end_plan_canvas writes the caption.
+PlanFit begin_plan_canvas(const algo::CellModel& m, float x, float y, float w, float h) {
     place(x, y, w, h);
     ImGui::Begin("##floor plan", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                               ImGuiWindowFlags_NoBringToFrontOnFocus);
-    ImDrawList* d = ImGui::GetWindowDrawList();
-    d->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), background);
-    const PlanFit f = fit(m, x, y, w, h);
-    if (pvs) pvs_plan(*pvs, d, f);
-    if (render) {
-        render_plan(*render, d, f);
-        // drag the eye: the traversal reruns from where it is dropped
-        ImGui::SetCursorScreenPos(ImVec2(x, y));
-        ImGui::InvisibleButton("plan", ImVec2(w, h));
-        const ImVec2 mouse = ImGui::GetIO().MousePos;
-        if (ImGui::IsItemActive() && (ImGui::GetIO().MouseDelta.x != 0 || ImGui::GetIO().MouseDelta.y != 0)) {
-            const Vec2 p = f.plan(mouse);
-            out.move_eye = glm::dvec3(p.x, render->view().camera.eye.y, -p.y);
-        }
-    }
-    d->AddText(ImVec2(x + 16, y + 10), IM_COL32(160, 163, 170, 255),
-               render ? "floor plan · drag the eye · 3: the 3D walk-through" : "floor plan · green: in the PVS of the yellow cell");
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), background);
+    return fit(m, x, y, w, h);
+}
+
+void end_plan_canvas(float x, float y, const char* caption) {
+    ImGui::GetWindowDrawList()->AddText(ImVec2(x + 16, y + 10), IM_COL32(160, 163, 170, 255), caption);
     ImGui::End();
+}
+
+}  // namespace
+
+void portal_plan_canvas(const PvsSession& s, float x, float y, float w, float h) {
+    const PlanFit f = begin_plan_canvas(s.view().world->model, x, y, w, h);
+    pvs_plan(s, ImGui::GetWindowDrawList(), f);
+    end_plan_canvas(x, y, "floor plan · green: in the PVS of the yellow cell");
+}
+
+void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w, float h, UiActions& out) {
+    const PlanFit f = begin_plan_canvas(s.view().world->model, x, y, w, h);
+    render_plan(s, ImGui::GetWindowDrawList(), f);
+    // drag the eye: the traversal reruns from where it is dropped
+    ImGui::SetCursorScreenPos(ImVec2(x, y));
+    ImGui::InvisibleButton("plan", ImVec2(w, h));
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    if (ImGui::IsItemActive() && (ImGui::GetIO().MouseDelta.x != 0 || ImGui::GetIO().MouseDelta.y != 0)) {
+        const Vec2 p = f.plan(mouse);
+        out.move_eye = glm::dvec3(p.x, s.view().camera.eye.y, -p.y);
+    }
+    end_plan_canvas(x, y, "floor plan · drag the eye · 3: the 3D walk-through");
 }
 
 // ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────

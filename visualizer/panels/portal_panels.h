@@ -9,7 +9,8 @@
 namespace hsr::viz {
 
 // Over the whole view area (x, y, w, h); fills out.move_eye while the eye is dragged.
-void portal_plan_canvas(const Session& s, float x, float y, float w, float h, UiActions& out);
+void portal_plan_canvas(const PvsSession& s, float x, float y, float w, float h);
+void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w, float h, UiActions& out);
 void pvs_state_panel(const PvsSession& s, const PanelLayout& layout);
 void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelLayout& layout, UiActions& out);
 

@@ -42,27 +42,21 @@ constexpr std::array<std::string_view, 14> display_lines = {
     "}",
 };
 
-SplitterRule rule_named(const std::string& s) {
-    return s == "balanced" ? SplitterRule::balanced : s == "fewest-splits" ? SplitterRule::fewest_splits
-                         : s == "weighted"    ? SplitterRule::weighted
-                                              : SplitterRule::first;
-}
-
-BspSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
-    BspJob job = bsp_job(lesson.scene, rule_named(lesson.splitter));
-    BspView initial = initial_view(job);
-    return BspSession::PlayerType(bsp_scene(std::move(job)), std::move(initial), options);
-}
-
 }  // namespace
 
+BspSession::RunType BspSession::machine(const Lesson& lesson) {
+    BspJob job = bsp_job(lesson.scene, lesson.splitter);
+    BspView initial = initial_view(job);
+    return {bsp_scene(std::move(job)), std::move(initial)};
+}
+
 BspSession::BspSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(lesson, options)),
-      kind_(BspLesson(lesson.algorithm.variant)),
-      job_(bsp_job(lesson.scene, rule_named(lesson.splitter))),
+    : PlayerSession(lesson, machine(lesson), options),
+      kind_(machine_of<algo::BspMachine>(lesson)),
+      job_(bsp_job(lesson.scene, lesson.splitter)),
       options_(options) {
     measure();
-    if (kind_ == BspLesson::traversal)  // the traversal lesson starts with the tree built
+    if (kind_ == algo::BspMachine::traversal)  // the traversal lesson starts with the tree built
         player().step_forward_until([](const BspEvent& e) { return std::holds_alternative<BuildFinished>(e); });
 }
 
@@ -171,11 +165,12 @@ algo::Scene BspSession::scene_of_job() const {
 }
 
 std::span<const std::string_view> BspSession::pseudocode() const {
-    if (kind_ == BspLesson::build && !view().built) return build_lines;
+    if (kind_ == algo::BspMachine::build && !view().built) return build_lines;
     return display_lines;
 }
 
-std::string BspSession::describe_event(const BspEvent& e) const { return describe(e, namer(view())); }
+std::string BspSession::sentence_of(const BspEvent& e, const BspView& view) { return describe(e, namer(view)); }
+std::string BspSession::describe_event(const BspEvent& e) const { return sentence_of(e, view()); }
 
 int BspSession::line_of(const BspEvent& event) const {
     return std::visit(overloaded{
@@ -210,5 +205,11 @@ bool BspSession::is_major(const BspEvent& event) const {
                       },
                       event);
 }
+
+const FamilyFacts BspSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.bsp.empty() || expects_from_renderer(s, "bsp"); },
+    .random_scene = [](std::uint32_t seed, bool two_d) -> std::optional<algo::Scene> { return two_d ? random_segment_scene_2d(seed) : random_triangle_scene(seed, false); },
+    .measure = &analysis::measure_hidden_surfaces,
+};
 
 }  // namespace hsr::viz

@@ -8,16 +8,18 @@
 
 #include "state/bsp_view.h"
 #include "state/edit_history.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
 
-enum class BspLesson : int { build = 0, traversal = 1 };
-
 class BspSession : public PlayerSession<algo::BspEvent, std::vector<algo::BspPolygonId>, BspView> {
 public:
     explicit BspSession(Lesson lesson, PlayerOptions options = {});
-    BspLesson kind() const { return kind_; }
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::BspEvent& e, const BspView& view);  // describe(e), as the view after it names things
+    algo::BspMachine kind() const { return kind_; }
     std::span<const std::string_view> pseudocode() const override;
     // Build statistics of the same tree built once more, timed (the player's own run is stepped, not timed).
     struct Stats {
@@ -47,7 +49,7 @@ private:
     std::string describe_event(const algo::BspEvent& e) const override;
     int line_of(const algo::BspEvent& e) const override;
     bool is_major(const algo::BspEvent& e) const override;
-    BspLesson kind_;
+    algo::BspMachine kind_;
     Stats stats_;
     algo::BspJob job_;
     PlayerOptions options_;

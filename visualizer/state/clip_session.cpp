@@ -5,21 +5,30 @@
 namespace hsr::viz {
 namespace {
 
-ClipPlayer make_player(const Lesson& lesson, PlayerOptions options) {
-    const auto algorithm = algo::ClipAlgorithm(lesson.algorithm.variant);
-    algo::ClipJob job = algo::clip_job(lesson.scene);
-    ClipView initial = initial_view(job, algorithm);
-    return ClipPlayer(algo::clip_scene(std::move(job), algorithm), std::move(initial), options);
-}
-
 }  // namespace
 
+ClipSession::RunType ClipSession::machine(const Lesson& lesson) {
+    const auto algorithm = machine_of<algo::ClipAlgorithm>(lesson);
+    algo::ClipJob job = algo::clip_job(lesson.scene);
+    ClipView initial = initial_view(job, algorithm);
+    return {algo::clip_scene(std::move(job), algorithm), std::move(initial)};
+}
+
 ClipSession::ClipSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(lesson, options)), algorithm_(algo::ClipAlgorithm(lesson.algorithm.variant)) {}
+    : PlayerSession(lesson, machine(lesson), options), algorithm_(machine_of<algo::ClipAlgorithm>(lesson)) {}
 
 std::span<const std::string_view> ClipSession::pseudocode() const { return viz::pseudocode(algorithm_); }
-std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return algo::describe(e, space()); }
+std::string ClipSession::sentence_of(const algo::ClipEvent& e, const ClipView& view) { return algo::describe(e, view.space); }
+std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return sentence_of(e, view()); }
 int ClipSession::line_of(const algo::ClipEvent& e) const { return pseudocode_line(algorithm_, e); }
 bool ClipSession::is_major(const algo::ClipEvent& e) const { return viz::is_major(e); }
+
+const FamilyFacts ClipSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo& a) {  // Sutherland–Hodgman clips the polygons, the others the segments
+        return !s.expect.clip.empty() && !(a.id == "sutherland_hodgman" ? s.polygons.empty() : s.segments.empty());
+    },
+    .random_scene = &random_clipping_scene,
+    .measure = &analysis::measure_clipping,
+};
 
 }  // namespace hsr::viz

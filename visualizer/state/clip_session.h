@@ -6,6 +6,7 @@
 
 #include "clipping/clip_scene.h"
 #include "state/clip_view.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -15,6 +16,9 @@ using ClipPlayer = Player<algo::ClipEvent, std::vector<algo::PrimitiveClip>, Cli
 class ClipSession : public PlayerSession<algo::ClipEvent, std::vector<algo::PrimitiveClip>, ClipView> {
 public:
     explicit ClipSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::ClipEvent& e, const ClipView& view);  // describe(e), as the view after it names things
     algo::ClipAlgorithm algorithm() const { return algorithm_; }
     algo::ClipSpace space() const { return view().space; }
     std::span<const std::string_view> pseudocode() const override;

@@ -8,6 +8,7 @@
 
 #include "core/overloaded.h"
 #include "culling/view_frustum.h"
+#include "scene/generated_scenes.h"
 
 namespace hsr::viz {
 namespace {
@@ -39,7 +40,7 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     auto w = std::make_shared<CullingWorld>();
     w->scene = lesson.scene;
     w->scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
-    const HierarchyKind kind = lesson.algorithm.variant == 0 ? HierarchyKind::bvh : HierarchyKind::octree;
+    const HierarchyKind kind = machine_of<CullingMachine>(lesson) == CullingMachine::bounds ? HierarchyKind::bvh : HierarchyKind::octree;
     w->hierarchy = build_hierarchy(polygon_boxes(w->scene), {.kind = kind}).run_to_end();
     w->zbuffer = zbuffer_options(w->scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
     w->detail_pixels = 4;
@@ -233,58 +234,91 @@ struct Machine<HizEvent> {
     static bool major(const HizEvent&) { return true; }
 };
 
-// ── [SECTION] the sessions ──────────────────────────────────────────────────────────────────────────────────
-template <class Event, class Result>
-class CullingSession final : public PlayerSession<Event, Result, CullingView>, public CullingLesson {
-public:
-    using Base = PlayerSession<Event, Result, CullingView>;
-    CullingSession(Lesson lesson, typename Base::PlayerType player, std::string_view name)
-        : Base(std::move(lesson), std::move(player)), name_(name) {}
-    std::span<const std::string_view> pseudocode() const override { return Machine<Event>::lines(); }
-    const CullingView& culling_view() const override { return this->view(); }
-    std::string_view machine() const override { return name_; }
+}  // namespace
 
-private:
-    std::string describe_event(const Event& e) const override { return describe(e); }
-    int line_of(const Event& e) const override { return Machine<Event>::line_of(e); }
-    bool is_major(const Event& e) const override { return Machine<Event>::major(e); }
-    std::string_view name_;
-};
+// ── [SECTION] the sessions ──────────────────────────────────────────────────────────────────────────────────
+namespace {
+
+CullingView initial_view(const std::shared_ptr<const CullingWorld>& world) {
+    CullingView v;
+    v.world = world;
+    v.nodes.assign(world->hierarchy.nodes.size(), NodeMark::untouched);
+    v.primitives.assign(world->scene.polygons.size(), PrimitiveMark::untouched);
+    return v;
+}
+
+// The lesson's culling machine, on the lesson's world (each overload is one of the four machines' types).
+Steps<HierarchyEvent, Hierarchy> steps_of(const CullingWorld& w, const Lesson&, HierarchyEvent*) {
+    return build_hierarchy(w.hierarchy.boxes, {.kind = w.hierarchy.kind});
+}
+Steps<HierarchyCullEvent, HierarchyCull> steps_of(const CullingWorld& w, const Lesson& lesson, HierarchyCullEvent*) {
+    const HierarchyCullOptions o = machine_of<CullingMachine>(lesson) == CullingMachine::frustum
+                                       ? HierarchyCullOptions{.frustum = true}
+                                       : HierarchyCullOptions{.frustum = false, .detail_pixels = w.detail_pixels,
+                                                              .viewport_height = lesson.grid.height};
+    return cull_hierarchy(&w.hierarchy, w.scene.camera, o);
+}
+Steps<OcclusionEvent, OcclusionCull> steps_of(const CullingWorld& w, const Lesson&, OcclusionEvent*) {
+    return occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4});
+}
+Steps<HizEvent, HizResult> steps_of(const CullingWorld& w, const Lesson&, HizEvent*) {
+    return hiz_render(&w.scene, &w.hierarchy, w.zbuffer);
+}
 
 }  // namespace
 
-std::unique_ptr<Session> make_culling_session(Lesson lesson, PlayerOptions options) {
-    const auto world = culling_world(lesson);
-    CullingView initial;
-    initial.world = world;
-    initial.nodes.assign(world->hierarchy.nodes.size(), NodeMark::untouched);
-    initial.primitives.assign(world->scene.polygons.size(), PrimitiveMark::untouched);
-    const Scene* scene = &world->scene;
-    const Hierarchy* h = &world->hierarchy;
-    switch (lesson.algorithm.variant) {
-        case 0: {
-            using S = CullingSession<HierarchyEvent, Hierarchy>;
-            return std::make_unique<S>(lesson, S::PlayerType(build_hierarchy(h->boxes, {.kind = h->kind}), initial, options), "bounds");
-        }
-        case 1:
-        case 2: {
-            using S = CullingSession<HierarchyCullEvent, HierarchyCull>;
-            const HierarchyCullOptions o = lesson.algorithm.variant == 1
-                                               ? HierarchyCullOptions{.frustum = true}
-                                               : HierarchyCullOptions{.frustum = false, .detail_pixels = world->detail_pixels,
-                                                                      .viewport_height = lesson.grid.height};
-            return std::make_unique<S>(lesson, S::PlayerType(cull_hierarchy(h, scene->camera, o), initial, options),
-                                       lesson.algorithm.variant == 1 ? "frustum" : "detail");
-        }
-        case 3: {
-            using S = CullingSession<OcclusionEvent, OcclusionCull>;
-            return std::make_unique<S>(lesson, S::PlayerType(occlusion_cull(scene, h, {.max_occluders = 4}), initial, options), "occluders");
-        }
-        default: {
-            using S = CullingSession<HizEvent, HizResult>;
-            return std::make_unique<S>(lesson, S::PlayerType(hiz_render(scene, h, world->zbuffer), initial, options), "hiz");
-        }
+template <class Event, class Result>
+typename CullingSession<Event, Result>::RunType CullingSession<Event, Result>::machine(const Lesson& lesson) {
+    const auto world = culling_world(lesson);  // the machines read it through pointers: the view keeps it alive
+    return {steps_of(*world, lesson, static_cast<Event*>(nullptr)), initial_view(world)};
+}
+
+template <class Event, class Result>
+CullingSession<Event, Result>::CullingSession(Lesson lesson, PlayerOptions options)
+    : PlayerSession<Event, Result, CullingView>(lesson, machine(lesson), options), machine_(machine_of<CullingMachine>(lesson)) {}
+
+template <class Event, class Result>
+std::span<const std::string_view> CullingSession<Event, Result>::pseudocode() const {
+    return Machine<Event>::lines();
+}
+template <class Event, class Result>
+std::string CullingSession<Event, Result>::sentence_of(const Event& e, const CullingView&) {
+    return describe(e);
+}
+template <class Event, class Result>
+std::string CullingSession<Event, Result>::describe_event(const Event& e) const {
+    return describe(e);
+}
+template <class Event, class Result>
+int CullingSession<Event, Result>::line_of(const Event& e) const {
+    return Machine<Event>::line_of(e);
+}
+template <class Event, class Result>
+bool CullingSession<Event, Result>::is_major(const Event& e) const {
+    return Machine<Event>::major(e);
+}
+
+template <class Event, class Result>
+const FamilyFacts CullingSession<Event, Result>::facts = {
+    .speaks_to = [](const Scene&, const AlgorithmInfo&) { return false; },
+    .random_scene = [](std::uint32_t seed, bool) -> std::optional<Scene> { return city_scene({.triangles = 3000, .seed = seed}); },
+    .measure = &analysis::measure_culling,
+};
+
+template class CullingSession<HierarchyEvent, Hierarchy>;
+template class CullingSession<HierarchyCullEvent, HierarchyCull>;
+template class CullingSession<OcclusionEvent, OcclusionCull>;
+template class CullingSession<HizEvent, HizResult>;
+
+std::string_view to_string(CullingMachine m) {
+    switch (m) {
+        case CullingMachine::bounds: return "bounds";
+        case CullingMachine::frustum: return "frustum";
+        case CullingMachine::detail: return "detail";
+        case CullingMachine::occluders: return "occluders";
+        case CullingMachine::hiz: return "hiz";
     }
+    return "?";
 }
 
 }  // namespace hsr::viz

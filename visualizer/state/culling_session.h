@@ -10,6 +10,7 @@
 #include "culling/hiz.h"
 #include "culling/occluders.h"
 #include "culling/pipeline.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -45,15 +46,43 @@ void reduce(CullingView& view, const algo::HizEvent& event);
 // The world a culling lesson plays in (its hierarchy: a BVH for the bounds lesson, else an octree).
 std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson);
 
-// What the window draws of a culling lesson, whichever machine it plays.
+// What the panels draw of a culling lesson, whichever machine it plays.
 class CullingLesson {
 public:
     virtual ~CullingLesson() = default;
     virtual const CullingView& culling_view() const = 0;
-    virtual std::string_view machine() const = 0;  // "bounds", "frustum", "detail", "occluders", "hiz"
+    virtual algo::CullingMachine culling_machine() const = 0;
+};
+std::string_view to_string(algo::CullingMachine m);  // "bounds", "frustum", "detail", "occluders", "hiz"
+
+// One session type per culling machine's events (frustum and detail culling share theirs); the four share the
+// view, the panels and the screen.
+template <class Event, class Result>
+class CullingSession final : public PlayerSession<Event, Result, CullingView>, public CullingLesson {
+public:
+    using RunType = typename PlayerSession<Event, Result, CullingView>::RunType;
+    explicit CullingSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static std::string sentence_of(const Event& e, const CullingView& view);  // describe(e)
+    static const FamilyFacts facts;  // for the presets and the report
+    std::span<const std::string_view> pseudocode() const override;
+    const CullingView& culling_view() const override { return this->view(); }
+    algo::CullingMachine culling_machine() const override { return machine_; }
+
+private:
+    std::string describe_event(const Event& e) const override;
+    int line_of(const Event& e) const override;
+    bool is_major(const Event& e) const override;
+    algo::CullingMachine machine_;
 };
 
-// Makes the session of a culling lesson (family culling), by its algorithm's variant.
-std::unique_ptr<Session> make_culling_session(Lesson lesson, PlayerOptions options);
+using BoundsSession = CullingSession<algo::HierarchyEvent, algo::Hierarchy>;
+using HierarchyCullSession = CullingSession<algo::HierarchyCullEvent, algo::HierarchyCull>;  // frustum, detail
+using OccluderSession = CullingSession<algo::OcclusionEvent, algo::OcclusionCull>;
+using HizSession = CullingSession<algo::HizEvent, algo::HizResult>;
+extern template class CullingSession<algo::HierarchyEvent, algo::Hierarchy>;
+extern template class CullingSession<algo::HierarchyCullEvent, algo::HierarchyCull>;
+extern template class CullingSession<algo::OcclusionEvent, algo::OcclusionCull>;
+extern template class CullingSession<algo::HizEvent, algo::HizResult>;
 
 }  // namespace hsr::viz

@@ -25,14 +25,14 @@ constexpr std::array<std::string_view, 12> sort_lines = {
     "  no Q left: draw R (back to front)",
 };
 
-DepthSortSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+}  // namespace
+
+DepthSortSession::RunType DepthSortSession::machine(const Lesson& lesson) {
     std::vector<SortPolygon> polygons = sort_polygons(lesson.scene);
     DepthSortView initial;
     initial.polygons = polygons;
-    return DepthSortSession::PlayerType(depth_sort(std::move(polygons)), std::move(initial), options);
+    return {depth_sort(std::move(polygons)), std::move(initial)};
 }
-
-}  // namespace
 
 void reduce(DepthSortView& v, const DepthSortEvent& event) {
     std::visit(overloaded{
@@ -76,11 +76,12 @@ std::size_t approx_bytes(const DepthSortView& v) {
     return b;
 }
 
-DepthSortSession::DepthSortSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+DepthSortSession::DepthSortSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
 std::span<const std::string_view> DepthSortSession::pseudocode() const { return sort_lines; }
 
-std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { return describe(e); }
+std::string DepthSortSession::sentence_of(const DepthSortEvent& e, const DepthSortView&) { return describe(e); }
+std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { return sentence_of(e, view()); }
 
 int DepthSortSession::line_of(const DepthSortEvent& event) const {
     return std::visit(overloaded{
@@ -108,5 +109,11 @@ int DepthSortSession::line_of(const DepthSortEvent& event) const {
 
 // A Step is a pair, a move, a split or a drawing; the tests within a pair are micro-steps.
 bool DepthSortSession::is_major(const DepthSortEvent& e) const { return !std::holds_alternative<TestTried>(e); }
+
+const FamilyFacts DepthSortSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "depth-sort"); },
+    .random_scene = &random_triangle_scene,
+    .measure = &analysis::measure_hidden_surfaces,
+};
 
 }  // namespace hsr::viz

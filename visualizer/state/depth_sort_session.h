@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "depth_sort/depth_sort.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -26,6 +27,9 @@ std::size_t approx_bytes(const DepthSortView& view);
 class DepthSortSession : public PlayerSession<algo::DepthSortEvent, algo::DepthSortResult, DepthSortView> {
 public:
     explicit DepthSortSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::DepthSortEvent& e, const DepthSortView& view);  // describe(e), as the view after it names things
     std::span<const std::string_view> pseudocode() const override;
 
 private:

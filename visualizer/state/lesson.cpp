@@ -57,10 +57,10 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     if (lesson.difficulty < 1 || lesson.difficulty > 5)
         r.fail(root.get("difficulty"), "difficulty", "expected a difficulty from 1 to 5");
     lesson.prerequisites = r.strings(root, "prerequisites", "");
-    lesson.splitter = r.text(root, "splitter", "", "first");
-    if (lesson.splitter != "first" && lesson.splitter != "balanced" && lesson.splitter != "fewest-splits" &&
-        lesson.splitter != "weighted")
-        r.fail(root.get("splitter"), "splitter", "expected first, balanced, fewest-splits or weighted");
+    if (const auto rule = algo::parse_splitter_rule(r.text(root, "splitter", "", "first")))
+        lesson.splitter = *rule;
+    else
+        r.fail(root.get("splitter"), "splitter", "expected " + std::string(algo::splitter_rule_names));
     lesson.cull = r.text(root, "cull", "", lesson.cull);
     try {
         algo::parse_stages(lesson.cull);

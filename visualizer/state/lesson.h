@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bsp/bsp_events.h"
 #include "registry.h"
 #include "state/chapters.h"
 #include "core/screen_polygon.h"
@@ -36,7 +37,7 @@ struct Lesson {
     algo::AlgorithmInfo algorithm;
     int difficulty = 1;
     std::vector<std::string> prerequisites;
-    std::string splitter = "first";  // BSP lessons: first, balanced, fewest-splits or weighted
+    algo::SplitterRule splitter = algo::SplitterRule::first;  // BSP lessons
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
@@ -44,6 +45,12 @@ struct Lesson {
     std::vector<Chapter> chapters;                             // state/chapters.h
     algo::Scene scene;
 };
+
+// Which of its family's machines the lesson plays (M is the family's type in algo::Machine).
+template <class M>
+M machine_of(const Lesson& lesson) {
+    return std::get<M>(lesson.algorithm.machine);
+}
 
 // The lesson's scene with its camera's aspect set to the lesson's grid (the pixel lessons render into it).
 algo::Scene grid_scene(const Lesson& lesson);

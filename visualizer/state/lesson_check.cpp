@@ -1,6 +1,7 @@
 #include "state/lesson_check.h"
 
 #include "analysis/expect_check.h"
+#include "state/families.h"
 #include "state/lesson_script.h"
 
 namespace hsr::viz {

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/overloaded.h"
+#include "scene/random_scene.h"
 
 namespace hsr::viz {
 namespace {
@@ -38,15 +39,15 @@ constexpr std::array<std::string_view, 14> render_lines = {
     "        if (R' <> empty) render(R')",
 };
 
-PvsSession::PlayerType make_pvs_player(const Lesson& lesson, PlayerOptions options) {
+}  // namespace
+
+PvsSession::RunType PvsSession::machine(const Lesson& lesson) {
     auto world = portal_world(lesson.scene);
     PvsView initial;
     initial.world = world;
     initial.matrix.assign(world->pvs.matrix.size(), 0);
-    return PvsSession::PlayerType(build_pvs(&world->model), std::move(initial), options);
+    return {build_pvs(&world->model), std::move(initial)};
 }
-
-}  // namespace
 
 std::shared_ptr<const PortalWorld> portal_world(const Scene& scene) {
     auto w = std::make_shared<PortalWorld>();
@@ -81,11 +82,12 @@ std::size_t approx_bytes(const PvsView& v) {
     return sizeof(PvsView) + v.matrix.capacity() + v.tree.capacity() * sizeof(StabNode) + v.sequence.capacity() * 4;
 }
 
-PvsSession::PvsSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_pvs_player(lesson, options)) {}
+PvsSession::PvsSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
 std::span<const std::string_view> PvsSession::pseudocode() const { return pvs_lines; }
 
-std::string PvsSession::describe_event(const PvsEvent& e) const { return describe(e, view().world->model); }
+std::string PvsSession::sentence_of(const PvsEvent& e, const PvsView& view) { return describe(e, view.world->model); }
+std::string PvsSession::describe_event(const PvsEvent& e) const { return sentence_of(e, view()); }
 
 int PvsSession::line_of(const PvsEvent& event) const {
     return std::visit(overloaded{
@@ -151,28 +153,31 @@ std::size_t approx_bytes(const PortalView& v) {
 
 namespace {
 
-PortalRenderSession::PlayerType render_player(std::shared_ptr<const PortalWorld> world, const Camera& camera, bool bbox,
-                                              PlayerOptions options) {
+PortalRenderSession::RunType render_run(std::shared_ptr<const PortalWorld> world, const Camera& camera, bool bbox) {
     PortalView initial;
     initial.world = world;
     initial.camera = camera;
     initial.visited.assign(world->model.cells.size(), 0);
     initial.fate.assign(world->model.polygons.size(), PolygonFate::untouched);
-    return PortalRenderSession::PlayerType(
-        portal_render(&world->model, &world->bsp, &world->pvs, camera, {.bounding_box_frusta = bbox}), std::move(initial), options);
+    return {portal_render(&world->model, &world->bsp, &world->pvs, camera, {.bounding_box_frusta = bbox}), std::move(initial)};
 }
 
 }  // namespace
 
-PortalRenderSession::PortalRenderSession(Lesson lesson, bool bounding_box_frusta, PlayerOptions options)
-    : PlayerSession(lesson, [&] {
-          auto world = portal_world(lesson.scene);
-          return render_player(world, world->model.camera, bounding_box_frusta, options);
-      }()),
-      world_(view().world), bbox_(bounding_box_frusta), options_(options) {}
+PortalRenderSession::RunType PortalRenderSession::machine(const Lesson& lesson) {
+    auto world = portal_world(lesson.scene);
+    return render_run(world, world->model.camera, machine_of<PortalMachine>(lesson) == PortalMachine::render_bbox);
+}
+
+PortalRenderSession::PortalRenderSession(Lesson lesson, PlayerOptions options)
+    : PlayerSession(lesson, machine(lesson), options),
+      world_(view().world),
+      bbox_(machine_of<PortalMachine>(lesson) == PortalMachine::render_bbox),
+      options_(options) {}
 
 PortalRenderSession::PlayerType PortalRenderSession::make_player(const Camera& camera) const {
-    return render_player(world_, camera, bbox_, options_);
+    auto run = render_run(world_, camera, bbox_);
+    return PlayerType(std::move(run.machine), std::move(run.initial), options_);
 }
 
 void PortalRenderSession::move_eye(Vec2 plan) {
@@ -185,7 +190,8 @@ void PortalRenderSession::move_eye(Vec2 plan) {
 
 std::span<const std::string_view> PortalRenderSession::pseudocode() const { return render_lines; }
 
-std::string PortalRenderSession::describe_event(const PortalEvent& e) const { return describe(e, world_->model); }
+std::string PortalRenderSession::sentence_of(const PortalEvent& e, const PortalView& view) { return describe(e, view.world->model); }
+std::string PortalRenderSession::describe_event(const PortalEvent& e) const { return sentence_of(e, view()); }
 
 int PortalRenderSession::line_of(const PortalEvent& event) const {
     return std::visit(overloaded{
@@ -207,5 +213,13 @@ int PortalRenderSession::line_of(const PortalEvent& event) const {
 bool PortalRenderSession::is_major(const PortalEvent& e) const {
     return !std::holds_alternative<CellPolygonCulled>(e) && !std::holds_alternative<CellPolygonDrawn>(e);
 }
+
+const FamilyFacts PvsSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.pvs.empty(); },
+    .random_scene = [](std::uint32_t seed, bool) -> std::optional<algo::Scene> { return algo::cell_maze({.rows = 4, .cols = 4, .seed = seed}); },
+    .measure = &analysis::measure_portals,
+};
+
+const FamilyFacts PortalRenderSession::facts = PvsSession::facts;  // the same scenes and measurements as the pre-processing
 
 }  // namespace hsr::viz

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "portals/portal_render.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -63,6 +64,9 @@ std::size_t approx_bytes(const PortalView& view);
 class PvsSession : public PlayerSession<algo::PvsEvent, algo::Pvs, PvsView> {
 public:
     explicit PvsSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::PvsEvent& e, const PvsView& view);  // describe(e) naming the cells
     std::span<const std::string_view> pseudocode() const override;
 
 private:
@@ -73,7 +77,10 @@ private:
 
 class PortalRenderSession : public PlayerSession<algo::PortalEvent, algo::PortalRenderResult, PortalView> {
 public:
-    PortalRenderSession(Lesson lesson, bool bounding_box_frusta, PlayerOptions options = {});
+    explicit PortalRenderSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::PortalEvent& e, const PortalView& view);  // describe(e) naming the cells
     std::span<const std::string_view> pseudocode() const override;
     bool bounding_box_frusta() const { return bbox_; }
     // Stand the eye at a new plan point (keeping its height and view direction) and rerun portal_render.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/measurement.h"
 #include "registry.h"
 
 namespace hsr::viz {
@@ -27,5 +28,9 @@ std::vector<Preset> extreme_presets(const algo::AlgorithmInfo& algorithm, const 
 // family with none (z-merge).
 bool has_random_scene(const algo::AlgorithmInfo& algorithm);
 std::optional<std::string> random_scene_toml(const algo::AlgorithmInfo& algorithm, bool two_d, std::uint32_t seed);
+
+// The report for the algorithm being played (R in the window): its family's rows of `hsrviz report`, measured now
+// with the quick settings (small scenes, three repeats), so a student sees error against run time beside the steps.
+std::vector<analysis::Measurement> family_report(const algo::AlgorithmInfo& algorithm, const std::string& scenes_dir);
 
 }  // namespace hsr::viz

@@ -23,25 +23,28 @@ constexpr std::array<std::string_view, 10> cast_lines = {
     "    p sees p -> nearest_primitive",
 };
 
-RayCastSession::PlayerType make_player(const Scene& scene, Viewport grid, Acceleration a, PlayerOptions options) {
+}  // namespace
+
+RayCastSession::RunType RayCastSession::machine(const Lesson& lesson) {
+    const Scene scene = grid_scene(lesson);
+    const Viewport grid = lesson.grid;
+    const auto a = machine_of<Acceleration>(lesson);
     RayView initial;
     initial.viewport = grid;
     initial.acceleration = a;
     initial.owner.assign(std::size_t(grid.width) * std::size_t(grid.height), -1);
     if (a == Acceleration::grid) initial.grid = std::make_shared<const Grid>(ray_cast_grid(scene));  // the machine's cells
-    return RayCastSession::PlayerType(ray_cast(scene, {.viewport = grid, .acceleration = a, .detail = RayDetail::test}),
-                                      std::move(initial), options);
+    return {ray_cast(scene, {.viewport = grid, .acceleration = a, .detail = RayDetail::test}), std::move(initial)};
 }
 
-}  // namespace
-
 RayCastSession::RayCastSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(grid_scene(lesson), lesson.grid, Acceleration(lesson.algorithm.variant), options)),
+    : PlayerSession(lesson, machine(lesson), options),
       scene_(grid_scene(lesson)) {}
 
 std::span<const std::string_view> RayCastSession::pseudocode() const { return cast_lines; }
 
-std::string RayCastSession::describe_event(const RayCastEvent& e) const { return describe(e); }
+std::string RayCastSession::sentence_of(const RayCastEvent& e, const RayView&) { return describe(e); }
+std::string RayCastSession::describe_event(const RayCastEvent& e) const { return sentence_of(e, view()); }
 
 int RayCastSession::line_of(const RayCastEvent& event) const {
     return std::visit(overloaded{
@@ -62,5 +65,13 @@ bool RayCastSession::is_major(const RayCastEvent& e) const {
     return std::holds_alternative<RayFinished>(e) || std::holds_alternative<CastFinished>(e) ||
            std::holds_alternative<CastStepBoundReached>(e);
 }
+
+const FamilyFacts RayCastSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) {  // the reference every image is measured against
+        return !s.expect.image.empty() || expects_from_renderer(s, "raycast");
+    },
+    .random_scene = &random_triangle_scene,
+    .measure = &analysis::measure_hidden_surfaces,
+};
 
 }  // namespace hsr::viz

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "state/raycast_view.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -10,6 +11,9 @@ namespace hsr::viz {
 class RayCastSession : public PlayerSession<algo::RayCastEvent, algo::RayCastResult, RayView> {
 public:
     explicit RayCastSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::RayCastEvent& e, const RayView& view);  // describe(e), as the view after it names things
     std::span<const std::string_view> pseudocode() const override;
     const algo::Scene& scene() const { return scene_; }  // the lesson's, with the grid's aspect
 

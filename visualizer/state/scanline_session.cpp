@@ -24,21 +24,21 @@ constexpr std::array<std::string_view, 11> scan_lines = {
     "done",
 };
 
-ScanLineSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+}  // namespace
+
+ScanLineSession::RunType ScanLineSession::machine(const Lesson& lesson) {
     const Scene scene = grid_scene(lesson);
     auto polygons = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     ScanView initial = initial_view(polygons, lesson.grid);
-    return ScanLineSession::PlayerType(scan_line(*polygons, scan_line_options(scene, lesson.grid, lesson.depth_format)),
-                                       std::move(initial), options);
+    return {scan_line(*polygons, scan_line_options(scene, lesson.grid, lesson.depth_format)), std::move(initial)};
 }
 
-}  // namespace
-
-ScanLineSession::ScanLineSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+ScanLineSession::ScanLineSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
 std::span<const std::string_view> ScanLineSession::pseudocode() const { return scan_lines; }
 
-std::string ScanLineSession::describe_event(const ScanLineEvent& e) const { return describe(e); }
+std::string ScanLineSession::sentence_of(const ScanLineEvent& e, const ScanView&) { return describe(e); }
+std::string ScanLineSession::describe_event(const ScanLineEvent& e) const { return sentence_of(e, view()); }
 
 int ScanLineSession::line_of(const ScanLineEvent& event) const {
     return std::visit(overloaded{
@@ -59,5 +59,11 @@ bool ScanLineSession::is_major(const ScanLineEvent& e) const {
     return std::holds_alternative<ScanLineStarted>(e) || std::holds_alternative<EdgeTableBuilt>(e) ||
            std::holds_alternative<ScanFinished>(e) || std::holds_alternative<ScanStepBoundReached>(e);
 }
+
+const FamilyFacts ScanLineSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "scanline"); },
+    .random_scene = &random_triangle_scene,
+    .measure = &analysis::measure_zbuffer,
+};
 
 }  // namespace hsr::viz

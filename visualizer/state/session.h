@@ -49,11 +49,22 @@ private:
     Lesson lesson_;
 };
 
+// A lesson's machine and the view it starts from: what a session plays, and what a trace drains. Each family's
+// session makes it in one place, its static `machine(const Lesson&)`.
+template <class Event, class Result, class View>
+struct Run {
+    algo::Steps<Event, Result> machine;
+    View initial;
+};
+
 // The player-backed part every family shares; a family says how to describe an event, which pseudocode line it
 // belongs to and whether it is a Step.
 template <class Event, class Result, class View>
 class PlayerSession : public Session {
 public:
+    using EventType = Event;
+    using ViewType = View;
+    using RunType = Run<Event, Result, View>;
     using PlayerType = Player<Event, Result, View>;
     PlayerType& player() { return player_; }
     const PlayerType& player() const { return player_; }
@@ -79,6 +90,8 @@ public:
 
 protected:
     PlayerSession(Lesson lesson, PlayerType player) : Session(std::move(lesson)), player_(std::move(player)) {}
+    PlayerSession(Lesson lesson, RunType run, PlayerOptions options)
+        : PlayerSession(std::move(lesson), PlayerType(std::move(run.machine), std::move(run.initial), options)) {}
     // A rerun with changed inputs: the new machine's player, at the same step where that step still exists.
     void replace_player(PlayerType player) {
         const std::size_t k = player_.cursor();
@@ -93,8 +106,5 @@ protected:
 private:
     PlayerType player_;
 };
-
-// The session for a lesson, by its algorithm's family. Throws what loading the machine throws (InvalidInput).
-std::unique_ptr<Session> make_session(Lesson lesson, PlayerOptions options = {});
 
 }  // namespace hsr::viz

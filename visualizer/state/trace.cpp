@@ -4,18 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bsp/bsp_scene.h"
-#include "clipping/clip_scene.h"
-#include "culling/backface.h"
-#include "raycast/ray_cast.h"
-#include "zbuffer/scanline.h"
-#include "depth_sort/depth_sort.h"
-#include "zbuffer/z_merge.h"
-#include "zbuffer/zbuffer_fill.h"
-#include "state/bsp_view.h"
-#include "state/culling_session.h"
-#include "state/portal_session.h"
-#include "state/zmerge_session.h"
+#include "state/families.h"
 
 namespace glm {
 // Points are written as [x, y, z, w].
@@ -270,121 +259,24 @@ struct KindsOf<std::variant<E...>> {
 }  // namespace
 
 std::vector<std::string> event_kinds(const Lesson& lesson) {
-    const int v = lesson.algorithm.variant;
-    switch (lesson.algorithm.family) {
-        case algo::Family::clipping: return KindsOf<algo::ClipEvent>::list();
-        case algo::Family::bsp: return KindsOf<algo::BspEvent>::list();
-        case algo::Family::backface: return KindsOf<algo::CullEvent>::list();
-        case algo::Family::zbuffer: return KindsOf<algo::ZBufferEvent>::list();
-        case algo::Family::raycast: return KindsOf<algo::RayCastEvent>::list();
-        case algo::Family::scanline: return KindsOf<algo::ScanLineEvent>::list();
-        case algo::Family::zmerge: return KindsOf<algo::ZMergeEvent>::list();
-        case algo::Family::depth_sort: return KindsOf<algo::DepthSortEvent>::list();
-        case algo::Family::portals: return v == 0 ? KindsOf<algo::PvsEvent>::list() : KindsOf<algo::PortalEvent>::list();
-        case algo::Family::culling:
-            return v == 0 ? KindsOf<algo::HierarchyEvent>::list()
-                   : v <= 2 ? KindsOf<algo::HierarchyCullEvent>::list()
-                   : v == 3 ? KindsOf<algo::OcclusionEvent>::list()
-                            : KindsOf<algo::HizEvent>::list();
-    }
-    return {};
+    return with_family(lesson.algorithm, [](auto family) {
+        return KindsOf<typename decltype(family)::Session::EventType>::list();
+    });
 }
 
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
-    switch (lesson.algorithm.family) {
-        case algo::Family::clipping: {
-            const algo::ClipJob job = algo::clip_job(lesson.scene);
-            auto machine = algo::clip_scene(job, algo::ClipAlgorithm(lesson.algorithm.variant));
-            return write_trace(machine, [&](const algo::ClipEvent& e) { return algo::describe(e, job.space); }, out);
-        }
-        case algo::Family::bsp: {
-            const auto rule = lesson.splitter == "balanced"        ? algo::SplitterRule::balanced
-                              : lesson.splitter == "fewest-splits" ? algo::SplitterRule::fewest_splits
-                              : lesson.splitter == "weighted"      ? algo::SplitterRule::weighted
-                                                                   : algo::SplitterRule::first;
-            const algo::BspJob job = algo::bsp_job(lesson.scene, rule);
-            BspView view = initial_view(job);  // folded alongside, so sentences name split parts as the window does
-            auto machine = algo::bsp_scene(job);
-            return write_trace(
-                machine,
-                [&](const algo::BspEvent& e) {
-                    reduce(view, e);
-                    return algo::describe(e, namer(view));
-                },
-                out);
-        }
-        case algo::Family::backface: {
-            auto machine = algo::cull_back_faces(algo::faces_of(lesson.scene), lesson.scene.camera,
-                                                 algo::BackfaceTest(lesson.algorithm.variant));
-            return write_trace(machine, [](const algo::CullEvent& e) { return algo::describe(e); }, out);
-        }
-        case algo::Family::zbuffer: {
-            const algo::Scene scene = grid_scene(lesson);
-            auto machine = algo::zbuffer_fill(algo::project_polygons(scene, lesson.grid),
-                                              algo::zbuffer_options(scene, lesson.grid, lesson.depth_format));
-            return write_trace(machine, [&](const algo::ZBufferEvent& e) { return algo::describe(e, lesson.depth_format); }, out);
-        }
-        case algo::Family::raycast: {
-            const algo::Scene scene = grid_scene(lesson);
-            auto machine = algo::ray_cast(scene, {.viewport = lesson.grid, .acceleration = algo::Acceleration(lesson.algorithm.variant)});
-            return write_trace(machine, [](const algo::RayCastEvent& e) { return algo::describe(e); }, out);
-        }
-        case algo::Family::scanline: {
-            const algo::Scene scene = grid_scene(lesson);
-            auto machine = algo::scan_line(algo::project_polygons(scene, lesson.grid),
-                                           algo::scan_line_options(scene, lesson.grid, lesson.depth_format));
-            return write_trace(machine, [](const algo::ScanLineEvent& e) { return algo::describe(e); }, out);
-        }
-        case algo::Family::depth_sort: {
-            auto machine = algo::depth_sort(algo::sort_polygons(lesson.scene));
-            return write_trace(machine, [](const algo::DepthSortEvent& e) { return algo::describe(e); }, out);
-        }
-        case algo::Family::culling: {
-            const auto world = culling_world(lesson);
-            const auto say = [](const auto& e) { return algo::describe(e); };
-            const algo::Hierarchy* h = &world->hierarchy;
-            switch (lesson.algorithm.variant) {
-                case 0: {
-                    auto machine = algo::build_hierarchy(h->boxes, {.kind = h->kind});
-                    return write_trace(machine, say, out);
-                }
-                case 1:
-                case 2: {
-                    const algo::HierarchyCullOptions o = lesson.algorithm.variant == 1
-                                                             ? algo::HierarchyCullOptions{.frustum = true}
-                                                             : algo::HierarchyCullOptions{.frustum = false, .detail_pixels = world->detail_pixels,
-                                                                                          .viewport_height = lesson.grid.height};
-                    auto machine = algo::cull_hierarchy(h, world->scene.camera, o);
-                    return write_trace(machine, say, out);
-                }
-                case 3: {
-                    auto machine = algo::occlusion_cull(&world->scene, h, {.max_occluders = 4});
-                    return write_trace(machine, say, out);
-                }
-                default: {
-                    auto machine = algo::hiz_render(&world->scene, h, world->zbuffer);
-                    return write_trace(machine, say, out);
-                }
-            }
-        }
-        case algo::Family::portals: {
-            const auto world = portal_world(lesson.scene);
-            const auto say = [&](const auto& e) { return algo::describe(e, world->model); };
-            if (lesson.algorithm.variant == 0) {
-                auto machine = algo::build_pvs(&world->model);
-                return write_trace(machine, say, out);
-            }
-            auto machine = algo::portal_render(&world->model, &world->bsp, &world->pvs, world->model.camera,
-                                               {.bounding_box_frusta = lesson.algorithm.variant == 2});
-            return write_trace(machine, say, out);
-        }
-        case algo::Family::zmerge: {
-            const ZMergeView parts = zmerge_initial_view(lesson);  // the two parts' buffers, as the window builds them
-            auto machine = algo::z_merge_steps(*parts.a, *parts.b);
-            return write_trace(machine, [](const algo::ZMergeEvent& e) { return algo::describe(e); }, out);
-        }
-    }
-    return {};
+    return with_family(lesson.algorithm, [&](auto family) {
+        using S = typename decltype(family)::Session;
+        // the machine the window plays, its view folded alongside so that sentences name things as the window does
+        auto run = S::machine(lesson);
+        return write_trace(
+            run.machine,
+            [&](const auto& e) {
+                reduce(run.initial, e);
+                return S::sentence_of(e, run.initial);
+            },
+            out);
+    });
 }
 
 }  // namespace hsr::viz

@@ -30,11 +30,12 @@ constexpr std::array<std::string_view, 10> fill_lines = {
     "      z = z + (-a/c)                   /* forward difference */",
 };
 
-ZBufferSession::PlayerType make_player(const Scene& scene, Viewport grid, DepthFormat format, PlayerOptions options) {
+// The fill of a scene (the lesson's, or as edited) into the grid, pixel by pixel.
+ZBufferSession::RunType fill_run(const Scene& scene, Viewport grid, DepthFormat format) {
     const ZBufferOptions o = zbuffer_options(scene, grid, format, EventDetail::pixel);
     auto polygons = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, grid));
     ZView initial = initial_view(polygons, o);
-    return ZBufferSession::PlayerType(zbuffer_fill(*polygons, o), std::move(initial), options);
+    return {zbuffer_fill(*polygons, o), std::move(initial)};
 }
 
 // How many pixels the finished fill shows differently from the ray cast through the same pixel centres.
@@ -48,8 +49,12 @@ std::size_t unlike_ray_cast(const Scene& scene, Viewport grid, DepthFormat forma
 
 }  // namespace
 
+ZBufferSession::RunType ZBufferSession::machine(const Lesson& lesson) {
+    return fill_run(grid_scene(lesson), lesson.grid, lesson.depth_format);
+}
+
 ZBufferSession::ZBufferSession(Lesson lesson, PlayerOptions options)
-    : PlayerSession(lesson, make_player(grid_scene(lesson), lesson.grid, lesson.depth_format, options)),
+    : PlayerSession(lesson, machine(lesson), options),
       scene_(grid_scene(lesson)),
       format_(lesson.depth_format),
       options_(options),
@@ -132,7 +137,8 @@ bool ZBufferSession::redo() {
 }
 
 void ZBufferSession::rerun() {
-    replace_player(make_player(scene_, lesson().grid, format_, options_));
+    auto run = fill_run(scene_, lesson().grid, format_);
+    replace_player(PlayerType(std::move(run.machine), std::move(run.initial), options_));
     unlike_ray_cast_ = unlike_ray_cast(scene_, lesson().grid, format_);
 }
 
@@ -150,7 +156,8 @@ void ZBufferSession::set_range(DepthRange r) {
 
 std::span<const std::string_view> ZBufferSession::pseudocode() const { return fill_lines; }
 
-std::string ZBufferSession::describe_event(const ZBufferEvent& e) const { return describe(e, format_); }
+std::string ZBufferSession::sentence_of(const ZBufferEvent& e, const ZView& view) { return describe(e, view.format); }
+std::string ZBufferSession::describe_event(const ZBufferEvent& e) const { return sentence_of(e, view()); }
 
 int ZBufferSession::line_of(const ZBufferEvent& event) const {
     return std::visit(overloaded{
@@ -173,5 +180,11 @@ bool ZBufferSession::is_major(const ZBufferEvent& e) const {
     return !std::holds_alternative<PixelTested>(e) && !std::holds_alternative<DepthWritten>(e) &&
            !std::holds_alternative<DepthTestFailed>(e);
 }
+
+const FamilyFacts ZBufferSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "zbuffer"); },
+    .random_scene = &random_triangle_scene,
+    .measure = &analysis::measure_zbuffer,
+};
 
 }  // namespace hsr::viz

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "state/edit_history.h"
+#include "state/family_facts.h"
 #include "state/session.h"
 #include "state/zbuffer_view.h"
 
@@ -17,6 +18,9 @@ namespace hsr::viz {
 class ZBufferSession : public PlayerSession<algo::ZBufferEvent, algo::FrameDepth, ZView> {
 public:
     explicit ZBufferSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::ZBufferEvent& e, const ZView& view);  // describe(e)
     std::span<const std::string_view> pseudocode() const override;
 
     algo::DepthFormat format() const { return view().format; }

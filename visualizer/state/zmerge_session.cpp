@@ -37,13 +37,13 @@ ZMergeView zmerge_initial_view(const Lesson& lesson) {
 
 namespace {
 
-ZMergeSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
+}  // namespace
+
+ZMergeSession::RunType ZMergeSession::machine(const Lesson& lesson) {
     ZMergeView initial = zmerge_initial_view(lesson);
     auto merge = z_merge_steps(*initial.a, *initial.b);
-    return ZMergeSession::PlayerType(std::move(merge), std::move(initial), options);
+    return {std::move(merge), std::move(initial)};
 }
-
-}  // namespace
 
 void reduce(ZMergeView& v, const ZMergeEvent& event) {
     std::visit(overloaded{
@@ -61,11 +61,12 @@ void reduce(ZMergeView& v, const ZMergeEvent& event) {
 
 std::size_t approx_bytes(const ZMergeView& v) { return sizeof(ZMergeView) + v.merged.capacity() * sizeof(std::int32_t); }
 
-ZMergeSession::ZMergeSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+ZMergeSession::ZMergeSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
 std::span<const std::string_view> ZMergeSession::pseudocode() const { return merge_lines; }
 
-std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return describe(e); }
+std::string ZMergeSession::sentence_of(const ZMergeEvent& e, const ZMergeView&) { return describe(e); }
+std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return sentence_of(e, view()); }
 
 int ZMergeSession::line_of(const ZMergeEvent& event) const {
     return std::visit(overloaded{[](const PixelMerged&) { return 2; }, [](const MergeFinished&) { return 4; }},
@@ -77,5 +78,11 @@ bool ZMergeSession::is_major(const ZMergeEvent& e) const {
     const auto* p = std::get_if<PixelMerged>(&e);
     return !p || p->y == 0;
 }
+
+const FamilyFacts ZMergeSession::facts = {
+    .speaks_to = [](const algo::Scene&, const algo::AlgorithmInfo&) { return false; },
+    .random_scene = &no_random_scene,
+    .measure = &analysis::measure_zbuffer,
+};
 
 }  // namespace hsr::viz

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "state/family_facts.h"
 #include "state/session.h"
 #include "zbuffer/z_merge.h"
 
@@ -30,6 +31,9 @@ std::size_t approx_bytes(const ZMergeView& view);
 class ZMergeSession : public PlayerSession<algo::ZMergeEvent, algo::FrameDepth, ZMergeView> {
 public:
     explicit ZMergeSession(Lesson lesson, PlayerOptions options = {});
+    static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
+    static const FamilyFacts facts;  // for the presets and the report
+    static std::string sentence_of(const algo::ZMergeEvent& e, const ZMergeView& view);  // describe(e), as the view after it names things
     std::span<const std::string_view> pseudocode() const override;
 
 private:

@@ -1,4 +1,4 @@
-#include "panels/cull_panels.h"
+#include "panels/backface_panels.h"
 
 #include <imgui.h>
 
@@ -6,9 +6,9 @@
 
 namespace hsr::viz {
 
-void cull_state_panel(const CullSession& s, const PanelLayout& l) {
+void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
     place_in_column(l, 2);
-    const CullView& v = s.view();
+    const BackfaceView& v = s.view();
     ImGui::Begin("Faces", nullptr, fixed);
     ImGui::TextColored(dim_text, "%d kept · %d culled · %d to test (%s)", v.kept, v.culled,
                        int(v.faces.size()) - v.kept - v.culled, std::string(algo::to_string(v.test)).c_str());

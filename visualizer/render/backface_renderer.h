@@ -7,11 +7,11 @@
 #include "render/label.h"
 #include "render/line_batch.h"
 #include "scene/scene.h"
-#include "state/cull_view.h"
+#include "state/backface_view.h"
 
 namespace hsr::viz {
 
-void draw_cull_view(const CullView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
-void cull_view_bounds(const CullView& view, glm::vec3& centre, float& radius);
+void draw_backface_view(const BackfaceView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
+void backface_view_bounds(const BackfaceView& view, glm::vec3& centre, float& radius);
 
 }  // namespace hsr::viz

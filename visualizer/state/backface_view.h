@@ -17,7 +17,7 @@ struct FaceView {
     double value = 0;                    // v̂·n̂, N·eye + D or the screen area
 };
 
-struct CullView {
+struct BackfaceView {
     algo::BackfaceTest test = algo::BackfaceTest::view_vector;
     algo::Vec3 eye{0};
     std::vector<FaceView> faces;
@@ -25,8 +25,8 @@ struct CullView {
     int kept = 0, culled = 0;
 };
 
-CullView initial_view(const std::vector<algo::Face>& faces, const algo::Camera& camera, algo::BackfaceTest test);
-void reduce(CullView& view, const algo::CullEvent& event);
-std::size_t approx_bytes(const CullView& view);
+BackfaceView initial_view(const std::vector<algo::Face>& faces, const algo::Camera& camera, algo::BackfaceTest test);
+void reduce(BackfaceView& view, const algo::CullEvent& event);
+std::size_t approx_bytes(const BackfaceView& view);
 
 }  // namespace hsr::viz

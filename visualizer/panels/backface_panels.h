@@ -2,10 +2,10 @@
 #pragma once
 
 #include "panels/lesson_panels.h"
-#include "state/cull_session.h"
+#include "state/backface_session.h"
 
 namespace hsr::viz {
 
-void cull_state_panel(const CullSession& s, const PanelLayout& layout);
+void backface_state_panel(const BackfaceSession& s, const PanelLayout& layout);
 
 }  // namespace hsr::viz

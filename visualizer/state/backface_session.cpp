@@ -1,4 +1,4 @@
-#include "state/cull_session.h"
+#include "state/backface_session.h"
 
 #include <array>
 
@@ -35,19 +35,18 @@ constexpr std::array<std::string_view, 6> screen_winding_lines = {
     "    cull P;",
 };
 
-CullSession::PlayerType make_player(const Lesson& lesson, PlayerOptions options) {
-    const auto test = BackfaceTest(lesson.algorithm.variant);
-    std::vector<Face> faces = faces_of(lesson.scene);
-    CullView initial = initial_view(faces, lesson.scene.camera, test);
-    return CullSession::PlayerType(cull_back_faces(std::move(faces), lesson.scene.camera, test), std::move(initial),
-                                   options);
-}
-
 }  // namespace
 
-CullSession::CullSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, make_player(lesson, options)) {}
+BackfaceSession::RunType BackfaceSession::machine(const Lesson& lesson) {
+    const auto test = machine_of<BackfaceTest>(lesson);
+    std::vector<Face> faces = faces_of(lesson.scene);
+    BackfaceView initial = initial_view(faces, lesson.scene.camera, test);
+    return {cull_back_faces(std::move(faces), lesson.scene.camera, test), std::move(initial)};
+}
 
-std::span<const std::string_view> CullSession::pseudocode() const {
+BackfaceSession::BackfaceSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
+
+std::span<const std::string_view> BackfaceSession::pseudocode() const {
     switch (view().test) {
         case BackfaceTest::view_vector: return view_vector_lines;
         case BackfaceTest::plane_equation: return plane_equation_lines;
@@ -56,9 +55,10 @@ std::span<const std::string_view> CullSession::pseudocode() const {
     return {};
 }
 
-std::string CullSession::describe_event(const CullEvent& e) const { return describe(e); }
+std::string BackfaceSession::sentence_of(const CullEvent& e, const BackfaceView&) { return describe(e); }
+std::string BackfaceSession::describe_event(const CullEvent& e) const { return sentence_of(e, view()); }
 
-int CullSession::line_of(const CullEvent& event) const {
+int BackfaceSession::line_of(const CullEvent& event) const {
     return std::visit(overloaded{
                           [](const FaceTested& e) { return e.facing == Facing::front ? 3 : 5; },
                           [](const CullingFinished&) { return 0; },
@@ -66,6 +66,12 @@ int CullSession::line_of(const CullEvent& event) const {
                       event);
 }
 
-bool CullSession::is_major(const CullEvent&) const { return true; }  // one event per polygon: every one a Step
+bool BackfaceSession::is_major(const CullEvent&) const { return true; }  // one event per polygon: every one a Step
+
+const FamilyFacts BackfaceSession::facts = {
+    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.cull.empty(); },
+    .random_scene = &random_triangle_scene,
+    .measure = &analysis::measure_culling,
+};
 
 }  // namespace hsr::viz

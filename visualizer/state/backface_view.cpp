@@ -1,4 +1,4 @@
-#include "state/cull_view.h"
+#include "state/backface_view.h"
 
 #include "core/overloaded.h"
 
@@ -6,8 +6,8 @@ namespace hsr::viz {
 
 using namespace hsr::algo;
 
-CullView initial_view(const std::vector<Face>& faces, const Camera& camera, BackfaceTest test) {
-    CullView v;
+BackfaceView initial_view(const std::vector<Face>& faces, const Camera& camera, BackfaceTest test) {
+    BackfaceView v;
     v.test = test;
     v.eye = camera.eye;
     for (const Face& f : faces) {
@@ -18,7 +18,7 @@ CullView initial_view(const std::vector<Face>& faces, const Camera& camera, Back
     return v;
 }
 
-void reduce(CullView& v, const CullEvent& event) {
+void reduce(BackfaceView& v, const CullEvent& event) {
     std::visit(overloaded{
                    [&](const FaceTested& e) {
                        for (std::size_t i = std::size_t(v.current + 1); i < v.faces.size(); ++i)
@@ -35,6 +35,6 @@ void reduce(CullView& v, const CullEvent& event) {
                event);
 }
 
-std::size_t approx_bytes(const CullView& v) { return sizeof v + v.faces.capacity() * sizeof(FaceView); }
+std::size_t approx_bytes(const BackfaceView& v) { return sizeof v + v.faces.capacity() * sizeof(FaceView); }
 
 }  // namespace hsr::viz

@@ -1,4 +1,4 @@
-#include "render/cull_renderer.h"
+#include "render/backface_renderer.h"
 
 #include <cstdio>
 
@@ -11,7 +11,7 @@ namespace hsr::viz {
 
 using algo::Vec3;
 
-void draw_cull_view(const CullView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
         const FaceView& f = v.faces[i];
         const std::vector<Vec3>& vs = *f.vertices;
@@ -45,7 +45,7 @@ void draw_cull_view(const CullView& v, const algo::Scene& scene, LineBatches& ou
     labels.push_back({glm::vec3(v.eye), "eye", palette::eye});
 }
 
-void cull_view_bounds(const CullView& v, glm::vec3& centre, float& radius) {
+void backface_view_bounds(const BackfaceView& v, glm::vec3& centre, float& radius) {
     Vec3 lo(1e300), hi(-1e300);
     for (const auto& f : v.faces)
         for (const Vec3& x : *f.vertices) lo = glm::min(lo, x), hi = glm::max(hi, x);

@@ -1,0 +1,57 @@
+#include "capture.h"
+
+#include <stb/stb_image_write.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "cli/commands.h"
+#include "render/gl.h"
+#include "scene/save_scene.h"
+
+namespace hsr::viz {
+namespace {
+
+std::vector<unsigned char> read_pixels(int w, int h) {
+    std::vector<unsigned char> pixels(std::size_t(w) * std::size_t(h) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    return pixels;  // GL's rows run bottom up
+}
+
+}  // namespace
+
+std::vector<unsigned char> half_size_pixels(int w, int h) {
+    const std::vector<unsigned char> full = read_pixels(w, h);
+    const int hw = w / 2, hh = h / 2;
+    std::vector<unsigned char> half(std::size_t(hw) * std::size_t(hh) * 4);
+    for (int y = 0; y < hh; ++y)
+        for (int x = 0; x < hw; ++x)
+            for (int c = 0; c < 4; ++c) {
+                int sum = 0;
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx)  // flip while shrinking
+                        sum += full[(std::size_t(h - 1 - (2 * y + dy)) * std::size_t(w) + std::size_t(2 * x + dx)) * 4 + std::size_t(c)];
+                half[(std::size_t(y) * std::size_t(hw) + std::size_t(x)) * 4 + std::size_t(c)] = static_cast<unsigned char>(sum / 4);
+            }
+    return half;
+}
+
+bool write_png(const std::string& path, int w, int h) {
+    const std::vector<unsigned char> pixels = read_pixels(w, h);
+    stbi_flip_vertically_on_write(1);
+    return stbi_write_png(path.c_str(), w, h, 4, pixels.data(), w * 4) != 0;
+}
+
+void export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
+    const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
+    std::filesystem::create_directories(dir);
+    const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
+    const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
+    const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
+                    static_cast<bool>(std::ofstream(scene) << algo::scene_toml(s.lesson().scene));
+    std::printf("hsrviz: %s %s, %s and %s\n", ok ? "exported" : "could not export all of", png.c_str(), trace.c_str(), scene.c_str());
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,147 @@
+#include "lesson_play.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/save_scene.h"
+
+namespace hsr::viz {
+
+void Lessonplay::load(const AppOptions& o) {
+    const std::size_t keep = session() ? session()->cursor() : 0;  // a reload stays at its step where it still exists
+    if (path.empty()) home = path = o.lesson_path, algorithm = o.algorithm;
+    watch.watch({path});
+    try {
+        const Lesson lesson = load_lesson(path, algorithm);
+        presets = extreme_presets(lesson.algorithm, data_dir() + "/assets/scenes/extreme");
+        if (session() && session()->lesson().algorithm.machine.index() != lesson.algorithm.machine.index()) report.clear();
+        std::error_code ec;
+        if (lesson.scene.source != path && std::filesystem::is_regular_file(lesson.scene.source, ec))
+            watch.watch({path, lesson.scene.source});
+        family.emplace(make_session(lesson));
+        session()->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
+        classroom.attach(*session());
+        error.clear();
+        frame_bounds(camera, glm::vec3(0), 1);
+        with_family_screen([&](auto& s, auto& screen) { screen.frame(s, camera); });
+        session()->seek(std::min(keep, session()->known()));
+    } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
+        family.reset();
+        error = e.what();
+        std::fprintf(stderr, "hsrviz: %s\n", e.what());
+    }
+}
+
+void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
+    if (a.back_to_lesson) {
+        path = o.lesson_path, algorithm = o.algorithm;
+    } else if (a.preset && *a.preset >= 0 && std::size_t(*a.preset) < presets.size()) {
+        if (session()) algorithm = std::string(session()->lesson().algorithm.id);
+        path = presets[std::size_t(*a.preset)].file;
+    } else if (a.random_scene && session()) {
+        const bool two_d = with_family_screen([](auto& s, auto& screen) { return screen.two_d(s); });
+        const auto toml = random_scene_toml(session()->lesson().algorithm, two_d, next_seed);
+        if (!toml) return;
+        algorithm = std::string(session()->lesson().algorithm.id);
+        std::filesystem::create_directories("hsrviz-export");
+        path = "hsrviz-export/random-" + *algorithm + "-seed" + std::to_string(next_seed++) + ".toml";
+        std::ofstream(path) << *toml;
+    } else {
+        return;
+    }
+    show_presets = false;
+    family.reset();  // a new scene starts at its first step
+    load(o);
+    std::printf("hsrviz: playing %s with %s\n", path.c_str(), algorithm.value_or("the lesson's algorithm").c_str());
+}
+
+void Lessonplay::save_edited(const algo::Scene& scene) const {
+    const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
+    std::filesystem::create_directories("hsrviz-export");
+    const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene));
+    std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
+}
+
+void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
+    if (a.reload || watch.changed(dt)) load(o);
+    if (a.toggle_presets) show_presets = !show_presets;
+    if (a.toggle_report) {
+        show_report = !show_report;
+        if (show_report && session() && report.empty()) {
+            report = family_report(session()->lesson().algorithm, data_dir() + "/assets/scenes");
+            std::printf("hsrviz: measured %zu rows of error against run time for %s\n", report.size(),
+                        std::string(session()->lesson().algorithm.id).c_str());
+        }
+    }
+    if (show_presets) {  // the presets take the number keys while they show: 1 … 9 a case, 0 a random scene
+        UiActions pick = a;
+        if (a.digit && *a.digit >= 1) pick.preset = *a.digit - 1;
+        if (a.digit && *a.digit == 0) pick.random_scene = true;
+        choose_preset(pick, o);
+        if (show_presets && a.digit) return;
+    } else if (a.preset || a.random_scene || a.back_to_lesson) {
+        choose_preset(a, o);
+    }
+    if (!session()) return;
+    Session& p = *session();
+    // the classroom: a number answers an open question (else 3 is the 3D key), chapters, language
+    std::optional<std::string> answer = a.answer;
+    bool toggle_3d = a.toggle_3d || (a.digit == 3 && !classroom.open_question(p));
+    if (a.digit)
+        if (const Question* q = classroom.open_question(p); q && *a.digit >= 1 && std::size_t(*a.digit) <= q->choices.size())
+            answer = q->choices[std::size_t(*a.digit - 1)], toggle_3d = a.toggle_3d;
+    if (answer) {
+        if (const auto v = classroom.answer(p, *answer))
+            std::printf("hsrviz: answered \"%s\": %s, the machine says \"%s\"\n", answer->c_str(), v->right ? "right" : "wrong", v->answer.c_str());
+        playback.playing = false;
+    }
+    if (a.next_chapter) classroom.next_chapter(p), playback.playing = false;
+    if (a.previous_chapter) classroom.previous_chapter(p), playback.playing = false;
+    if (a.next_language) classroom.next_language();
+    if (a.toggle_keys) show_keys = !show_keys;
+    side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
+    if (a.export_all) export_pending = true;
+    if (a.close_overlays) show_keys = show_presets = show_report = false;
+    if (toggle_3d) second_view = !second_view;
+    // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
+    // machine reruns, and the classroom follows the new events
+    with_family_screen([&](auto& s, auto& screen) {
+        if (screen.apply(s, a)) classroom.attach(p);
+        if (a.save_scene)
+            if (const auto scene = screen.edited_scene(s)) save_edited(*scene);
+    });
+    const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
+                          a.to_start || a.to_end || a.seek || playback.playing;
+    if (animate && may_move) with_family_screen([](auto& s, auto& screen) { screen.before_step(s); });
+    const std::size_t cursor = p.cursor();
+    if (a.speed) playback.speed = *a.speed;
+    if (a.toggle_play) playback.playing = !playback.playing && !p.at_end();
+    if (a.step) p.step();
+    if (a.step_back) p.step_back();
+    if (a.micro_step) p.micro_step();
+    if (a.micro_step_back) p.micro_step_back();
+    if (a.to_start) p.seek(0);
+    if (a.to_end) p.seek_end();
+    if (a.seek) p.seek(*a.seek);
+    if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek)
+        playback.playing = false;
+    if (playback.playing) {
+        playback.since_step += dt;
+        if (playback.since_step >= 1.0 / playback.speed) {
+            playback.since_step = 0;
+            p.step();
+            if (p.at_end()) playback.playing = false;
+        }
+    }
+    // a step forward stops where a chapter pauses, so that its question is asked before the events answer it
+    if (a.step || a.micro_step || playback.playing)
+        if (const auto stop = classroom.first_pause_crossed(p, cursor)) {
+            p.seek(*stop);
+            playback.playing = false;
+        }
+    with_family_screen([&](auto& s, auto& screen) { screen.after_step(s, p.cursor() != cursor, dt); });
+}
+
+}  // namespace hsr::viz

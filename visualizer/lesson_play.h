@@ -1,0 +1,59 @@
+// The lesson being played in the window: its session (as its family's type) and screens, the playback, the
+// classroom, the presets and the report, and the update that carries out a frame's UiActions.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app.h"
+#include "panels/ui_actions.h"
+#include "render/orbit_camera.h"
+#include "screens/screens.h"
+#include "state/classroom.h"
+#include "state/file_watch.h"
+#include "state/presets.h"
+
+namespace hsr::viz {
+
+struct Lessonplay {
+    std::optional<FamilySession> family;  // the lesson being played, as its family's type
+    Screens screens;                      // one per family
+    std::string error;                    // why the lesson could not be loaded ("" when it could)
+    PlaybackState playback;
+    OrbitCamera camera;
+    bool animate = true;                  // off for screenshots and recordings: they show each step as it ends
+    bool second_view = false;             // key 3: the family's other view (z-buffer 3D, portals walk-through, culling camera)
+    Classroom classroom;                  // chapters, questions, language, score
+    FileWatch watch;                      // the lesson and scene files: edited on disk, reloaded
+    bool show_keys = false;               // F1
+    bool export_pending = false;          // E: written after the next frame is drawn
+    std::string home;                     // the lesson the window was started with
+    std::string path;                     // what plays: the lesson, or a preset scene chosen with P
+    std::optional<std::string> algorithm;
+    bool show_presets = false;            // P
+    float side = 500;                     // the panel column's width ([ and ] change it; remembered)
+    bool show_report = false;             // R: error against run time for the algorithm's family
+    std::vector<analysis::Measurement> report;  // measured when R first opens it
+    std::vector<Preset> presets;          // of the lesson's algorithm
+    std::uint32_t next_seed = 1;          // of the next random scene
+
+    Session* session() const { return family ? &**family : nullptr; }
+    // f(session, screen) with the family's own types; only while a lesson plays
+    template <class F>
+    decltype(auto) with_family_screen(F&& f) {
+        return with_screen(*family, screens, std::forward<F>(f));
+    }
+
+    // (Re)loads `path` (the options' lesson at first), at the same step where it still exists.
+    void load(const AppOptions& o);
+    // P: play another scene with the lesson's algorithm (an extreme case, a random scene), or go back to the lesson.
+    void choose_preset(const UiActions& a, const AppOptions& o);
+    // S: the scene as edited, to hsrviz-export/NAME-edited.toml
+    void save_edited(const algo::Scene& scene) const;
+    // One frame's actions and dt seconds of playing.
+    void update(const UiActions& a, double dt, const AppOptions& o);
+};
+
+}  // namespace hsr::viz

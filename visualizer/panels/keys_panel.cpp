@@ -1,0 +1,35 @@
+#include "panels/keys_panel.h"
+
+#include <imgui.h>
+
+#include <utility>
+
+namespace hsr::viz {
+
+void keys_panel(const PanelLayout& l) {
+    static constexpr std::pair<const char*, const char*> rows[] = {
+        {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
+        {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
+        {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
+        {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
+        {"R", "error against run time for this algorithm's family"},       {"3", "3D view / camera view / floor plan"},
+        {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
+        {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
+        {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
+        {"Shift+drag, right-click", "2D scenes: a new segment; z-buffer pixels: a new triangle; delete what is clicked"},
+    };
+    ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    if (ImGui::BeginTable("keys", 2)) {
+        for (const auto& [k, what] : rows) {
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%s", k);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(what);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace hsr::viz

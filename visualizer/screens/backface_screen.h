@@ -1,0 +1,27 @@
+// Back-face culling: each face with its normal and the view vector of the test, from the scene's camera.
+#pragma once
+
+#include "panels/backface_panels.h"
+#include "render/backface_renderer.h"
+#include "screens/screen.h"
+#include "state/backface_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<BackfaceSession> : public ScreenDefaults {
+public:
+    void frame(const BackfaceSession& s, OrbitCamera& camera) const {
+        glm::vec3 centre(0);
+        float radius = 1;
+        backface_view_bounds(s.view(), centre, radius);
+        frame_bounds(camera, centre, radius);
+    }
+    void draw_scene(const BackfaceSession& s, SceneFrame& f) const {
+        draw_backface_view(s.view(), s.lesson().scene, f.batches, f.labels);
+        f.detail = std::string(algo::to_string(s.view().test)) + " test · eye at the scene camera";
+    }
+    void draw_panels(const BackfaceSession& s, PanelFrame& f) const { backface_state_panel(s, f.layout); }
+};
+
+}  // namespace hsr::viz

@@ -1,0 +1,31 @@
+// BSP trees: the tree's splitting lines (2D) or planes (3D) over the scene; in a 2D lesson the eye, the segments'
+// ends and the ground take gestures (drag the eye or an end, Shift+drag a new segment, right-click one away).
+#pragma once
+
+#include <cstdint>
+
+#include "panels/bsp_panels.h"
+#include "screens/screen.h"
+#include "state/bsp_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<BspSession> : public ScreenDefaults {
+public:
+    void frame(const BspSession& s, OrbitCamera& camera);
+    void draw_scene(const BspSession& s, SceneFrame& f) const;
+    void draw_panels(const BspSession& s, PanelFrame& f) const { bsp_state_panel(s, f.layout); }
+    bool pointer(const BspSession& s, const Pointer& p, const ViewGeometry& g, UiActions& out);
+    bool apply(BspSession& s, const UiActions& a);
+    std::optional<algo::Scene> edited_scene(const BspSession& s) const { return s.edited_scene(); }
+    bool two_d(const BspSession& s) const { return s.view().two_d; }
+
+private:
+    bool dragging_eye_ = false;
+    std::int64_t dragging_input_ = -1;       // the input whose vertex is dragged (−1: none) …
+    std::size_t dragging_corner_ = 0;        // … and which of its vertices
+    std::optional<glm::dvec3> drawing_from_;  // Shift+drag: where the new segment starts
+};
+
+}  // namespace hsr::viz

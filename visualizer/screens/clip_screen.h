@@ -1,0 +1,45 @@
+// Clipping: the clip volume in 3D with the primitive being cut; a step slides from the picture before it.
+#pragma once
+
+#include "panels/clip_panels.h"
+#include "render/clip_renderer.h"
+#include "screens/screen.h"
+#include "state/clip_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<ClipSession> : public ScreenDefaults {
+public:
+    void frame(const ClipSession& s, OrbitCamera& camera) {
+        glm::vec3 centre(0);
+        float radius = 1;
+        clip_view_bounds(s.view(), s.lesson().scene, centre, radius);
+        frame_bounds(camera, centre, radius);
+        before_.reset(), shown_.reset(), tween_ = 1;
+    }
+    void draw_scene(const ClipSession& s, SceneFrame& f) const {
+        draw_clip_view(s.view(), s.lesson().scene, f.batches, f.labels, {before_ ? &*before_ : nullptr, float(tween_)});
+        f.detail = s.space() == algo::ClipSpace::homogeneous ? "clip space −w ≤ x, y, z ≤ w and w ≥ ε = 1e-9"
+                                                             : "the canonical cube −1 ≤ x, y, z ≤ 1";
+    }
+    void draw_panels(const ClipSession& s, PanelFrame& f) const { clip_state_panel(s, f.layout); }
+    void before_step(const ClipSession& s) { shown_ = s.view(); }  // cheap: the view's large parts are shared
+    void after_step(const ClipSession&, bool moved, double dt) {
+        if (moved && shown_) {  // a step was taken (either way): slide from what was shown
+            before_ = std::move(shown_);
+            tween_ = 0;
+        } else {
+            tween_ = std::min(1.0, tween_ + dt / tween_seconds);
+        }
+        shown_.reset();
+    }
+
+private:
+    static constexpr double tween_seconds = 0.25;
+    std::optional<ClipView> shown_;   // the view before this frame's step
+    std::optional<ClipView> before_;  // the view the picture is sliding from
+    double tween_ = 1;                // 0 … 1 of the way from before_ to the current view
+};
+
+}  // namespace hsr::viz

@@ -1,0 +1,42 @@
+// Culling: a god's-eye view of the camera's frustum and the hierarchy's boxes coloured by what happened to them,
+// or the view from the scene's own camera (key 3); the pipeline and the machine's panel beside it. One screen for
+// the four culling machines.
+#pragma once
+
+#include "panels/culling_panels.h"
+#include "render/culling_renderer.h"
+#include "screens/screen.h"
+#include "state/culling_session.h"
+
+namespace hsr::viz {
+
+template <class Event, class Result>
+class Screen<CullingSession<Event, Result>> : public ScreenDefaults {
+public:
+    using S = CullingSession<Event, Result>;
+    void frame(const S& s, OrbitCamera& camera) const {
+        glm::vec3 centre(0);
+        float radius = 1;
+        culling_view_bounds(s.view(), centre, radius);
+        camera.yaw = 0.6f, camera.pitch = 0.7f;  // from above and aside: the camera's frustum and what it leaves out
+        frame_bounds(camera, centre, radius);
+    }
+    void draw_scene(const S& s, SceneFrame& f) const {
+        const CullingWorld& w = *s.view().world;
+        draw_culling_view(s.view(), f.batches, f.labels);
+        f.detail = std::to_string(w.scene.polygons.size()) + " primitives · " +
+                   (w.hierarchy.kind == algo::HierarchyKind::bvh ? "BVH" : "octree") +
+                   (f.second_view ? " · from the camera" : " · god's-eye view");
+        if (f.second_view) {  // the view from the scene's own camera
+            algo::Camera eye = w.scene.camera;
+            eye.aspect = f.aspect;
+            f.view_projection = glm::mat4(algo::view_projection(eye));
+        }
+    }
+    void draw_panels(const S& s, PanelFrame& f) const {
+        culling_canvas(s, 0, 0, f.view_w, f.view_h);
+        culling_state_panel(s, f.layout);
+    }
+};
+
+}  // namespace hsr::viz

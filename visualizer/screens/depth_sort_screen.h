@@ -1,0 +1,29 @@
+// Newell's depth sort: the pair R, Q in the canonical view volume, the display list, the screen inset and the
+// image painted so far.
+#pragma once
+
+#include "panels/depth_sort_panels.h"
+#include "render/depth_sort_renderer.h"
+#include "screens/screen.h"
+#include "state/depth_sort_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<DepthSortSession> : public ScreenDefaults {
+public:
+    void frame(const DepthSortSession&, OrbitCamera& camera) const {  // the canonical view volume, from the eye's side
+        camera.yaw = 0.55f, camera.pitch = 0.35f;
+        frame_bounds(camera, glm::vec3(0), 1.6f);
+    }
+    void draw_scene(const DepthSortSession& s, SceneFrame& f) const {
+        draw_depth_sort_view(s.view(), f.batches, f.labels);
+        f.detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
+    }
+    void draw_panels(const DepthSortSession& s, PanelFrame& f) const {
+        depth_sort_canvas(s, 0, 0, f.view_w, f.view_h, f.animate);
+        depth_sort_state_panel(s, f.layout);
+    }
+};
+
+}  // namespace hsr::viz

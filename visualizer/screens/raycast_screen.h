@@ -1,0 +1,33 @@
+// Ray casting: the rays leaving the eye through the grid's pixels, and the image they make.
+#pragma once
+
+#include "panels/raycast_panels.h"
+#include "render/frustum.h"
+#include "render/raycast_renderer.h"
+#include "screens/screen.h"
+#include "state/raycast_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<RayCastSession> : public ScreenDefaults {
+public:
+    void frame(const RayCastSession& s, OrbitCamera& camera) const {
+        glm::vec3 centre(0);
+        float radius = 1;
+        scene_bounds(s.scene(), centre, radius);
+        camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
+        frame_bounds(camera, centre, radius);
+    }
+    void draw_scene(const RayCastSession& s, SceneFrame& f) const {
+        draw_raycast_view(s.view(), s.scene(), f.batches, f.labels);
+        f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) +
+                   " rays · double precision · " + std::string(algo::to_string(s.view().acceleration));
+    }
+    void draw_panels(const RayCastSession& s, PanelFrame& f) const {
+        raycast_image(s, 0, 0, f.view_w, f.view_h);
+        raycast_state_panel(s, f.layout);
+    }
+};
+
+}  // namespace hsr::viz

@@ -1,0 +1,24 @@
+// The scan-line algorithm: the edge tables and the one-line z-buffer over the grid's rows.
+#pragma once
+
+#include "panels/scanline_panels.h"
+#include "screens/screen.h"
+#include "state/scanline_session.h"
+
+namespace hsr::viz {
+
+template <>
+class Screen<ScanLineSession> : public ScreenDefaults {
+public:
+    void frame(const ScanLineSession&, OrbitCamera&) const {}  // no 3D view: the canvas covers it
+    void draw_scene(const ScanLineSession& s, SceneFrame& f) const {
+        f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) +
+                   " pixels · one-line z-buffer, " + std::string(algo::to_string(s.lesson().depth_format));
+    }
+    void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
+        scanline_canvas(s, 0, 0, f.view_w, f.view_h);
+        scanline_state_panel(s, f.layout);
+    }
+};
+
+}  // namespace hsr::viz

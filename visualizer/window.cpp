@@ -1,0 +1,89 @@
+#include "window.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_impl_sdl.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace hsr::viz {
+namespace {
+
+void load_fonts(ImGuiIO& io, float scale) {
+    // Latin, Greek (ε), punctuation, arrows and maths (≤ ≥ → −): the characters our sentences use.
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2190, 0x21FF,
+                                     0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+    const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
+    if (!std::filesystem::exists(sans) || !std::filesystem::exists(mono)) {
+        io.Fonts->AddFontDefault();  // ASCII only: ≤, → and ε will show as '?'
+        return;
+    }
+    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges);
+    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges);  // pseudocode
+}
+
+}  // namespace
+
+bool interactive(const AppOptions& o) { return !o.screenshot && !o.record_dir && !o.gif; }
+
+bool Window::open(const AppOptions& o) {
+    if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
+        std::fprintf(stderr, "hsrviz: SDL_Init failed: %s\n", SDL_GetError());
+        return false;
+    }
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
+    // An interactive window opens as the last one closed (unless --size says otherwise); scripted ones at their size
+    const bool remembered = interactive(o) && !o.size_given && !o.projector;
+    const int width = remembered ? settings.width : o.width, height = remembered ? settings.height : o.height;
+    const int x = remembered && settings.x ? *settings.x : int(SDL_WINDOWPOS_CENTERED);
+    const int y = remembered && settings.y ? *settings.y : int(SDL_WINDOWPOS_CENTERED);
+    window = SDL_CreateWindow("hsrviz", x, y, width, height,
+                              SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI |
+                                  (remembered && settings.maximized ? SDL_WINDOW_MAXIMIZED : 0) |
+                                  (o.projector && !o.screenshot && !o.record_dir ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));  // screenshots keep their size
+    if (!window) {
+        std::fprintf(stderr, "hsrviz: cannot open a window: %s\n", SDL_GetError());
+        return false;
+    }
+    gl = SDL_GL_CreateContext(window);
+    if (!gl) {
+        std::fprintf(stderr, "hsrviz: cannot create an OpenGL 3.3 context: %s\n", SDL_GetError());
+        return false;
+    }
+    SDL_GL_MakeCurrent(window, gl);
+    SDL_GL_SetSwapInterval(1);
+    return true;
+}
+
+void Window::close() {
+    if (gl) SDL_GL_DeleteContext(gl);
+    if (window) SDL_DestroyWindow(window);
+    SDL_Quit();
+}
+
+void setup_imgui(const Window& w, const AppOptions& o) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0;
+    load_fonts(io, o.projector ? 1.3f : 1.0f);
+    if (o.projector) {  // high contrast for a washed-out projector: white on black, bright frames
+        ImGuiStyle& style = ImGui::GetStyle();
+        style.Colors[ImGuiCol_Text] = ImVec4(1, 1, 1, 1);
+        style.Colors[ImGuiCol_WindowBg] = ImVec4(0, 0, 0, 1);
+        style.Colors[ImGuiCol_Border] = ImVec4(0.8f, 0.8f, 0.8f, 1);
+        style.FrameBorderSize = 1, style.WindowBorderSize = 2;
+    }
+    ImGui_ImplSDL2_InitForOpenGL(w.window, w.gl);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+}  // namespace hsr::viz

@@ -1,0 +1,26 @@
+// The window, its OpenGL 3.3 context and Dear ImGui, opened as the options and the last run's settings say.
+#pragma once
+
+#include <SDL.h>
+
+#include "app.h"
+#include "state/window_settings.h"
+
+namespace hsr::viz {
+
+// A window a person works in, not one a command line scripts (screenshots, recordings, GIFs keep their size).
+bool interactive(const AppOptions& o);
+
+struct Window {
+    SDL_Window* window = nullptr;
+    SDL_GLContext gl = nullptr;
+    WindowSettings settings;  // as the last run left them
+
+    bool open(const AppOptions& o);  // false (having said why) when there is no window or no OpenGL 3.3
+    void close();
+};
+
+// Dear ImGui's context, fonts and style (larger and high contrast for a projector) on the window.
+void setup_imgui(const Window& w, const AppOptions& o);
+
+}  // namespace hsr::viz
