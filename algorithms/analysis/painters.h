@@ -3,8 +3,8 @@
 #pragma once
 
 #include "bsp/bsp_tree.h"
-#include "core/image.h"
-#include "core/screen_polygon.h"
+#include "raster/image.h"
+#include "raster/screen_polygon.h"
 #include "depth_sort/depth_sort.h"
 #include "scene/scene.h"
 

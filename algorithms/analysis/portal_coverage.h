@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 #include "portals/cell_model.h"
 #include "portals/portal_render.h"
 #include "portals/pvs.h"

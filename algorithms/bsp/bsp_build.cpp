@@ -7,7 +7,7 @@
 
 #include "bsp/bsp_tree.h"
 #include "core/numeric.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 #include <glm/common.hpp>
 

@@ -6,7 +6,7 @@
 
 #include "clipping/sutherland_hodgman.h"
 #include "core/numeric.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 namespace {

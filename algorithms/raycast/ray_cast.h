@@ -21,11 +21,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/image.h"
+#include "raster/image.h"
 #include "core/steps.h"
 #include "raycast/raycast_events.h"
 #include "raycast/spatial.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 

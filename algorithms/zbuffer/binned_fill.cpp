@@ -5,7 +5,7 @@
 #include <thread>
 
 #include "core/parallel.h"
-#include "core/span_walker.h"
+#include "raster/span_walker.h"
 #include "zbuffer/depth_test_row.h"
 
 namespace hsr::algo {

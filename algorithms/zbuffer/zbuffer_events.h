@@ -9,7 +9,7 @@
 
 #include "scene/scene.h"
 #include "zbuffer/depth_format.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 

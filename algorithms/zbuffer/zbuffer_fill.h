@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/image.h"
+#include "raster/image.h"
 #include "core/steps.h"
 #include "zbuffer/zbuffer_events.h"
 

@@ -12,7 +12,7 @@
 #include "clipping/cohen_sutherland.h"
 #include "clipping/liang_barsky.h"
 #include "clipping/sutherland_hodgman.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 using namespace hsr;
 using analysis::Measurement;

@@ -10,7 +10,7 @@
 
 #include "bsp/bsp_tree.h"
 #include "catch.h"
-#include "core/image.h"
+#include "raster/image.h"
 #include "core/numeric.h"
 #include "raycast/nearest_hit.h"
 

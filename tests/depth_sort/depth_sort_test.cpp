@@ -4,7 +4,7 @@
 
 #include "catch.h"
 #include "analysis/painters.h"
-#include "core/image.h"
+#include "raster/image.h"
 #include "depth_sort/depth_sort.h"
 #include "raycast/ray_cast.h"
 #include "scene/load_scene.h"

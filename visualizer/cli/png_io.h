@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "core/image.h"
+#include "raster/image.h"
 
 namespace hsr::viz {
 

@@ -9,7 +9,7 @@
 
 #include "analysis/painters.h"
 #include "cli/png_io.h"
-#include "core/image.h"
+#include "raster/image.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
 #include "raycast/ray_cast.h"

@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "core/image.h"
+#include "raster/image.h"
 #include "panels/depth_sort_panels.h"
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"

@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::viz {
 

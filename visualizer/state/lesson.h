@@ -23,7 +23,7 @@
 #include "bsp/bsp_events.h"
 #include "registry.h"
 #include "state/chapters.h"
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 #include "scene/scene.h"
 #include "scene/toml_reader.h"
 #include "zbuffer/depth_format.h"

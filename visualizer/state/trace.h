@@ -6,18 +6,8 @@
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <vector>
 
-#include "bsp/bsp_events.h"
-#include "clipping/clip_events.h"
-#include "culling/backface.h"
-#include "raycast/raycast_events.h"
-#include "zbuffer/scanline_events.h"
-#include "depth_sort/depth_sort_events.h"
-#include "portals/portal_events.h"
-#include "culling/hiz.h"
-#include "culling/occluders.h"
-#include "zbuffer/z_merge.h"
-#include "zbuffer/zbuffer_events.h"
 #include "core/steps.h"
 #include "state/lesson.h"
 
@@ -33,21 +23,10 @@ std::string hex(std::uint64_t hash);
 // FNV-1a over the bytes of `line` and a newline.
 void hash_line(TraceSummary& t, const std::string& line);
 
-// One JSON line (without the newline): step, kind, the event's fields, and its sentence.
-std::string trace_line(std::uint64_t step, const algo::ClipEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::BspEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::CullEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::ZBufferEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::RayCastEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::ScanLineEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::ZMergeEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::DepthSortEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::PvsEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::HierarchyEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::HierarchyCullEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::OcclusionEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::HizEvent& e, const std::string& sentence);
-std::string trace_line(std::uint64_t step, const algo::PortalEvent& e, const std::string& sentence);
+// One JSON line (without the newline): step, kind, the event's fields, and its sentence. Made for each family's
+// event variant by its <family>_trace.cpp (state/trace_json.h).
+template <class Event>
+std::string trace_line(std::uint64_t step, const Event& e, const std::string& sentence);
 
 // The kinds of event the lesson's machine can tell (its event variant's alternatives).
 std::vector<std::string> event_kinds(const Lesson& lesson);

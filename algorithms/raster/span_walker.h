@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 

@@ -1,9 +1,9 @@
-#include "core/image.h"
+#include "raster/image.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 

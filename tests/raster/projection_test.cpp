@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 #include "scene/generated_scenes.h"
 
 using namespace hsr::algo;

@@ -1,4 +1,4 @@
-#include "core/screen_polygon.h"
+#include "raster/screen_polygon.h"
 
 #include <algorithm>
 #include <cmath>

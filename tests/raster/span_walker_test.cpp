@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/span_walker.h"
+#include "raster/span_walker.h"
 
 using namespace hsr::algo;
 

@@ -1,4 +1,4 @@
-#include "core/span_walker.h"
+#include "raster/span_walker.h"
 
 #include "core/numeric.h"
 
