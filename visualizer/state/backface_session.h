@@ -13,12 +13,10 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::CullEvent& e, const BackfaceView& view);  // describe(e), as the view after it names things
-    std::span<const std::string_view> pseudocode() const override;
 
 private:
     std::string describe_event(const algo::CullEvent& e) const override;
-    int line_of(const algo::CullEvent& e) const override;
-    bool is_major(const algo::CullEvent& e) const override;
+    const Pseudocode<algo::CullEvent>& table() const override;
 };
 
 }  // namespace hsr::viz

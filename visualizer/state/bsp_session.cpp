@@ -1,9 +1,6 @@
 #include "state/bsp_session.h"
 
-#include <array>
 #include <chrono>
-
-#include "core/overloaded.h"
 
 namespace hsr::viz {
 namespace {
@@ -11,35 +8,38 @@ namespace {
 using namespace hsr::algo;
 
 // The lecture's BuildBSP ("BSP Algorithm (2)"); Left is the front of P_i, Right its back.
-constexpr std::array<std::string_view, 10> build_lines = {
-    "BuildBSP(BSPnode, polygonDB);",
-    "{",
-    "  Select a polygon (plane) Pi from polygonDB;",
-    "  Assign Pi to BSPnode;",
-    "  /* Partition scene polygons into those on either side",
-    "     of plane Pi, splitting polygons that intersect Pi */",
-    "  Partition(Pi, polygonDB, polygonDBL, polygonDBR);",
-    "  if (polygonDBL != empty) BuildBSP(BSPnode->Left, polygonDBL);",
-    "  if (polygonDBR != empty) BuildBSP(BSPnode->Right, polygonDBR);",
-    "}",
+// The lecture's BuildBSP.
+const Pseudocode<BspEvent> build_lines = {
+    {"BuildBSP(BSPnode, polygonDB);", {step<BuildStarted>(), step<BspBoundReached>()}},
+    {"{", {}},
+    {"  Select a polygon (plane) Pi from polygonDB;", {micro<CandidateScored>()}},
+    {"  Assign Pi to BSPnode;", {step<SplitterChosen>([](const SplitterChosen& e) { return e.parent < 0; })}},
+    {"  /* Partition scene polygons into those on either side", {}},
+    {"     of plane Pi, splitting polygons that intersect Pi */", {step<PolygonSplit>()}},
+    {"  Partition(Pi, polygonDB, polygonDBL, polygonDBR);", {micro<PolygonClassified>(), step<NodeFinished>()}},
+    {"  if (polygonDBL != empty) BuildBSP(BSPnode->Left, polygonDBL);",
+     {step<SplitterChosen>([](const SplitterChosen& e) { return e.side == Side::front; })}},
+    {"  if (polygonDBR != empty) BuildBSP(BSPnode->Right, polygonDBR);", {step<SplitterChosen>()}},
+    {"}", {step<BuildFinished>()}},
 };
 
-// The lecture's DisplayBSP ("BSP Algorithm (4)"); 'left' is the front of the node's plane.
-constexpr std::array<std::string_view, 14> display_lines = {
-    "DisplayBSP (BSPnode, v);",
-    "{",
-    "  if IsLeaf (BSPnode) Render (BSPnode->Polygon)",
-    "  else if (v in 'left' subspace of BSPnode->Polygon) {",
-    "    DisplayBSP (BSPnode->Right, v);",
-    "    Render (BSPnode->Polygon);",
-    "    DisplayBSP (BSPnode->Left, v);",
-    "  }",
-    "  else /* v in 'right' subspace of BSPnode->Polygon */ {",
-    "    DisplayBSP (BSPnode->Left, v);",
-    "    Render (BSPnode->Polygon);",
-    "    DisplayBSP (BSPnode->Right, v);",
-    "  }",
-    "}",
+// The lecture's DisplayBSP, back to front.
+const Pseudocode<BspEvent> display_lines = {
+    {"DisplayBSP (BSPnode, v);", {step<BspBoundReached>()}},
+    {"{", {}},
+    {"  if IsLeaf (BSPnode) Render (BSPnode->Polygon)", {step<PolygonDrawn>([](const PolygonDrawn& e) { return e.leaf; })}},
+    {"  else if (v in 'left' subspace of BSPnode->Polygon) {",
+     {micro<EyeClassified>([](const EyeClassified& e) { return e.side != Side::back; })}},
+    {"    DisplayBSP (BSPnode->Right, v);", {}},
+    {"    Render (BSPnode->Polygon);", {step<PolygonDrawn>([](const PolygonDrawn& e) { return e.eye_side != Side::back; })}},
+    {"    DisplayBSP (BSPnode->Left, v);", {}},
+    {"  }", {}},
+    {"  else /* v in 'right' subspace of BSPnode->Polygon */ {", {micro<EyeClassified>()}},
+    {"    DisplayBSP (BSPnode->Left, v);", {}},
+    {"    Render (BSPnode->Polygon);", {step<PolygonDrawn>()}},
+    {"    DisplayBSP (BSPnode->Right, v);", {}},
+    {"  }", {}},
+    {"}", {step<TraversalFinished>()}},
 };
 
 }  // namespace
@@ -164,46 +164,18 @@ algo::Scene BspSession::scene_of_job() const {
     return s;
 }
 
-std::span<const std::string_view> BspSession::pseudocode() const {
-    if (kind_ == algo::BspMachine::build && !view().built) return build_lines;
-    return display_lines;
-}
-
 std::string BspSession::sentence_of(const BspEvent& e, const BspView& view) { return describe(e, namer(view)); }
 std::string BspSession::describe_event(const BspEvent& e) const { return sentence_of(e, view()); }
 
-int BspSession::line_of(const BspEvent& event) const {
-    return std::visit(overloaded{
-                          [](const BuildStarted&) { return 0; },
-                          [](const CandidateScored&) { return 2; },
-                          [](const SplitterChosen& e) { return e.parent < 0 ? 3 : e.side == Side::front ? 7 : 8; },
-                          [](const PolygonClassified&) { return 6; },
-                          [](const PolygonSplit&) { return 5; },
-                          [](const NodeFinished&) { return 6; },
-                          [](const BuildFinished&) { return 9; },
-                          [](const EyeClassified& e) { return e.side == Side::back ? 8 : 3; },
-                          [](const PolygonDrawn& e) { return e.leaf ? 2 : e.eye_side == Side::back ? 10 : 5; },
-                          [](const TraversalFinished&) { return 13; },
-                          [](const BspBoundReached&) { return 0; },
-                      },
-                      event);
+// BuildBSP while the tree is being built (up to its last event), DisplayBSP from the traversal's first event.
+const Pseudocode<BspEvent>& BspSession::table() const {
+    const auto e = player().last_applied();
+    return !e || build_lines.line_of(*e) >= 0 ? build_lines : display_lines;
 }
 
-bool BspSession::is_major(const BspEvent& event) const {
-    return std::visit(overloaded{
-                          [](const BuildStarted&) { return true; },
-                          [](const CandidateScored&) { return false; },
-                          [](const SplitterChosen&) { return true; },
-                          [](const PolygonClassified&) { return false; },
-                          [](const PolygonSplit&) { return true; },
-                          [](const NodeFinished&) { return true; },
-                          [](const BuildFinished&) { return true; },
-                          [](const EyeClassified&) { return false; },
-                          [](const PolygonDrawn&) { return true; },
-                          [](const TraversalFinished&) { return true; },
-                          [](const BspBoundReached&) { return true; },
-                      },
-                      event);
+// Either table says, whichever is shown: a Step back from the traversal may land in the build.
+bool BspSession::is_major(const BspEvent& e) const {
+    return build_lines.is_major(e).value_or(display_lines.is_major(e).value_or(true));
 }
 
 const FamilyFacts BspSession::facts = {

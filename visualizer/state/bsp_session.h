@@ -20,7 +20,6 @@ public:
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::BspEvent& e, const BspView& view);  // describe(e), as the view after it names things
     algo::BspMachine kind() const { return kind_; }
-    std::span<const std::string_view> pseudocode() const override;
     // Build statistics of the same tree built once more, timed (the player's own run is stepped, not timed).
     struct Stats {
         std::size_t polygons_in = 0, polygons_after = 0, nodes = 0;
@@ -47,7 +46,7 @@ public:
 
 private:
     std::string describe_event(const algo::BspEvent& e) const override;
-    int line_of(const algo::BspEvent& e) const override;
+    const Pseudocode<algo::BspEvent>& table() const override;
     bool is_major(const algo::BspEvent& e) const override;
     algo::BspMachine kind_;
     Stats stats_;

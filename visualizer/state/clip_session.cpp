@@ -17,11 +17,9 @@ ClipSession::RunType ClipSession::machine(const Lesson& lesson) {
 ClipSession::ClipSession(Lesson lesson, PlayerOptions options)
     : PlayerSession(lesson, machine(lesson), options), algorithm_(machine_of<algo::ClipAlgorithm>(lesson)) {}
 
-std::span<const std::string_view> ClipSession::pseudocode() const { return viz::pseudocode(algorithm_); }
 std::string ClipSession::sentence_of(const algo::ClipEvent& e, const ClipView& view) { return algo::describe(e, view.space); }
 std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return sentence_of(e, view()); }
-int ClipSession::line_of(const algo::ClipEvent& e) const { return pseudocode_line(algorithm_, e); }
-bool ClipSession::is_major(const algo::ClipEvent& e) const { return viz::is_major(e); }
+const Pseudocode<algo::ClipEvent>& ClipSession::table() const { return pseudocode_table(algorithm_); }
 
 const FamilyFacts ClipSession::facts = {
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo& a) {  // Sutherland–Hodgman clips the polygons, the others the segments

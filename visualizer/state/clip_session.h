@@ -21,12 +21,10 @@ public:
     static std::string sentence_of(const algo::ClipEvent& e, const ClipView& view);  // describe(e), as the view after it names things
     algo::ClipAlgorithm algorithm() const { return algorithm_; }
     algo::ClipSpace space() const { return view().space; }
-    std::span<const std::string_view> pseudocode() const override;
 
 private:
     std::string describe_event(const algo::ClipEvent& e) const override;
-    int line_of(const algo::ClipEvent& e) const override;
-    bool is_major(const algo::ClipEvent& e) const override;
+    const Pseudocode<algo::ClipEvent>& table() const override;
     algo::ClipAlgorithm algorithm_;
 };
 

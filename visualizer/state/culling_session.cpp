@@ -4,7 +4,6 @@
 #include "state/culling_session.h"
 
 #include <algorithm>
-#include <array>
 
 #include "core/overloaded.h"
 #include "culling/view_frustum.h"
@@ -14,7 +13,6 @@ namespace hsr::viz {
 namespace {
 
 using namespace hsr::algo;
-
 
 void mark_subtree(CullingView& v, std::uint32_t node, NodeMark mark, PrimitiveMark prims) {
     const Hierarchy& h = v.world->hierarchy;
@@ -140,99 +138,50 @@ void reduce(CullingView& v, const HizEvent& event) {
 // ── [SECTION] each machine's pseudocode, lines and steps ────────────────────────────────────────────────────
 namespace {
 
-constexpr std::array<std::string_view, 6> bounds_lines = {
-    "BuildBVH(primitives):",
-    "  node.box = the box round its primitives",
-    "  if few primitives (or the depth bound): a leaf",
-    "  else split at the median centre along the longest axis",
-    "       BuildBVH(each half)",
-    "bounding volumes: AABB, sphere, OBB; void = 1 - object / volume",
+const Pseudocode<HierarchyEvent> bounds_lines = {
+    {"BuildBVH(primitives):", {}},
+    {"  node.box = the box round its primitives", {}},
+    {"  if few primitives (or the depth bound): a leaf", {step<HierarchyNodeBuilt>([](const HierarchyNodeBuilt& e) { return e.leaf != LeafReason::not_a_leaf; })}},
+    {"  else split at the median centre along the longest axis", {step<HierarchyNodeBuilt>()}},
+    {"       BuildBVH(each half)", {}},
+    {"bounding volumes: AABB, sphere, OBB; void = 1 - object / volume", {step<HierarchyBuilt>()}},
 };
-constexpr std::array<std::string_view, 8> frustum_lines = {
-    "Cull(node, planes):            planes: those the parent was not inside",
-    "  for each plane: IntersectionTest(node.box, plane)",
-    "    wholly outside: reject node and its subtree",
-    "    wholly inside: drop the plane for the subtree",
-    "  no plane left: accept node and its subtree",
-    "  projected size < threshold: leave it out (detail)",
-    "  keep node's primitives; Cull(child, planes) for each child",
-    "done",
+const Pseudocode<HierarchyCullEvent> frustum_lines = {
+    {"Cull(node, planes):            planes: those the parent was not inside", {}},
+    {"  for each plane: IntersectionTest(node.box, plane)", {}},
+    {"    wholly outside: reject node and its subtree", {step<NodeCulled>([](const NodeCulled& e) { return e.outcome == NodeOutcome::outside; })}},
+    {"    wholly inside: drop the plane for the subtree", {}},
+    {"  no plane left: accept node and its subtree", {step<NodeCulled>([](const NodeCulled& e) { return e.outcome == NodeOutcome::inside; })}},
+    {"  projected size < threshold: leave it out (detail)", {step<NodeCulled>([](const NodeCulled& e) { return e.outcome == NodeOutcome::too_small; })}},
+    {"  keep node's primitives; Cull(child, planes) for each child", {step<NodeCulled>()}},
+    {"done", {step<HierarchyCullFinished>()}},
 };
-constexpr std::array<std::string_view, 7> occluder_lines = {
-    "choose occluders: f = -A (n . v) / |v|^2, the best first",
-    "occlusion frustum: eye and the occluder's edges, and its plane",
-    "Cull(node):",
-    "  wholly inside one occlusion frustum: cull node and subtree",
-    "  partly inside: test its primitives; Cull(each child)",
-    "  outside them all: pass it on to hidden-surface elimination",
-    "done",
+const Pseudocode<OcclusionEvent> occluder_lines = {
+    {"choose occluders: f = -A (n . v) / |v|^2, the best first", {step<OccluderChosen>()}},
+    {"occlusion frustum: eye and the occluder's edges, and its plane", {}},
+    {"Cull(node):", {}},
+    {"  wholly inside one occlusion frustum: cull node and subtree", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::occluded; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::occluded; })}},
+    {"  partly inside: test its primitives; Cull(each child)", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::partly; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::partly; })}},
+    {"  outside them all: pass it on to hidden-surface elimination", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0; }), micro<OcclusionTested>()}},
+    {"done", {step<OcclusionFinished>()}},
 };
-constexpr std::array<std::string_view, 9> hiz_lines = {
-    "Cull_or_Render(N):",
-    "  if N is outside the view frustum: return",
-    "  if isOccluded(N, Zp): return",
-    "  for each primitive p in N: render p and update Zp",
-    "  for each child C of N, front to back: Cull_or_Render(C)",
-    "isOccluded(g, Zp):",
-    "  if nearZ(g) is behind Zp.z: return true",
-    "  else return isOccluded(g, each child texel under g)",
-    "done",
+const Pseudocode<HizEvent> hiz_lines = {
+    {"Cull_or_Render(N):", {}},
+    {"  if N is outside the view frustum: return", {step<HizNodeTested>([](const HizNodeTested& e) { return e.outcome == HizOutcome::outside_frustum; })}},
+    {"  if isOccluded(N, Zp): return", {step<HizNodeTested>([](const HizNodeTested& e) { return e.outcome == HizOutcome::occluded; })}},
+    {"  for each primitive p in N: render p and update Zp", {step<HizNodeTested>()}},
+    {"  for each child C of N, front to back: Cull_or_Render(C)", {}},
+    {"isOccluded(g, Zp):", {}},
+    {"  if nearZ(g) is behind Zp.z: return true", {}},
+    {"  else return isOccluded(g, each child texel under g)", {}},
+    {"done", {step<HizFinished>()}},
 };
 
-template <class Event>
-struct Machine;
-
-template <>
-struct Machine<HierarchyEvent> {
-    static std::span<const std::string_view> lines() { return bounds_lines; }
-    static int line_of(const HierarchyEvent& e) {
-        const auto* b = std::get_if<HierarchyNodeBuilt>(&e);
-        return !b ? 5 : b->leaf == LeafReason::not_a_leaf ? 3 : 2;
-    }
-    static bool major(const HierarchyEvent&) { return true; }
-};
-template <>
-struct Machine<HierarchyCullEvent> {
-    static std::span<const std::string_view> lines() { return frustum_lines; }
-    static int line_of(const HierarchyCullEvent& e) {
-        const auto* n = std::get_if<NodeCulled>(&e);
-        if (!n) return 7;
-        switch (n->outcome) {
-            case NodeOutcome::outside: return 2;
-            case NodeOutcome::inside: return 4;
-            case NodeOutcome::too_small: return 5;
-            case NodeOutcome::partial: return 6;
-        }
-        return 6;
-    }
-    static bool major(const HierarchyCullEvent&) { return true; }
-};
-template <>
-struct Machine<OcclusionEvent> {
-    static std::span<const std::string_view> lines() { return occluder_lines; }
-    static int line_of(const OcclusionEvent& e) {
-        return std::visit(overloaded{[](const OccluderChosen&) { return 0; },
-                                     [](const OcclusionTested& t) {
-                                         return t.outcome == OcclusionOutcome::occluded ? 3 : t.outcome == OcclusionOutcome::partly ? 4 : 5;
-                                     },
-                                     [](const OcclusionFinished&) { return 6; }},
-                          e);
-    }
-    static bool major(const OcclusionEvent& e) {  // a primitive's own test is a micro-step
-        const auto* t = std::get_if<OcclusionTested>(&e);
-        return !t || t->node >= 0;
-    }
-};
-template <>
-struct Machine<HizEvent> {
-    static std::span<const std::string_view> lines() { return hiz_lines; }
-    static int line_of(const HizEvent& e) {
-        const auto* n = std::get_if<HizNodeTested>(&e);
-        if (!n) return 8;
-        return n->outcome == HizOutcome::outside_frustum ? 1 : n->outcome == HizOutcome::occluded ? 2 : 3;
-    }
-    static bool major(const HizEvent&) { return true; }
-};
+// Each machine's table, by its events.
+const Pseudocode<HierarchyEvent>& table_of(const HierarchyEvent*) { return bounds_lines; }
+const Pseudocode<HierarchyCullEvent>& table_of(const HierarchyCullEvent*) { return frustum_lines; }
+const Pseudocode<OcclusionEvent>& table_of(const OcclusionEvent*) { return occluder_lines; }
+const Pseudocode<HizEvent>& table_of(const HizEvent*) { return hiz_lines; }
 
 }  // namespace
 
@@ -278,8 +227,8 @@ CullingSession<Event, Result>::CullingSession(Lesson lesson, PlayerOptions optio
     : PlayerSession<Event, Result, CullingView>(lesson, machine(lesson), options), machine_(machine_of<CullingMachine>(lesson)) {}
 
 template <class Event, class Result>
-std::span<const std::string_view> CullingSession<Event, Result>::pseudocode() const {
-    return Machine<Event>::lines();
+const Pseudocode<Event>& CullingSession<Event, Result>::table() const {
+    return table_of(static_cast<const Event*>(nullptr));
 }
 template <class Event, class Result>
 std::string CullingSession<Event, Result>::sentence_of(const Event& e, const CullingView&) {
@@ -289,15 +238,6 @@ template <class Event, class Result>
 std::string CullingSession<Event, Result>::describe_event(const Event& e) const {
     return describe(e);
 }
-template <class Event, class Result>
-int CullingSession<Event, Result>::line_of(const Event& e) const {
-    return Machine<Event>::line_of(e);
-}
-template <class Event, class Result>
-bool CullingSession<Event, Result>::is_major(const Event& e) const {
-    return Machine<Event>::major(e);
-}
-
 template <class Event, class Result>
 const FamilyFacts CullingSession<Event, Result>::facts = {
     .speaks_to = [](const Scene&, const AlgorithmInfo&) { return false; },

@@ -65,14 +65,12 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static std::string sentence_of(const Event& e, const CullingView& view);  // describe(e)
     static const FamilyFacts facts;  // for the presets and the report
-    std::span<const std::string_view> pseudocode() const override;
     const CullingView& culling_view() const override { return this->view(); }
     algo::CullingMachine culling_machine() const override { return machine_; }
 
 private:
     std::string describe_event(const Event& e) const override;
-    int line_of(const Event& e) const override;
-    bool is_major(const Event& e) const override;
+    const Pseudocode<Event>& table() const override;
     algo::CullingMachine machine_;
 };
 

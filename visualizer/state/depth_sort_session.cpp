@@ -1,7 +1,6 @@
 #include "state/depth_sort_session.h"
 
 #include <algorithm>
-#include <array>
 
 #include "core/overloaded.h"
 
@@ -10,19 +9,19 @@ namespace {
 
 using namespace hsr::algo;
 
-constexpr std::array<std::string_view, 12> sort_lines = {
-    "DepthSort(polygonDB):",
-    "  for each polygon find MINZ and MAXZ; sort, farthest first",
-    "  R = head of the list; for each Q whose z extent overlaps R's:",
-    "    1. x extents apart?   2. y extents apart?",
-    "    3. R wholly behind Q's plane?",
-    "    4. Q wholly in front of R's plane?",
-    "    5. projections apart?",
-    "    else swap roles, retry 3 and 4:",
-    "      Q must go first: move Q to the head",
-    "      Q moved before (a cycle), or no order:",
-    "        split one by the plane of the other",
-    "  no Q left: draw R (back to front)",
+const Pseudocode<DepthSortEvent> sort_lines = {
+    {"DepthSort(polygonDB):", {}},
+    {"  for each polygon find MINZ and MAXZ; sort, farthest first", {step<ListSorted>()}},
+    {"  R = head of the list; for each Q whose z extent overlaps R's:", {step<PairExamined>()}},
+    {"    1. x extents apart?   2. y extents apart?", {micro<TestTried>([](const TestTried& e) { return e.test == OrderTest::x_extents || e.test == OrderTest::y_extents; })}},
+    {"    3. R wholly behind Q's plane?", {micro<TestTried>([](const TestTried& e) { return e.test == OrderTest::r_behind_q; })}},
+    {"    4. Q wholly in front of R's plane?", {micro<TestTried>([](const TestTried& e) { return e.test == OrderTest::q_in_front_of_r; })}},
+    {"    5. projections apart?", {micro<TestTried>([](const TestTried& e) { return e.test == OrderTest::projections; })}},
+    {"    else swap roles, retry 3 and 4:", {micro<TestTried>()}},
+    {"      Q must go first: move Q to the head", {step<PolygonMoved>()}},
+    {"      Q moved before (a cycle), or no order:", {step<CycleDetected>()}},
+    {"        split one by the plane of the other", {step<PolygonCut>(), step<SortBoundReached>()}},
+    {"  no Q left: draw R (back to front)", {step<PolygonPainted>(), step<DepthSortFinished>()}},
 };
 
 }  // namespace
@@ -78,37 +77,10 @@ std::size_t approx_bytes(const DepthSortView& v) {
 
 DepthSortSession::DepthSortSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
-std::span<const std::string_view> DepthSortSession::pseudocode() const { return sort_lines; }
-
 std::string DepthSortSession::sentence_of(const DepthSortEvent& e, const DepthSortView&) { return describe(e); }
 std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { return sentence_of(e, view()); }
 
-int DepthSortSession::line_of(const DepthSortEvent& event) const {
-    return std::visit(overloaded{
-                          [](const ListSorted&) { return 1; },
-                          [](const PairExamined&) { return 2; },
-                          [](const TestTried& e) {
-                              switch (e.test) {
-                                  case OrderTest::x_extents:
-                                  case OrderTest::y_extents: return 3;
-                                  case OrderTest::r_behind_q: return 4;
-                                  case OrderTest::q_in_front_of_r: return 5;
-                                  case OrderTest::projections: return 6;
-                                  default: return 7;
-                              }
-                          },
-                          [](const PolygonMoved&) { return 8; },
-                          [](const CycleDetected&) { return 9; },
-                          [](const PolygonCut&) { return 10; },
-                          [](const PolygonPainted&) { return 11; },
-                          [](const DepthSortFinished&) { return 11; },
-                          [](const SortBoundReached&) { return 10; },
-                      },
-                      event);
-}
-
-// A Step is a pair, a move, a split or a drawing; the tests within a pair are micro-steps.
-bool DepthSortSession::is_major(const DepthSortEvent& e) const { return !std::holds_alternative<TestTried>(e); }
+const Pseudocode<DepthSortEvent>& DepthSortSession::table() const { return sort_lines; }
 
 const FamilyFacts DepthSortSession::facts = {
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "depth-sort"); },

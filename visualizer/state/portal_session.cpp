@@ -1,7 +1,6 @@
 #include "state/portal_session.h"
 
 #include <algorithm>
-#include <array>
 
 #include "core/overloaded.h"
 #include "scene/random_scene.h"
@@ -11,32 +10,32 @@ namespace {
 
 using namespace hsr::algo;
 
-constexpr std::array<std::string_view, 8> pvs_lines = {
-    "for each cell c:  StabTree(c)",
-    "StabTree(c):  c sees itself; for each portal P out of c: Stab(c, [P])",
-    "Stab(c, portals):",
-    "  if no sightline passes through all the portals: return",
-    "  add the cell c' behind the last portal to PVS(c)",
-    "  for each portal P' out of c' (not back on the way):",
-    "    Stab(c, portals + P')",
-    "the PVS matrix: row c = PVS(c)",
+const Pseudocode<PvsEvent> pvs_lines = {
+    {"for each cell c:  StabTree(c)", {}},
+    {"StabTree(c):  c sees itself; for each portal P out of c: Stab(c, [P])", {step<StabTreeStarted>()}},
+    {"Stab(c, portals):", {}},
+    {"  if no sightline passes through all the portals: return", {step<SightlineTested>()}},
+    {"  add the cell c' behind the last portal to PVS(c)", {micro<CellReached>()}},
+    {"  for each portal P' out of c' (not back on the way):", {}},
+    {"    Stab(c, portals + P')", {step<StabBoundReached>()}},
+    {"the PVS matrix: row c = PVS(c)", {step<PvsBuilt>()}},
 };
 
-constexpr std::array<std::string_view, 14> render_lines = {
-    "main():",
-    "  determine cell c of viewpoint using BSP tree",
-    "  determine PVS of cell c using PVS matrix",
-    "  f = original view frustum; portal_render(c, f, PVS)",
-    "portal_render(cell c, frustum f, list PVS):",
-    "  for each polygon R in c:",
-    "    if (R is portal) & (c' in PVS):",
-    "      f' = clip_frustum(f, R)",
-    "      if (f' <> empty) portal_render(c', f', PVS)",
-    "    else if (R is portal) {}",
-    "    else:  /* R is not portal */",
-    "      if (!back_face(R)):",
-    "        R' = clip_poly(f, R)",
-    "        if (R' <> empty) render(R')",
+const Pseudocode<PortalEvent> render_lines = {
+    {"main():", {}},
+    {"  determine cell c of viewpoint using BSP tree", {step<EyeLocated>()}},
+    {"  determine PVS of cell c using PVS matrix", {step<PvsRowRead>()}},
+    {"  f = original view frustum; portal_render(c, f, PVS)", {step<CellVisited>([](const CellVisited& e) { return e.depth == 0; }), step<PortalRenderFinished>()}},
+    {"portal_render(cell c, frustum f, list PVS):", {}},
+    {"  for each polygon R in c:", {}},
+    {"    if (R is portal) & (c' in PVS):", {}},
+    {"      f' = clip_frustum(f, R)", {step<PortalTested>([](const PortalTested& e) { return e.verdict == PortalVerdict::passed; })}},
+    {"      if (f' <> empty) portal_render(c', f', PVS)", {step<CellVisited>(), step<PortalTested>([](const PortalTested& e) { return e.verdict != PortalVerdict::not_in_pvs; }), step<PortalBoundReached>()}},
+    {"    else if (R is portal) {}", {step<PortalTested>()}},
+    {"    else:  /* R is not portal */", {}},
+    {"      if (!back_face(R)):", {micro<CellPolygonCulled>([](const CellPolygonCulled& e) { return e.reason == CullReason::back_face; })}},
+    {"        R' = clip_poly(f, R)", {}},
+    {"        if (R' <> empty) render(R')", {micro<CellPolygonCulled>(), micro<CellPolygonDrawn>()}},
 };
 
 }  // namespace
@@ -84,24 +83,8 @@ std::size_t approx_bytes(const PvsView& v) {
 
 PvsSession::PvsSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
-std::span<const std::string_view> PvsSession::pseudocode() const { return pvs_lines; }
-
 std::string PvsSession::sentence_of(const PvsEvent& e, const PvsView& view) { return describe(e, view.world->model); }
 std::string PvsSession::describe_event(const PvsEvent& e) const { return sentence_of(e, view()); }
-
-int PvsSession::line_of(const PvsEvent& event) const {
-    return std::visit(overloaded{
-                          [](const StabTreeStarted&) { return 1; },
-                          [](const SightlineTested& e) { return e.found ? 3 : 3; },
-                          [](const CellReached&) { return 4; },
-                          [](const StabBoundReached&) { return 6; },
-                          [](const PvsBuilt&) { return 7; },
-                      },
-                      event);
-}
-
-// A Step is a sightline tested (and what it adds); the cell reached is its micro-step.
-bool PvsSession::is_major(const PvsEvent& e) const { return !std::holds_alternative<CellReached>(e); }
 
 // ── [SECTION] the runtime ───────────────────────────────────────────────────────────────────────────────────
 void reduce(PortalView& v, const PortalEvent& event) {
@@ -188,31 +171,11 @@ void PortalRenderSession::move_eye(Vec2 plan) {
     replace_player(make_player(c));
 }
 
-std::span<const std::string_view> PortalRenderSession::pseudocode() const { return render_lines; }
-
 std::string PortalRenderSession::sentence_of(const PortalEvent& e, const PortalView& view) { return describe(e, view.world->model); }
 std::string PortalRenderSession::describe_event(const PortalEvent& e) const { return sentence_of(e, view()); }
 
-int PortalRenderSession::line_of(const PortalEvent& event) const {
-    return std::visit(overloaded{
-                          [](const EyeLocated&) { return 1; },
-                          [](const PvsRowRead&) { return 2; },
-                          [](const CellVisited& e) { return e.depth == 0 ? 3 : 8; },
-                          [](const PortalTested& e) {
-                              return e.verdict == PortalVerdict::not_in_pvs ? 9 : e.verdict == PortalVerdict::passed ? 7 : 8;
-                          },
-                          [](const CellPolygonCulled& e) { return e.reason == CullReason::back_face ? 11 : 13; },
-                          [](const CellPolygonDrawn&) { return 13; },
-                          [](const PortalBoundReached&) { return 8; },
-                          [](const PortalRenderFinished&) { return 3; },
-                      },
-                      event);
-}
-
-// A Step is a cell visited or a portal tested; each polygon's fate is a micro-step.
-bool PortalRenderSession::is_major(const PortalEvent& e) const {
-    return !std::holds_alternative<CellPolygonCulled>(e) && !std::holds_alternative<CellPolygonDrawn>(e);
-}
+const Pseudocode<PvsEvent>& PvsSession::table() const { return pvs_lines; }
+const Pseudocode<PortalEvent>& PortalRenderSession::table() const { return render_lines; }
 
 const FamilyFacts PvsSession::facts = {
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.pvs.empty(); },

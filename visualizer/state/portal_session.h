@@ -67,12 +67,10 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::PvsEvent& e, const PvsView& view);  // describe(e) naming the cells
-    std::span<const std::string_view> pseudocode() const override;
 
 private:
     std::string describe_event(const algo::PvsEvent& e) const override;
-    int line_of(const algo::PvsEvent& e) const override;
-    bool is_major(const algo::PvsEvent& e) const override;
+    const Pseudocode<algo::PvsEvent>& table() const override;
 };
 
 class PortalRenderSession : public PlayerSession<algo::PortalEvent, algo::PortalRenderResult, PortalView> {
@@ -81,15 +79,13 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::PortalEvent& e, const PortalView& view);  // describe(e) naming the cells
-    std::span<const std::string_view> pseudocode() const override;
     bool bounding_box_frusta() const { return bbox_; }
     // Stand the eye at a new plan point (keeping its height and view direction) and rerun portal_render.
     void move_eye(algo::Vec2 plan_point);
 
 private:
     std::string describe_event(const algo::PortalEvent& e) const override;
-    int line_of(const algo::PortalEvent& e) const override;
-    bool is_major(const algo::PortalEvent& e) const override;
+    const Pseudocode<algo::PortalEvent>& table() const override;
     PlayerType make_player(const algo::Camera& camera) const;
     std::shared_ptr<const PortalWorld> world_;
     bool bbox_;

@@ -1,26 +1,22 @@
 #include "state/raycast_session.h"
 
-#include <array>
-
-#include "core/overloaded.h"
-
 namespace hsr::viz {
 namespace {
 
 using namespace hsr::algo;
 
 // The lecture's RayCasting; with a grid, the primitives of a ray are those of the cells it walks.
-constexpr std::array<std::string_view, 10> cast_lines = {
-    "RayCasting(primitiveDB, v):",
-    "  for each pixel p:",
-    "    minp = MAXINT",
-    "    for each cell C the ray (v, p) walks:   /* or: every primitive */",
-    "      for each primitive R in C:",
-    "        I = intersect_primitive_ray(R, v, p)",
-    "        if (|I - v| < minp):",
-    "          p -> nearest_primitive = R;  minp = |I - v|",
-    "      if (minp is inside C): stop walking",
-    "    p sees p -> nearest_primitive",
+const Pseudocode<RayCastEvent> cast_lines = {
+    {"RayCasting(primitiveDB, v):", {}},
+    {"  for each pixel p:", {step<CastFinished>(), step<CastStepBoundReached>()}},
+    {"    minp = MAXINT", {micro<RayStarted>()}},
+    {"    for each cell C the ray (v, p) walks:   /* or: every primitive */", {micro<CellEntered>(), micro<NodeEntered>()}},
+    {"      for each primitive R in C:", {}},
+    {"        I = intersect_primitive_ray(R, v, p)", {micro<PrimitiveTested>()}},
+    {"        if (|I - v| < minp):", {}},
+    {"          p -> nearest_primitive = R;  minp = |I - v|", {micro<NearerHitFound>()}},
+    {"      if (minp is inside C): stop walking", {}},
+    {"    p sees p -> nearest_primitive", {step<RayFinished>()}},
 };
 
 }  // namespace
@@ -41,30 +37,10 @@ RayCastSession::RayCastSession(Lesson lesson, PlayerOptions options)
     : PlayerSession(lesson, machine(lesson), options),
       scene_(grid_scene(lesson)) {}
 
-std::span<const std::string_view> RayCastSession::pseudocode() const { return cast_lines; }
-
 std::string RayCastSession::sentence_of(const RayCastEvent& e, const RayView&) { return describe(e); }
 std::string RayCastSession::describe_event(const RayCastEvent& e) const { return sentence_of(e, view()); }
 
-int RayCastSession::line_of(const RayCastEvent& event) const {
-    return std::visit(overloaded{
-                          [](const RayStarted&) { return 2; },
-                          [](const CellEntered&) { return 3; },
-                          [](const NodeEntered&) { return 3; },
-                          [](const PrimitiveTested&) { return 5; },
-                          [](const NearerHitFound&) { return 7; },
-                          [](const RayFinished&) { return 9; },
-                          [](const CastFinished&) { return 1; },
-                          [](const CastStepBoundReached&) { return 1; },
-                      },
-                      event);
-}
-
-// A Step is a ray; the cells and tests along it are micro-steps.
-bool RayCastSession::is_major(const RayCastEvent& e) const {
-    return std::holds_alternative<RayFinished>(e) || std::holds_alternative<CastFinished>(e) ||
-           std::holds_alternative<CastStepBoundReached>(e);
-}
+const Pseudocode<RayCastEvent>& RayCastSession::table() const { return cast_lines; }
 
 const FamilyFacts RayCastSession::facts = {
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) {  // the reference every image is measured against

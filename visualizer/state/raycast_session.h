@@ -14,13 +14,11 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::RayCastEvent& e, const RayView& view);  // describe(e), as the view after it names things
-    std::span<const std::string_view> pseudocode() const override;
     const algo::Scene& scene() const { return scene_; }  // the lesson's, with the grid's aspect
 
 private:
     std::string describe_event(const algo::RayCastEvent& e) const override;
-    int line_of(const algo::RayCastEvent& e) const override;
-    bool is_major(const algo::RayCastEvent& e) const override;
+    const Pseudocode<algo::RayCastEvent>& table() const override;
 
     algo::Scene scene_;
 };

@@ -14,12 +14,10 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::ScanLineEvent& e, const ScanView& view);  // describe(e), as the view after it names things
-    std::span<const std::string_view> pseudocode() const override;
 
 private:
     std::string describe_event(const algo::ScanLineEvent& e) const override;
-    int line_of(const algo::ScanLineEvent& e) const override;
-    bool is_major(const algo::ScanLineEvent& e) const override;
+    const Pseudocode<algo::ScanLineEvent>& table() const override;
 };
 
 }  // namespace hsr::viz

@@ -10,6 +10,7 @@
 
 #include "state/lesson.h"
 #include "state/player.h"
+#include "state/pseudocode.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -83,9 +84,10 @@ public:
     void prefetch(std::size_t n) override { player_.prefetch(n); }
     std::string sentence(std::size_t k) const override { return describe_event(player_.event(k)); }
     std::string event_line(std::size_t k) const override { return trace_line(k, player_.event(k), sentence(k)); }
+    std::span<const std::string_view> pseudocode() const override { return table().text(); }
     int current_line() const override {
         const auto e = player_.last_applied();
-        return e ? line_of(*e) : -1;
+        return e ? table().line_of(*e) : -1;
     }
 
 protected:
@@ -100,8 +102,10 @@ protected:
         player_.seek(k);
     }
     virtual std::string describe_event(const Event& e) const = 0;
-    virtual int line_of(const Event& e) const = 0;
-    virtual bool is_major(const Event& e) const = 0;
+    // The pseudocode shown now, with the events that light each line and whether they are Steps.
+    virtual const Pseudocode<Event>& table() const = 0;
+    // A Step stops after a major event, a micro-step after any; an event no line names is a Step.
+    virtual bool is_major(const Event& e) const { return table().is_major(e).value_or(true); }
 
 private:
     PlayerType player_;

@@ -1,12 +1,10 @@
 #include "state/zbuffer_session.h"
 
 #include <algorithm>
-#include <array>
 
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/overloaded.h"
 #include "raycast/ray_cast.h"
 #include "core/numeric.h"
 #include "scene/load_scene.h"
@@ -17,17 +15,17 @@ namespace {
 using namespace hsr::algo;
 
 // The lectures' zBuffer(), with the depth stepped by the plane equation's forward difference.
-constexpr std::array<std::string_view, 10> fill_lines = {
-    "for all pixels (x, y):",
-    "  Depth[x, y] = far;  Image[x, y] = background",
-    "for each polygon P:",
-    "  for each scan line y that P covers:",
-    "    [x0, x1) = pixels of y inside P     /* top-left rule */",
-    "    z = depth of P at (x0, y)",
-    "    for x = x0 .. x1 - 1:",
-    "      if (z nearer than Depth[x, y]):",
-    "        Image[x, y] = colour of P;  Depth[x, y] = z",
-    "      z = z + (-a/c)                   /* forward difference */",
+const Pseudocode<ZBufferEvent> fill_lines = {
+    {"for all pixels (x, y):", {}},
+    {"  Depth[x, y] = far;  Image[x, y] = background", {step<BufferCleared>()}},
+    {"for each polygon P:", {step<PolygonFillStarted>(), step<PolygonSkipped>(), step<PolygonFillFinished>(), step<FillFinished>()}},
+    {"  for each scan line y that P covers:", {}},
+    {"    [x0, x1) = pixels of y inside P     /* top-left rule */", {}},
+    {"    z = depth of P at (x0, y)", {step<SpanStarted>()}},
+    {"    for x = x0 .. x1 - 1:", {step<FillStepBoundReached>()}},
+    {"      if (z nearer than Depth[x, y]):", {micro<PixelTested>()}},
+    {"        Image[x, y] = colour of P;  Depth[x, y] = z", {micro<DepthWritten>()}},
+    {"      z = z + (-a/c)                   /* forward difference */", {micro<DepthTestFailed>()}},
 };
 
 // The fill of a scene (the lesson's, or as edited) into the grid, pixel by pixel.
@@ -154,32 +152,10 @@ void ZBufferSession::set_range(DepthRange r) {
     rerun();
 }
 
-std::span<const std::string_view> ZBufferSession::pseudocode() const { return fill_lines; }
-
 std::string ZBufferSession::sentence_of(const ZBufferEvent& e, const ZView& view) { return describe(e, view.format); }
 std::string ZBufferSession::describe_event(const ZBufferEvent& e) const { return sentence_of(e, view()); }
 
-int ZBufferSession::line_of(const ZBufferEvent& event) const {
-    return std::visit(overloaded{
-                          [](const BufferCleared&) { return 1; },
-                          [](const PolygonFillStarted&) { return 2; },
-                          [](const PolygonSkipped&) { return 2; },
-                          [](const SpanStarted&) { return 5; },
-                          [](const PixelTested&) { return 7; },
-                          [](const DepthWritten&) { return 8; },
-                          [](const DepthTestFailed&) { return 9; },
-                          [](const PolygonFillFinished&) { return 2; },
-                          [](const FillFinished&) { return 2; },
-                          [](const FillStepBoundReached&) { return 6; },
-                      },
-                      event);
-}
-
-// A Step is a span (or a polygon's start and end); the pixels inside it are micro-steps.
-bool ZBufferSession::is_major(const ZBufferEvent& e) const {
-    return !std::holds_alternative<PixelTested>(e) && !std::holds_alternative<DepthWritten>(e) &&
-           !std::holds_alternative<DepthTestFailed>(e);
-}
+const Pseudocode<ZBufferEvent>& ZBufferSession::table() const { return fill_lines; }
 
 const FamilyFacts ZBufferSession::facts = {
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "zbuffer"); },

@@ -21,7 +21,6 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::ZBufferEvent& e, const ZView& view);  // describe(e)
-    std::span<const std::string_view> pseudocode() const override;
 
     algo::DepthFormat format() const { return view().format; }
     algo::DepthRange range() const { return view().range; }
@@ -46,8 +45,7 @@ public:
 
 private:
     std::string describe_event(const algo::ZBufferEvent& e) const override;
-    int line_of(const algo::ZBufferEvent& e) const override;
-    bool is_major(const algo::ZBufferEvent& e) const override;
+    const Pseudocode<algo::ZBufferEvent>& table() const override;
     void rerun();
     bool edit(algo::Scene edited, std::optional<std::pair<std::size_t, std::size_t>> moved = std::nullopt);
     glm::dvec4 world_at(glm::dvec2 pixel, double depth) const;  // the inverse of on_screen

@@ -1,7 +1,5 @@
 #include "state/zmerge_session.h"
 
-#include <array>
-
 #include "core/overloaded.h"
 
 namespace hsr::viz {
@@ -9,13 +7,13 @@ namespace {
 
 using namespace hsr::algo;
 
-constexpr std::array<std::string_view, 6> merge_lines = {
-    "for (x = 0; x < XRES; x++)",
-    "  for (y = 0; y < YRES; y++) {",
-    "    Fc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Fa[x, y] : Fb[x, y];",
-    "    Zc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Za[x, y] : Zb[x, y];",
-    "  }",
-    "/* nearer: a smaller code here; the lecture's depths fall with distance */",
+const Pseudocode<ZMergeEvent> merge_lines = {
+    {"for (x = 0; x < XRES; x++)", {}},
+    {"  for (y = 0; y < YRES; y++) {", {}},
+    {"    Fc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Fa[x, y] : Fb[x, y];", {step<PixelMerged>([](const PixelMerged& e) { return e.y == 0; }), micro<PixelMerged>()}},
+    {"    Zc[x, y] = (Za[x, y] nearer than Zb[x, y]) ? Za[x, y] : Zb[x, y];", {}},
+    {"  }", {step<MergeFinished>()}},
+    {"/* nearer: a smaller code here; the lecture's depths fall with distance */", {}},
 };
 
 }  // namespace
@@ -63,21 +61,10 @@ std::size_t approx_bytes(const ZMergeView& v) { return sizeof(ZMergeView) + v.me
 
 ZMergeSession::ZMergeSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
 
-std::span<const std::string_view> ZMergeSession::pseudocode() const { return merge_lines; }
-
 std::string ZMergeSession::sentence_of(const ZMergeEvent& e, const ZMergeView&) { return describe(e); }
 std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return sentence_of(e, view()); }
 
-int ZMergeSession::line_of(const ZMergeEvent& event) const {
-    return std::visit(overloaded{[](const PixelMerged&) { return 2; }, [](const MergeFinished&) { return 4; }},
-                      event);
-}
-
-// A Step is a column (the lecture's outer loop): its first pixel; the pixels below it are micro-steps.
-bool ZMergeSession::is_major(const ZMergeEvent& e) const {
-    const auto* p = std::get_if<PixelMerged>(&e);
-    return !p || p->y == 0;
-}
+const Pseudocode<ZMergeEvent>& ZMergeSession::table() const { return merge_lines; }
 
 const FamilyFacts ZMergeSession::facts = {
     .speaks_to = [](const algo::Scene&, const algo::AlgorithmInfo&) { return false; },

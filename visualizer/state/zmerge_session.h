@@ -34,12 +34,10 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::ZMergeEvent& e, const ZMergeView& view);  // describe(e), as the view after it names things
-    std::span<const std::string_view> pseudocode() const override;
 
 private:
     std::string describe_event(const algo::ZMergeEvent& e) const override;
-    int line_of(const algo::ZMergeEvent& e) const override;
-    bool is_major(const algo::ZMergeEvent& e) const override;
+    const Pseudocode<algo::ZMergeEvent>& table() const override;
 };
 
 }  // namespace hsr::viz
