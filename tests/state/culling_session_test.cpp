@@ -58,3 +58,15 @@ TEST_CASE("seeking a culling lesson equals folding it from the start", "[state][
         REQUIRE(a.rendered == b.rendered);
     }
 }
+
+TEST_CASE("the Hi-Z lesson's Z-pyramid is built from the depth the machine itself rendered", "[state][culling]") {
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/25_culling_hiz.toml");
+    HizSession s(lesson);
+    const CullingView& v = s.view();
+    const std::vector<std::uint32_t> cleared = rendered_depth(v);
+    REQUIRE(cleared.size() == std::size_t(v.world->zbuffer.viewport.width) * std::size_t(v.world->zbuffer.viewport.height));
+    s.seek_end();
+    const HizResult r = hiz_render(&v.world->scene, &v.world->hierarchy, v.world->zbuffer).run_to_end();
+    CHECK(rendered_depth(v) == r.buffers.depth);
+    CHECK(rendered_depth(v) != cleared);
+}

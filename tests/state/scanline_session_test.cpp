@@ -1,4 +1,6 @@
 // Scan-line lessons: the image folded from the spans is the z-buffer's, and the active edge table empties.
+#include <algorithm>
+
 #include "catch.h"
 #include "state/families.h"
 #include "state/scanline_session.h"
@@ -50,4 +52,19 @@ TEST_CASE("a depth-sort lesson folds to the machine's order and parts", "[state]
     CHECK(s->view().splits == r.splits);
     CHECK(r.splits >= 1);  // the bars cannot be ordered whole
     for (std::size_t i = 0; i < r.polygons.size(); ++i) CHECK(s->view().polygons[i].vertices == r.polygons[i].vertices);
+}
+
+TEST_CASE("a depth-sort lesson's painting so far grows with the polygons drawn", "[state][depth-sort]") {
+    DepthSortSession s(load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml"));
+    const Viewport size{48, 48};
+    const Image empty = painted_so_far(s.view(), size);
+    CHECK(std::all_of(empty.ids.begin(), empty.ids.end(), [](SceneId id) { return id == 0; }));
+    s.seek_end();
+    REQUIRE_FALSE(s.view().drawn.empty());
+    const Image all = painted_so_far(s.view(), size);
+    CHECK(all.ids != empty.ids);
+    // painting one polygon fewer changes the picture (the last one drawn is seen somewhere)
+    DepthSortView fewer = s.view();
+    fewer.drawn.pop_back();
+    CHECK(painted_so_far(fewer, size).ids != all.ids);
 }

@@ -99,28 +99,9 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     ImGui::End();
 }
 
-void culling_canvas(const CullingLesson& s, float x, float y, float w, float h) {
-    if (s.culling_machine() != algo::CullingMachine::hiz) return;
-    const CullingView& v = s.culling_view();
-    // The depth buffer of what has been rendered so far, and its pyramid (cached while the step stays)
-    struct Cache {
-        const CullingView* view = nullptr;
-        std::size_t rendered = SIZE_MAX;
-        std::vector<std::uint32_t> depth;
-    };
-    static Cache cache;
+void zpyramid_canvas(const CullingView& v, const std::vector<std::uint32_t>& depth, float x, float y, float w, float h) {
     const algo::ZBufferOptions& o = v.world->zbuffer;
-    if (cache.view != &v || cache.rendered != v.rendered.size()) {
-        algo::FrameDepth f = algo::cleared_buffers(o);
-        for (std::uint32_t p : v.rendered) {
-            const auto& poly = v.world->scene.polygons[p];
-            std::vector<glm::dvec4> clip;
-            for (const auto& q : poly.vertices) clip.push_back(algo::to_clip(v.world->scene, q));
-            algo::fill_polygon(f, algo::project_polygon(poly.id, poly.color, std::move(clip), o.viewport), std::int32_t(p), o);
-        }
-        cache = {&v, v.rendered.size(), std::move(f.depth)};
-    }
-    const algo::ZPyramid pyramid(cache.depth, o.viewport.width, o.viewport.height);
+    const algo::ZPyramid pyramid(depth, o.viewport.width, o.viewport.height);
     const std::uint64_t far = algo::far_code(o.format, o.range);
     ImDrawList* d = begin_canvas("##zpyramid", x, y, w, h);
     const float cell = 2;

@@ -3,13 +3,17 @@
 // (bounds lesson), and the Z-pyramid's levels as images (hierarchical z-buffer lesson).
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "panels/lesson_panels.h"
 #include "state/culling_session.h"
 
 namespace hsr::viz {
 
 void culling_state_panel(const CullingLesson& s, const PanelLayout& layout);
-// Over the view area: the Z-pyramid's finest levels, built from what has been rendered so far (Hi-Z lesson only).
-void culling_canvas(const CullingLesson& s, float x, float y, float w, float h);
+// Over the view area: the Z-pyramid's finest levels, built from `depth`, the depth buffer of what has been rendered
+// so far (rendered_depth: the Hi-Z lesson).
+void zpyramid_canvas(const CullingView& view, const std::vector<std::uint32_t>& depth, float x, float y, float w, float h);
 
 }  // namespace hsr::viz

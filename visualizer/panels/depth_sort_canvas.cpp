@@ -24,23 +24,16 @@ const ImU32 cut_colour = IM_COL32(214, 94, 0, 255);   // vermillion
 const ImU32 text_colour = IM_COL32(220, 220, 220, 255);
 const ImU32 dim_colour = IM_COL32(150, 153, 160, 255);
 
-// Where each chip is drawn now, by polygon index; chips ease towards their place in the list, so that a move to
-// the head or the parts of a cut slide into place instead of jumping. The state belongs to the drawing only.
-struct ChipAnimation {
-    const DepthSortSession* session = nullptr;
-    std::vector<float> x;
-};
-
 float ease(float from, float to, bool animate) {
     if (!animate) return to;
     const float k = 1 - std::exp(-ImGui::GetIO().DeltaTime * 9);
     return from + (to - from) * std::clamp(k, 0.0f, 1.0f);
 }
 
-void display_list(const DepthSortSession& s, ImDrawList* d, ImVec2 at, float w, bool animate) {
-    static ChipAnimation anim;
+// Chips ease towards their place in the list, so that a move to the head or the parts of a cut slide into place
+// instead of jumping.
+void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, ImVec2 at, float w, bool animate) {
     const DepthSortView& v = s.view();
-    if (anim.session != &s) anim = {&s, {}};
     anim.x.resize(v.polygons.size(), NAN);
     const std::size_t n = v.drawn.size() + v.list.size();
     const float gap = 26, chip = std::clamp((w - gap) / float(std::max<std::size_t>(n, 1)) - 4, 8.0f, 46.0f);
@@ -128,32 +121,15 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
                        t.passed ? "5: projections apart" : "5: projections overlap");
 }
 
-// The image painted so far: the drawn polygons in their order, each "over" what is there. Repainted only when the
-// drawn list changes (stepping, scrubbing or a reload).
-void painting(const DepthSortSession& s, ImDrawList* d, ImVec2 o, float size) {
-    struct Cache {
-        const DepthSortSession* session = nullptr;
-        std::vector<std::uint32_t> drawn;
-        algo::Image image{0, 0};
-    };
-    static Cache cache;
-    const DepthSortView& v = s.view();
-    const algo::Viewport vp{96, 96};
-    if (cache.session != &s || cache.drawn != v.drawn || cache.image.width != vp.width) {
-        cache = {&s, v.drawn, algo::Image(vp.width, vp.height, {26, 28, 33})};
-        for (std::uint32_t i : v.drawn) {
-            std::vector<glm::dvec4> ndc;
-            for (const auto& p : v.polygons[i].vertices) ndc.emplace_back(p, 1.0);
-            algo::paint_clip_polygon(cache.image, std::move(ndc), v.polygons[i].id, v.polygons[i].color, v.polygons[i].opacity);
-        }
-    }
+// The image painted so far: the drawn polygons in their order, each "over" what is there.
+void painting(const algo::Image& image, ImDrawList* d, ImVec2 o, float size) {
     d->AddText(ImVec2(o.x, o.y - 20), text_colour, "painted so far (over)");
-    const float cell = size / float(vp.width);
-    for (int y = 0; y < vp.height; ++y)  // runs of one colour along a row, one rectangle each
-        for (int x0 = 0; x0 < vp.width;) {
-            const auto px = [&](int x) { return &cache.image.rgb[3 * (std::size_t(y) * std::size_t(vp.width) + std::size_t(x))]; };
+    const float cell = size / float(std::max(image.width, 1));
+    for (int y = 0; y < image.height; ++y)  // runs of one colour along a row, one rectangle each
+        for (int x0 = 0; x0 < image.width;) {
+            const auto px = [&](int x) { return &image.rgb[3 * (std::size_t(y) * std::size_t(image.width) + std::size_t(x))]; };
             int x1 = x0 + 1;
-            while (x1 < vp.width && std::equal(px(x1), px(x1) + 3, px(x0))) ++x1;
+            while (x1 < image.width && std::equal(px(x1), px(x1) + 3, px(x0))) ++x1;
             d->AddRectFilled(ImVec2(o.x + float(x0) * cell, o.y + float(y) * cell), ImVec2(o.x + float(x1) * cell, o.y + float(y + 1) * cell),
                              IM_COL32(px(x0)[0], px(x0)[1], px(x0)[2], 255));
             x0 = x1;
@@ -163,12 +139,13 @@ void painting(const DepthSortSession& s, ImDrawList* d, ImVec2 o, float size) {
 
 }  // namespace
 
-void depth_sort_canvas(const DepthSortSession& s, float x, float y, float w, float h, bool animate) {
+void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo::Image& painted, float x, float y, float w,
+                       float h, bool animate) {
     ImDrawList* d = begin_canvas("##depth sort canvas", x, y, w, h);
-    display_list(s, d, ImVec2(x + 16, y + 10), w - 32, animate);
+    display_list(s, chips, d, ImVec2(x + 16, y + 10), w - 32, animate);
     const float size = std::clamp(std::min(w * 0.26f, h * 0.28f), 110.0f, 240.0f);
     screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
-    painting(s, d, ImVec2(x + w - size - 16, y + h - size - 34), size);
+    painting(painted, d, ImVec2(x + w - size - 16, y + h - size - 34), size);
     ImGui::End();
 }
 

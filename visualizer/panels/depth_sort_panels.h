@@ -4,13 +4,22 @@
 #pragma once
 
 #include "panels/lesson_panels.h"
+#include <vector>
+
+#include "raster/image.h"
 #include "state/depth_sort_session.h"
 
 namespace hsr::viz {
 
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& layout);
-// Over the view area (x, y, w, h): the display list along the top, the screen bottom left, the painting bottom right.
-// With `animate` off (screenshots, recordings) the chips of the list stand in their places at once.
-void depth_sort_canvas(const DepthSortSession& s, float x, float y, float w, float h, bool animate);
+// Where each chip of the display list is drawn now, by polygon index (NaN: not placed yet); its screen keeps it
+// between frames.
+struct ChipPlaces {
+    std::vector<float> x;
+};
+// Over the view area (x, y, w, h): the display list along the top, the screen bottom left, `painted` (the image
+// painted so far) bottom right. With `animate` off (screenshots, recordings) the chips stand in their places at once.
+void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo::Image& painted, float x, float y, float w,
+                       float h, bool animate);
 
 }  // namespace hsr::viz

@@ -14,7 +14,8 @@ template <class Event, class Result>
 class Screen<CullingSession<Event, Result>> : public ScreenDefaults {
 public:
     using S = CullingSession<Event, Result>;
-    void frame(const S& s, OrbitCamera& camera) const {
+    void frame(const S& s, OrbitCamera& camera) {
+        depth_for_.reset();
         glm::vec3 centre(0);
         float radius = 1;
         culling_view_bounds(s.view(), centre, radius);
@@ -33,10 +34,17 @@ public:
             f.view_projection = glm::mat4(algo::view_projection(eye));
         }
     }
-    void draw_panels(const S& s, PanelFrame& f) const {
-        culling_canvas(s, 0, 0, f.view_w, f.view_h);
+    void draw_panels(const S& s, PanelFrame& f) {
+        if (s.culling_machine() == algo::CullingMachine::hiz) {  // the Z-pyramid, rebuilt when a primitive is rendered
+            if (depth_for_ != s.view().rendered.size()) depth_ = rendered_depth(s.view()), depth_for_ = s.view().rendered.size();
+            zpyramid_canvas(s.view(), depth_, 0, 0, f.view_w, f.view_h);
+        }
         culling_state_panel(s, f.layout);
     }
+
+private:
+    std::vector<std::uint32_t> depth_;     // the depth buffer of the primitives rendered so far (Hi-Z)
+    std::optional<std::size_t> depth_for_;  // how many primitives depth_ holds
 };
 
 }  // namespace hsr::viz

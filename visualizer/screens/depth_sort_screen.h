@@ -12,18 +12,28 @@ namespace hsr::viz {
 template <>
 class Screen<DepthSortSession> : public ScreenDefaults {
 public:
-    void frame(const DepthSortSession&, OrbitCamera& camera) const {  // the canonical view volume, from the eye's side
+    void frame(const DepthSortSession&, OrbitCamera& camera) {  // the canonical view volume, from the eye's side
         camera.yaw = 0.55f, camera.pitch = 0.35f;
         frame_bounds(camera, glm::vec3(0), 1.6f);
+        chips_ = {}, painted_for_.reset();
     }
     void draw_scene(const DepthSortSession& s, SceneFrame& f) const {
         draw_depth_sort_view(s.view(), f.batches, f.labels);
         f.detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
     }
-    void draw_panels(const DepthSortSession& s, PanelFrame& f) const {
-        depth_sort_canvas(s, 0, 0, f.view_w, f.view_h, f.animate);
+    void draw_panels(const DepthSortSession& s, PanelFrame& f) {
+        if (painted_for_ != s.view().drawn) {  // repainted only when the drawn list changes (a step, a seek, a reload)
+            painted_ = painted_so_far(s.view(), {96, 96});
+            painted_for_ = s.view().drawn;
+        }
+        depth_sort_canvas(s, chips_, painted_, 0, 0, f.view_w, f.view_h, f.animate);
         depth_sort_state_panel(s, f.layout);
     }
+
+private:
+    ChipPlaces chips_;
+    algo::Image painted_{0, 0};
+    std::optional<std::vector<std::uint32_t>> painted_for_;  // the drawn list painted_ shows
 };
 
 }  // namespace hsr::viz

@@ -49,6 +49,18 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     return w;
 }
 
+std::vector<std::uint32_t> rendered_depth(const CullingView& v) {
+    const ZBufferOptions& o = v.world->zbuffer;
+    FrameDepth f = cleared_buffers(o);
+    for (std::uint32_t p : v.rendered) {
+        const auto& poly = v.world->scene.polygons[p];
+        std::vector<glm::dvec4> clip;
+        for (const auto& q : poly.vertices) clip.push_back(to_clip(v.world->scene, q));
+        fill_polygon(f, project_polygon(poly.id, poly.color, std::move(clip), o.viewport), std::int32_t(p), o);
+    }
+    return std::move(f.depth);
+}
+
 std::size_t approx_bytes(const CullingView& v) {
     return sizeof(CullingView) + v.nodes.capacity() + v.primitives.capacity() + (v.occluders.capacity() + v.rendered.capacity()) * 4;
 }

@@ -43,6 +43,9 @@ void reduce(CullingView& view, const algo::HierarchyCullEvent& event);
 void reduce(CullingView& view, const algo::OcclusionEvent& event);
 void reduce(CullingView& view, const algo::HizEvent& event);
 
+// Hi-Z: the depth buffer of the primitives rendered so far (the Z-pyramid is built from it).
+std::vector<std::uint32_t> rendered_depth(const CullingView& view);
+
 // The world a culling lesson plays in (its hierarchy: a BVH for the bounds lesson, else an octree).
 std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson);
 

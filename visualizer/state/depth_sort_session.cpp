@@ -68,6 +68,16 @@ void reduce(DepthSortView& v, const DepthSortEvent& event) {
                event);
 }
 
+algo::Image painted_so_far(const DepthSortView& v, algo::Viewport size) {
+    algo::Image image(size.width, size.height, {26, 28, 33});
+    for (std::uint32_t i : v.drawn) {
+        std::vector<glm::dvec4> ndc;
+        for (const auto& p : v.polygons[i].vertices) ndc.emplace_back(p, 1.0);
+        algo::paint_clip_polygon(image, std::move(ndc), v.polygons[i].id, v.polygons[i].color, v.polygons[i].opacity);
+    }
+    return image;
+}
+
 std::size_t approx_bytes(const DepthSortView& v) {
     std::size_t b = sizeof(DepthSortView) + (v.list.capacity() + v.drawn.capacity()) * sizeof(std::uint32_t) +
                     v.tests.capacity() * sizeof(TestTried);

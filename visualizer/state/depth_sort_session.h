@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "depth_sort/depth_sort.h"
+#include "raster/image.h"
 #include "state/family_facts.h"
 #include "state/session.h"
 
@@ -22,6 +23,8 @@ struct DepthSortView {
 };
 
 void reduce(DepthSortView& view, const algo::DepthSortEvent& event);
+// The image the drawn polygons make so far, each painted "over" what is there, at `size` pixels (x, y in [-1, 1]).
+algo::Image painted_so_far(const DepthSortView& view, algo::Viewport size);
 std::size_t approx_bytes(const DepthSortView& view);
 
 class DepthSortSession : public PlayerSession<algo::DepthSortEvent, algo::DepthSortResult, DepthSortView> {
