@@ -61,8 +61,9 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_LEFTBRACKET: a.column_narrower = true; break;
         case SDLK_RIGHTBRACKET: a.column_wider = true; break;
         case SDLK_b: a.back_to_lesson = true; break;
+        case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_0: a.digit = 0; break;
-        default:  // 1 … 9: a question's choice; 3 alone: z-buffer fat pixels or 3D, portals plan or 3D, culling god's eye or camera
+        default:  // 1 … 9: a question's choice (or a preset while the presets show)
             if (e.key.keysym.sym >= SDLK_1 && e.key.keysym.sym <= SDLK_9) a.digit = int(e.key.keysym.sym - SDLK_0);
             break;
     }
@@ -138,7 +139,8 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     if (lp.show_presets)
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
     narration_panel(s, layout);
-    timeline_panel(s, lp.playback, layout, actions);
+    const Question* open = lp.classroom.open_question(s);
+    timeline_panel(s, lp.playback, open ? open->choices.size() : 0, layout, actions);
 }
 
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
@@ -197,6 +199,7 @@ int run_app(const AppOptions& o) {
             lp.classroom.next_language();  // the language last chosen, where the lesson has it
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
+        lp.questions_hold = !o.record_dir && !o.gif;  // recordings and slides show the whole lesson
         std::optional<GifWriter> gif;  // half the drawable's size (made at the first frame): enough for slides
         bool gif_failed = false;
         if (o.gif && lp.session()) lp.session()->seek(std::min(o.gif_from, lp.session()->known()));
@@ -275,8 +278,8 @@ int run_app(const AppOptions& o) {
             }
             if (o.screenshot && frame >= std::uint64_t(o.frames)) {
                 if (const Session* s = lp.session())
-                    std::printf("hsrviz: at step %zu of %zu%s, %s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
-                                lp.playback.playing ? "playing" : "paused");
+                    std::printf("hsrviz: at step %zu of %zu%s, %s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
+                                lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "");
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
@@ -292,12 +295,8 @@ int run_app(const AppOptions& o) {
                 frame_ms.push_back(1000.0 * double(now - frame_start) / double(SDL_GetPerformanceFrequency()));
                 frame_start = now;
             }
-            // Carry the panels' requests into the next update
-            if (from_panels.toggle_play || from_panels.step || from_panels.step_back || from_panels.micro_step ||
-                from_panels.micro_step_back || from_panels.to_start || from_panels.to_end || from_panels.seek ||
-                from_panels.speed || from_panels.reload || from_panels.move_eye || from_panels.preset || from_panels.random_scene ||
-                from_panels.back_to_lesson)
-                lp.update(from_panels, 0, o);
+            // Carry out the panels' requests (buttons, an answer clicked, the depth format, the 3D checkbox, a dragged eye)
+            lp.update(from_panels, 0, o);
         }
 
         // What the run wrote

@@ -86,12 +86,11 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     }
     if (!session()) return;
     Session& p = *session();
-    // the classroom: a number answers an open question (else 3 is the 3D key), chapters, language
+    // the classroom: a number answers the open question (and does nothing else), chapters, language
     std::optional<std::string> answer = a.answer;
-    bool toggle_3d = a.toggle_3d || (a.digit == 3 && !classroom.open_question(p));
     if (a.digit)
         if (const Question* q = classroom.open_question(p); q && *a.digit >= 1 && std::size_t(*a.digit) <= q->choices.size())
-            answer = q->choices[std::size_t(*a.digit - 1)], toggle_3d = a.toggle_3d;
+            answer = q->choices[std::size_t(*a.digit - 1)];
     if (answer) {
         if (const auto v = classroom.answer(p, *answer))
             std::printf("hsrviz: answered \"%s\": %s, the machine says \"%s\"\n", answer->c_str(), v->right ? "right" : "wrong", v->answer.c_str());
@@ -104,7 +103,7 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
     if (a.export_all) export_pending = true;
     if (a.close_overlays) show_keys = show_presets = show_report = false;
-    if (toggle_3d) second_view = !second_view;
+    if (a.toggle_3d) second_view = !second_view;
     // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
     // machine reruns, and the classroom follows the new events
     with_family_screen([&](auto& s, auto& screen) {
@@ -117,7 +116,8 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     if (animate && may_move) with_family_screen([](auto& s, auto& screen) { screen.before_step(s); });
     const std::size_t cursor = p.cursor();
     if (a.speed) playback.speed = *a.speed;
-    if (a.toggle_play) playback.playing = !playback.playing && !p.at_end();
+    const bool waiting = questions_hold && classroom.hold(cursor) == cursor;  // a question waits for its answer here
+    if (a.toggle_play) playback.playing = !playback.playing && !p.at_end() && !waiting;
     if (a.step) p.step();
     if (a.step_back) p.step_back();
     if (a.micro_step) p.micro_step();
@@ -141,6 +141,13 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
             p.seek(*stop);
             playback.playing = false;
         }
+    // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
+    if (questions_hold && p.cursor() > cursor)
+        if (const auto hold = classroom.hold(cursor); hold && p.cursor() > *hold) {
+            p.seek(*hold);
+            playback.playing = false;
+        }
+    classroom.close_revealed(p);
     with_family_screen([&](auto& s, auto& screen) { screen.after_step(s, p.cursor() != cursor, dt); });
 }
 

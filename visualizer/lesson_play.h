@@ -24,7 +24,8 @@ struct Lessonplay {
     PlaybackState playback;
     OrbitCamera camera;
     bool animate = true;                  // off for screenshots and recordings: they show each step as it ends
-    bool second_view = false;             // key 3: the family's other view (z-buffer 3D, portals walk-through, culling camera)
+    bool second_view = false;             // V: the family's other view (z-buffer 3D, portals walk-through, culling camera)
+    bool questions_hold = true;           // a move forward stops before the event that answers an open question
     Classroom classroom;                  // chapters, questions, language, score
     FileWatch watch;                      // the lesson and scene files: edited on disk, reloaded
     bool show_keys = false;               // F1

@@ -44,11 +44,11 @@ case "$case" in
     test "$(echo "$a" | sed 's/.*hash \([0-9a-f]*\).*/\1/')" != "$(echo "$c" | sed 's/.*hash \([0-9a-f]*\).*/\1/')"
     test "$(wc -l < a.jsonl)" -eq "$(echo "$a" | cut -d' ' -f1)" ;;
   keys)  # the keys a student expects: → and ← step, Shift for one event, Home/End, Space plays
-    lesson="$src/lessons/01_cohen_sutherland.toml"
+    lesson="$src/lessons/02_liang_barsky.toml"   # no questions: nothing holds the player (the questions case)
     at() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p'; }
     micro5=$(at 8 Shift+Right,Shift+Right,Shift+Right,Shift+Right,Shift+Right)
     test "$micro5" -eq 5
-    # a Step skips minor events (each outcode is one), so four Steps pass more than four events
+    # a Step skips minor events (each parameter update is one), so four Steps pass more than four events
     four=$(at 7 Right,Right,Right,Right)
     five_back=$(at 8 Right,Right,Right,Right,Right,Left)
     echo "four steps: $four; five steps and one back: $five_back"
@@ -58,7 +58,7 @@ case "$case" in
     events=$("$hsrviz" trace "$lesson" --out t.jsonl | cut -d' ' -f1)
     test "$end" -eq "$events"
     test "$(at 4 End,Home)" -eq 0
-    state() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step .*, //p'; }
+    state() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step [0-9+]* of [0-9+]*, \([a-z]*\).*/\1/p'; }
     test "$(state 3 Space)" = playing
     test "$(state 4 Space,Space)" = paused
     test "$(state 4 Space,Right)" = paused   # a step by hand pauses playback
@@ -99,9 +99,9 @@ case "$case" in
     if "$hsrviz" render "$scene" --algorithm zbuffer --format int8 --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm raycast --accel kd --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$scene" --algorithm painter --out x.png 2>/dev/null; then exit 1; fi ;;
-  zbuffer)  # the z-buffer lesson in 3D (key 3): the scene, the frustum and the image; traces of every new family
-    "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot z3d.png --frames 6 --keys 3,End > out.txt
-    grep -q "at step 826 of 826" out.txt
+  zbuffer)  # a z-buffer lesson in 3D (key V): the scene, the frustum and the image; traces of every new family
+    "$hsrviz" "$src/lessons/08_depth_precision.toml" --screenshot z3d.png --frames 6 --keys V,End > out.txt
+    grep -q "at step 1640 of 1640, paused$" out.txt
     "$png_check" z3d.png 1280 800
     for lesson in 08_depth_precision 09_ray_casting_grid 10_scan_line 12_z_merge; do
       "$hsrviz" trace "$src/lessons/$lesson.toml" --out "$lesson.jsonl" > /dev/null
@@ -111,6 +111,26 @@ case "$case" in
     grep -q '"kind":"CellEntered"' 09_ray_casting_grid.jsonl
     grep -q '"kind":"EdgeCrossed"' 10_scan_line.jsonl
     grep -q '"kind":"PixelMerged"' 12_z_merge.jsonl ;;
+  questions)  # a question holds: neither steps, play, End nor the scrub bar pass the event that answers it
+    lesson="$src/lessons/01_cohen_sutherland.toml"
+    run() { "$hsrviz" "$lesson" --screenshot q.png --frames "$1" --keys "$2" | grep '^hsrviz: at step'; }
+    held=$(run 14 Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right)
+    echo "twelve steps: $held"
+    echo "$held" | grep -q ", paused, question open$"
+    step=$(echo "$held" | sed 's/^hsrviz: at step \([0-9]*\) .*/\1/')
+    test "$(run 3 End)" = "$held"
+    test "$(run 4 Space,End)" = "$held"
+    echo "$(run 5 End,Space)" | grep -q ", paused, question open$"   # nothing to play until it is answered
+    "$png_check" q.png 1280 800
+    # an answer shows the deciding event and closes the question; the next → moves on
+    answered=$(run 15 Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,1)
+    echo "answered: $answered"
+    echo "$answered" | grep -q "^hsrviz: at step [0-9]* of [0-9]*, paused$"
+    test "$(echo "$answered" | sed 's/^hsrviz: at step \([0-9]*\) .*/\1/')" -gt "$step"
+    # number keys answer only an open question: at the start they do nothing
+    "$hsrviz" "$lesson" --screenshot q.png --frames 4 --keys 1,3 > none.txt
+    grep -q "^hsrviz: at step 0 of" none.txt
+    if grep -q 'answered "' none.txt; then exit 1; fi ;;
   classroom)  # chapters and questions: answer wrongly, then rightly, with number keys; switch language; check
     lesson="$src/lessons/01_cohen_sutherland.toml"
     "$hsrviz" "$lesson" --screenshot q.png --frames 10 --keys PageDown,PageDown,2,PageDown,2,L --frame-log frames.txt > out.txt
@@ -159,8 +179,8 @@ case "$case" in
     grep -q "at step 1 of" after.txt
     test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"
     # the z-buffer's fat pixels (grid coordinates): draw a triangle, drag its corner, right-click polygon 3 away, save
-    "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot zb.png --frames 10 \
-      --keys "ShiftDrag:2:2:12:10,Drag:2:2:5:7,End,RightClick:16:21,S" > zb.txt
+    "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot zb.png --frames 12 \
+      --keys "ShiftDrag:2:2:12:10,Drag:2:2:5:7,End,1,End,RightClick:16:21,S" > zb.txt
     zsaved=hsrviz-export/07_zbuffer_fill-edited.toml
     test "$(grep -c '^\[\[polygons\]\]' "$zsaved")" -eq 3   # 3 triangles, one added, one deleted
     grep -q '^id = 4$' "$zsaved"

@@ -67,6 +67,54 @@ TEST_CASE("a question is judged by the machine's next event, right or wrong, and
     CHECK_THAT(in_language(s->lesson().chapters[*c].narration, room.language(), s->lesson().languages), Catch::Contains("Segment 4"));
 }
 
+TEST_CASE("a question holds: nothing forward passes the event that answers it until it is answered", "[lesson][classroom]") {
+    auto s = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
+    s->prefetch(prefetch_events);
+    Classroom room;
+    room.attach(*s);
+    const ChapterPlace& first = room.script()->places()[1];  // chapter 1 asks how segment 3 ends
+    REQUIRE(first.answered);
+    REQUIRE(first.held);
+    const std::size_t hold = *first.held;  // before CodesCompared, whose sentence says "accepted" (reveals = …)
+    CHECK(hold < *first.answered - 1);
+    CHECK_THAT(s->event_line(hold), Catch::Contains("\"kind\":\"CodesCompared\""));
+    CHECK(room.hold(0) == hold);
+    CHECK(room.hold(hold) == hold);
+    // End from the start would show the answer: it stops before the deciding event, the question open
+    s->seek_end();
+    CHECK(s->cursor() > hold);
+    s->seek(*room.hold(0));
+    REQUIRE(room.open_question(*s) != nullptr);
+    room.close_revealed(*s);  // nothing shown yet: nothing closed
+    CHECK(room.open_question(*s) != nullptr);
+    // one more event gives the answer away: then the question is no longer asked, and it scores nothing
+    s->micro_step();
+    CHECK(s->cursor() == hold + 1);
+    CHECK(room.open_question(*s) == nullptr);
+    room.close_revealed(*s);
+    const auto v = room.verdict(*s);
+    REQUIRE(v);
+    CHECK(v->revealed);
+    CHECK_FALSE(v->right);
+    CHECK(v->answer == "inside");
+    CHECK(room.answered() == 0);
+    CHECK(room.right() == 0);
+    // that question holds no more; the next one does, further on
+    const auto next = room.hold(s->cursor());
+    REQUIRE(next);
+    CHECK(*next > hold);
+    // answered in time, a question holds nothing and the player moves to its deciding event
+    s->seek(*next);
+    REQUIRE(room.open_question(*s) != nullptr);
+    const auto right = room.answer(*s, "000010");
+    REQUIRE(right);
+    CHECK(right->right);
+    CHECK(s->cursor() == *next + 1);
+    CHECK(room.verdict(*s).has_value());
+    CHECK(room.answered() == 1);
+    CHECK(room.hold(*next) != next);
+}
+
 TEST_CASE("a chapter naming an event the machine never tells is a problem with file and line", "[lesson][check][errors]") {
     const auto dir = std::filesystem::temp_directory_path() / "hsrviz_check_test";
     std::filesystem::create_directories(dir);

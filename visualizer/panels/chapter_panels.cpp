@@ -53,7 +53,10 @@ void question_panel(const Session& s, const Classroom& room, float x, float y, f
         }
         ImGui::TextColored(dim_text, "keys 1 to %zu; the machine's next event will tell", q->choices.size());
     } else {
-        ImGui::TextColored(verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", verdict->right ? "Right." : "Not quite.");
+        if (verdict->revealed)
+            ImGui::TextColored(dim_text, "Shown before it was answered: no score.");
+        else
+            ImGui::TextColored(verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", verdict->right ? "Right." : "Not quite.");
         ImGui::TextWrapped("The machine: %s (%s)", verdict->answer.c_str(), verdict->because.c_str());
     }
     ImGui::End();

@@ -76,7 +76,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     place_in_column(l, 2);
     const CullingView& v = s.culling_view();
     ImGui::Begin("Culling", nullptr, fixed);
-    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · 3: god's eye / camera", std::string(to_string(s.culling_machine())).c_str(), v.kept, v.left_out);
+    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · V: god's eye / camera", std::string(to_string(s.culling_machine())).c_str(), v.kept, v.left_out);
     if (s.culling_machine() == algo::CullingMachine::frustum) {
         ImGui::SameLine();
         ImGui::TextColored(dim_text, "· %u plane tests", v.plane_tests);

@@ -10,9 +10,9 @@ void keys_panel(const PanelLayout& l) {
     static constexpr std::pair<const char*, const char*> rows[] = {
         {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
-        {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer a question"},
+        {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer the open question"},
         {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
-        {"R", "error against run time for this algorithm's family"},       {"3", "3D view / camera view / floor plan"},
+        {"R", "error against run time for this algorithm's family"},       {"V", "the other view: 3D, the camera's, the walk-through"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},

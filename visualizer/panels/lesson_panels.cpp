@@ -76,7 +76,7 @@ void narration_panel(const Session& s, const PanelLayout& l) {
 }
 
 // ── [SECTION] timeline ──────────────────────────────────────────────────────────────────────────────────────
-void timeline_panel(const Session& s, const PlaybackState& playback, const PanelLayout& l, UiActions& out) {
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const PanelLayout& l, UiActions& out) {
     place(0, l.height - l.bottom, l.width, l.bottom);
     ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
     out.to_start |= ImGui::Button("|< Home");
@@ -97,13 +97,17 @@ void timeline_panel(const Session& s, const PlaybackState& playback, const Panel
     float speed = playback.speed;
     if (ImGui::SliderFloat("steps/s", &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
     ImGui::SameLine();
-    // the keys' hint as far as it fits beside the step: whole, shorter, or not at all
+    // the keys' hint as far as it fits beside the step: whole, shorter, or not at all; while a question waits, why
+    // the player does not move on
     const std::string step = step_text(s);
     const float room = ImGui::GetContentRegionAvail().x;
-    std::string line = step + "   Space play · ←/→ step · Shift micro-step · Home/End";
-    if (ImGui::CalcTextSize(line.c_str()).x > room) line = step + "   Space · ←/→ · F1 keys";
+    const std::string keys = question_choices ? "1–" + std::to_string(question_choices) : "";
+    std::string line = question_choices ? step + "   a question waits: answer it (" + keys + ") and the machine tells"
+                                        : step + "   Space play · ←/→ step · Shift micro-step · Home/End";
+    if (ImGui::CalcTextSize(line.c_str()).x > room)
+        line = question_choices ? step + "   answer the question: " + keys : step + "   Space · ←/→ · F1 keys";
     if (ImGui::CalcTextSize(line.c_str()).x > room) line = step;
-    ImGui::TextColored(dim_text, "%s", line.c_str());
+    ImGui::TextColored(question_choices ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text, "%s", line.c_str());
 
     int cursor = int(s.cursor());
     ImGui::SetNextItemWidth(-1);

@@ -35,7 +35,9 @@ struct PanelLayout {
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& layout);
 void pseudocode_panel(const Session& s, const PanelLayout& layout);
 void narration_panel(const Session& s, const PanelLayout& layout);
-void timeline_panel(const Session& s, const PlaybackState& playback, const PanelLayout& layout, UiActions& out);
+// `question_choices`: while a question waits for an answer, its number of choices (the player holds), else 0.
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const PanelLayout& layout,
+                    UiActions& out);
 void error_panel(const std::string& message, const PanelLayout& layout, UiActions& out);
 
 // Labels of the 3D view, projected with the viewer's camera into the viewport (x, y, w, h in pixels, top-left).

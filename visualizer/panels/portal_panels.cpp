@@ -184,7 +184,7 @@ void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w,
         const Vec2 p = f.plan(mouse);
         out.move_eye = glm::dvec3(p.x, s.view().camera.eye.y, -p.y);
     }
-    end_plan_canvas(x, y, "floor plan · drag the eye · 3: the 3D walk-through");
+    end_plan_canvas(x, y, "floor plan · drag the eye · V: the 3D walk-through");
 }
 
 // ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────

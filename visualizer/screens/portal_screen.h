@@ -1,5 +1,5 @@
 // Cells and portals: the floor plan (the PVS being filled, or portal_render's frusta with a draggable eye), and for
-// portal_render the 3D walk-through (key 3).
+// portal_render the 3D walk-through (key V).
 #pragma once
 
 #include "panels/portal_panels.h"

@@ -32,7 +32,7 @@ struct ViewGeometry {
     glm::mat4 view_projection{1};
     float width = 1, height = 1;   // of the 3D view, in window points (it starts at the window's top left)
     bool overlay_open = false;     // keys, presets or the report cover the view
-    bool second_view = false;      // the family's other view is shown (key 3)
+    bool second_view = false;      // the family's other view is shown (key V)
 
     glm::vec2 to_window(const glm::dvec3& world) const;
     std::optional<glm::dvec3> on_plane_z0(float x, float y) const;  // the view's ray through (x, y) meets z = 0

@@ -1,4 +1,4 @@
-// The z-buffer: the fat pixels being filled (or the scene in 3D, key 3); on the pixels a vertex drags at its depth,
+// The z-buffer: the fat pixels being filled (or the scene in 3D, key V); on the pixels a vertex drags at its depth,
 // Shift+drag draws a triangle, a right-click deletes the polygon shown there.
 #pragma once
 

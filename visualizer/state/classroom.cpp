@@ -17,6 +17,10 @@ void Classroom::attach(const Session& s) {
 
 int Classroom::questions() const { return questions_; }
 
+int Classroom::answered() const {
+    return int(std::count_if(answers_.begin(), answers_.end(), [](const auto& a) { return !a.second.revealed; }));
+}
+
 std::optional<std::size_t> Classroom::chapter(const Session& s) const {
     return script_ ? script_->chapter_at(s.cursor()) : std::nullopt;
 }
@@ -39,7 +43,28 @@ const Question* Classroom::open_question(const Session& s) const {
     const auto c = chapter(s);
     if (!c || answers_.contains(*c)) return nullptr;
     const auto& ch = s.lesson().chapters[*c];
-    return ch.question && script_->places()[*c].answered ? &*ch.question : nullptr;
+    const auto& held = script_->places()[*c].held;
+    return ch.question && held && s.cursor() <= *held ? &*ch.question : nullptr;
+}
+
+std::optional<std::size_t> Classroom::hold(std::size_t from) const {
+    if (!script_) return std::nullopt;
+    std::optional<std::size_t> first;
+    for (std::size_t c = 0; c < script_->places().size(); ++c) {
+        const auto& held = script_->places()[c].held;
+        if (!held || answers_.contains(c)) continue;
+        if (*held >= from && (!first || *held < *first)) first = *held;
+    }
+    return first;
+}
+
+void Classroom::close_revealed(const Session& s) {
+    if (!script_) return;
+    for (std::size_t c = 0; c < script_->places().size(); ++c) {
+        const ChapterPlace& p = script_->places()[c];
+        if (p.held && *p.held < s.cursor() && !answers_.contains(c) && s.lesson().chapters[c].question)
+            answers_[c] = Verdict{false, p.answer, p.because, true};
+    }
 }
 
 std::optional<Verdict> Classroom::answer(Session& s, const std::string& given) {
@@ -54,15 +79,12 @@ std::optional<Verdict> Classroom::answer(Session& s, const std::string& given) {
 }
 
 std::optional<Verdict> Classroom::verdict(const Session& s) const {
-    // the last chapter answered at or before this step
-    if (!script_) return std::nullopt;
-    std::optional<Verdict> out;
-    std::size_t latest = 0;
-    for (const auto& [c, v] : answers_) {
-        const auto& p = script_->places()[c];
-        if (p.answered && *p.answered <= s.cursor() && *p.answered >= latest) latest = *p.answered, out = v;
-    }
-    return out;
+    // the chapter showing, once its deciding event has been shown
+    const auto c = chapter(s);
+    if (!c || !answers_.contains(*c)) return std::nullopt;
+    const auto& p = script_->places()[*c];
+    if (!p.held || *p.held >= s.cursor()) return std::nullopt;
+    return answers_.at(*c);
 }
 
 void Classroom::next_language() {

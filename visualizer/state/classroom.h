@@ -22,11 +22,18 @@ public:
     std::optional<std::size_t> first_pause_crossed(const Session& session, std::size_t before) const;
 
     std::optional<std::size_t> chapter(const Session& session) const;  // showing now
-    // The question of the chapter showing, if it has one not yet answered.
+    // The question of the chapter showing, if it has one not yet answered and its deciding event is still to come.
     const Question* open_question(const Session& session) const;
+    // Where a move forward from step `from` must stop while a question is unanswered: just before the event that
+    // answers it (or an earlier one that gives the answer away), so that the student answers before the machine
+    // tells. nullopt: nothing holds.
+    std::optional<std::size_t> hold(std::size_t from) const;
+    // After a move: a question whose deciding event has been shown before it was answered (a chapter skipped, a
+    // reload at a later step) is closed; it scores nothing and its verdict says so.
+    void close_revealed(const Session& session);
     // Answers the open question with choice `index` (or text); the player steps to the answering event.
     std::optional<Verdict> answer(Session& session, const std::string& given);
-    std::optional<Verdict> verdict(const Session& session) const;  // of the chapter showing, once answered
+    std::optional<Verdict> verdict(const Session& session) const;  // of the chapter showing, once answered or revealed
     void next_language();
     // PageDown / PageUp: to the next or previous chapter's start.
     void next_chapter(Session& session) const;
@@ -34,7 +41,7 @@ public:
 
     const std::string& language() const { return language_; }
     int right() const { return right_; }
-    int answered() const { return int(answers_.size()); }
+    int answered() const;  // by the student (not revealed first)
     int questions() const;
     const LessonScript* script() const { return script_ ? &*script_ : nullptr; }
 

@@ -28,8 +28,15 @@ LessonScript::LessonScript(const Session& s) {
                 p.answered = k + 1;
                 p.answer = event(k).contains(ch.question->field) ? value_text(event(k)[ch.question->field]) : "";
                 p.because = event(k).value("text", "");
+                p.held = k;
                 break;
             }
+        if (p.answered && ch.question->reveals)
+            for (std::size_t k = *p.starts; k < *p.held; ++k)
+                if (event(k).value("kind", "") == *ch.question->reveals) {
+                    p.held = k;
+                    break;
+                }
     }
 }
 
@@ -70,6 +77,8 @@ std::vector<std::string> LessonScript::problems(const Lesson& lesson, const std:
         const std::string q = lesson.source + ":" + std::to_string(ch.question->line) + ": chapters[" + std::to_string(c) + "].question";
         if (!known(ch.question->answer_event.kind))
             out.push_back(q + ".event: the machine never tells \"" + ch.question->answer_event.kind + "\"");
+        else if (ch.question->reveals && !known(*ch.question->reveals))
+            out.push_back(q + ".reveals: the machine never tells \"" + *ch.question->reveals + "\"");
         else if (places_[c].starts && !places_[c].answered)
             out.push_back(q + ": no event after the chapter starts answers it");
         else if (places_[c].answered && !ch.question->choices.empty() &&

@@ -13,6 +13,8 @@ namespace hsr::viz {
 struct ChapterPlace {
     std::optional<std::size_t> starts;   // the step after its event (the event has just been shown); none: never
     std::optional<std::size_t> answered; // question: the step after the event that answers it
+    std::optional<std::size_t> held;     // question: where a move forward stops while it is open (before the event
+                                         // that answers it, or before an earlier one that gives the answer away)
     std::string answer;                  // the answer's field, as text
     std::string because;                 // the answering event's sentence
 };
@@ -37,6 +39,7 @@ private:
 struct Verdict {
     bool right;
     std::string answer, because;
+    bool revealed = false;  // the deciding event was shown before an answer was given: no score
 };
 Verdict judge(const ChapterPlace& place, const std::string& given);
 
