@@ -208,6 +208,7 @@ int run_app(const AppOptions& o) {
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool orbiting = false, running = true;
         std::size_t next_key = 0;
+        std::uint64_t awake_until = SDL_GetTicks64() + 1000;  // ms: until when frames are drawn without waiting for input
         std::vector<double> frame_ms;  // --frame-log
         std::uint64_t frame_start = SDL_GetPerformanceCounter();
         while (running) {
@@ -222,8 +223,12 @@ int run_app(const AppOptions& o) {
                 }
                 ++next_key;
             }
+            // Asleep while nothing moves: a paused window waits for input (waking twice a second for edited files)
+            // instead of drawing the same frame again; it draws on for a moment after any input, for tweens to end
+            if (interactive(o) && !lp.playback.playing && SDL_GetTicks64() > awake_until) SDL_WaitEventTimeout(nullptr, 500);
             SDL_Event e;
             while (SDL_PollEvent(&e)) {
+                awake_until = SDL_GetTicks64() + 1000;
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 if (e.type == SDL_QUIT) running = false;
                 if (!io.WantCaptureKeyboard) keys(e, actions);
@@ -237,6 +242,10 @@ int run_app(const AppOptions& o) {
                 if (e.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse) lp.camera.zoom(float(e.wheel.y));
             }
             if (scripted_shift) SDL_SetModState(KMOD_NONE);
+
+            // The window's title names the lesson playing (a teacher switching lessons sees which one is up)
+            const std::string title = lp.session() ? "hsrviz — " + lp.session()->lesson().title : "hsrviz";
+            if (title != SDL_GetWindowTitle(w.window)) SDL_SetWindowTitle(w.window, title.c_str());
 
             // Update: recording and screenshots take one Step per frame, so the same command gives the same picture
             const std::uint64_t ticks = SDL_GetTicks64();
