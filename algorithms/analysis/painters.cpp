@@ -1,6 +1,9 @@
 #include "analysis/painters.h"
 
 #include <chrono>
+#include <unordered_map>
+
+#include "bsp/bsp_scene.h"
 
 namespace hsr::analysis {
 namespace {
@@ -21,14 +24,14 @@ BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, alg
     const auto start = Clock::now();
     out.tree = algo::build_bsp(std::move(inputs), {.splitter = splitter}).run_to_end();
     out.build_ms = ms_since(start);
-    const auto order = algo::traverse_bsp(&out.tree, scene.camera.eye).run_to_end();
+    const auto order = algo::traverse_bsp(&out.tree, algo::viewpoint_of(scene.camera)).run_to_end();
     const glm::dmat4 view_projection = algo::view_projection(scene.camera);
+    std::unordered_map<algo::SceneId, algo::Color> color_of;  // by the scene's id: a lookup per fragment, not a scan
+    for (const auto& sp : scene.polygons) color_of.emplace(sp.id, sp.color);
     for (algo::BspPolygonId p : order) {  // the painter's order: back to front
         const algo::BspPolygon& poly = out.tree.polygons[std::size_t(p)];
-        algo::Color color{200, 200, 200};
-        for (const auto& sp : scene.polygons)
-            if (sp.id == poly.source) color = sp.color;
-        algo::paint_polygon(out.image, view_projection, poly.vertices, poly.source, color);
+        const auto c = color_of.find(poly.source);
+        algo::paint_polygon(out.image, view_projection, poly.vertices, poly.source, c != color_of.end() ? c->second : algo::Color{200, 200, 200});
     }
     return out;
 }

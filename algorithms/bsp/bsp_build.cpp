@@ -12,6 +12,14 @@
 #include <glm/common.hpp>
 
 namespace hsr::algo {
+Tolerance pair_tolerance(const BspTree& tree, BspPolygonId a, std::span<const Vec3> b) {
+    return Tolerance::for_points(tree.polygons[std::size_t(a)].vertices, b);
+}
+
+Tolerance node_tolerance(const BspTree& tree, const BspNode& node, const Vec3& p) {
+    return node.polygons.empty() ? tree.tolerance : pair_tolerance(tree, node.polygons.front(), std::span<const Vec3>(&p, 1));
+}
+
 namespace {
 
 constexpr std::size_t max_candidates = 32;  // a node scores at most this many splitters (spread over its list)
@@ -26,7 +34,8 @@ Score score(const BspTree& t, BspPolygonId candidate, const std::vector<BspPolyg
     const Plane& plane = t.polygons[std::size_t(candidate)].plane;
     for (BspPolygonId p : list) {
         if (p == candidate) continue;
-        switch (classify(plane, t.polygons[std::size_t(p)].vertices, t.tolerance)) {
+        const auto& vertices = t.polygons[std::size_t(p)].vertices;
+        switch (classify(plane, vertices, pair_tolerance(t, candidate, vertices))) {
             case PolygonSide::front: ++s.front; break;
             case PolygonSide::back: ++s.back; break;
             case PolygonSide::spanning: ++s.spanning, ++s.front, ++s.back; break;
@@ -93,7 +102,8 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
     // Classify every other polygon against the splitter's plane
     for (BspPolygonId p : list) {
         if (p == splitter) continue;
-        const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, t->tolerance);
+        const Tolerance tol = pair_tolerance(*t, splitter, t->polygons[std::size_t(p)].vertices);
+        const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, tol);
         co_yield PolygonClassified{node, p, side};
         switch (side) {
             case PolygonSide::front: front.push_back(p); break;
@@ -106,7 +116,7 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
                     here.push_back(p);
                     break;
                 }
-                SplitParts parts = split(plane, t->polygons[std::size_t(p)].vertices, t->tolerance);
+                SplitParts parts = split(plane, t->polygons[std::size_t(p)].vertices, tol);
                 auto f = std::make_shared<const std::vector<Vec3>>(parts.front);
                 auto b = std::make_shared<const std::vector<Vec3>>(parts.back);
                 const BspPolygonId fp = add_part(*t, p, std::move(parts.front), "f");
@@ -134,7 +144,7 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
 }
 
 Steps<BspEvent, BspTree> build_machine(BspTree tree, BspOptions o) {
-    co_yield BuildStarted{std::uint32_t(tree.polygons.size()), o.splitter, tree.tolerance.epsilon};
+    co_yield BuildStarted{std::uint32_t(tree.polygons.size()), o.splitter, Tolerance::relative};
     std::vector<BspPolygonId> all(tree.polygons.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = BspPolygonId(i);
     auto root = build_node(&tree, std::move(all), 0, {}, o);

@@ -48,7 +48,7 @@ std::string describe(const BspEvent& event, const PolygonNamer& name) {
         overloaded{
             [&](const BuildStarted& e) {
                 return "build a BSP tree of " + std::to_string(e.polygons) + " polygons, splitter rule: " +
-                       std::string(to_string(e.rule)) + ", ε = " + num(e.tolerance);
+                       std::string(to_string(e.rule)) + ", ε = " + num(e.tolerance) + " × the size of the polygons compared";
             },
             [&](const CandidateScored& e) {
                 return node(e.node) + ": splitter " + name(e.candidate) + " would leave " + std::to_string(e.front) +

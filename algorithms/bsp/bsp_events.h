@@ -32,7 +32,7 @@ struct BuildStarted {
     static constexpr std::string_view kind = "BuildStarted";
     std::uint32_t polygons;
     SplitterRule rule;
-    double tolerance;  // the classification ε, world units
+    double tolerance;  // the classification ε, relative: a share of the largest coordinate of the polygons compared
     bool operator==(const BuildStarted&) const = default;
 };
 // One candidate splitter scored against the other polygons of the node (a micro-step).

@@ -3,7 +3,7 @@
 namespace hsr::algo {
 namespace {
 
-Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene_machine(Steps<BspEvent, BspTree> build, Vec3 eye) {
+Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene_machine(Steps<BspEvent, BspTree> build, Viewpoint eye) {
     for (const auto& e : build) co_yield e;
     const BspTree tree = std::move(build).result();  // owned by this frame while the traversal runs
     auto display = traverse_bsp(&tree, eye);
@@ -13,10 +13,15 @@ Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene_machine(Steps<BspEvent, Bsp
 
 }  // namespace
 
+Viewpoint viewpoint_of(const Camera& camera) {
+    if (camera.projection == Projection::orthographic) return Viewpoint::at_infinity(camera.eye, camera.eye - camera.target);
+    return camera.eye;
+}
+
 BspJob bsp_job(const Scene& scene, SplitterRule rule) {
     BspJob job;
     job.options.splitter = rule;
-    job.eye = scene.camera.eye;
+    job.eye = viewpoint_of(scene.camera);
     for (const auto& p : scene.polygons) {
         BspInput in{p.id, {}};
         for (const auto& v : p.vertices) in.vertices.emplace_back(v);
@@ -24,7 +29,7 @@ BspJob bsp_job(const Scene& scene, SplitterRule rule) {
     }
     if (job.polygons.empty()) {
         for (const auto& s : scene.segments) job.polygons.push_back({s.id, {{s.a.x, s.a.y, 0}, {s.b.x, s.b.y, 0}}});
-        job.eye.z = 0;
+        job.eye = Vec3(scene.camera.eye.x, scene.camera.eye.y, 0);  // the eye stands in the plan
     }
     return job;
 }

@@ -10,8 +10,11 @@ namespace hsr::algo {
 struct BspJob {
     std::vector<BspInput> polygons;
     BspOptions options;
-    Vec3 eye{0};
+    Viewpoint eye;
 };
+
+// The camera's eye for DisplayBSP: its position, or for an orthographic camera its direction (the eye at infinity).
+Viewpoint viewpoint_of(const Camera& camera);
 
 // Polygons from scene.polygons; when the scene has none, its segments as 2D segments (their z is dropped).
 BspJob bsp_job(const Scene& scene, SplitterRule rule);

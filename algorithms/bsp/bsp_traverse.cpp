@@ -2,17 +2,20 @@
 // node's polygons, then the front subtree; otherwise the other way round. The polygons come out back to front
 // (the painter's order); front to back swaps the sides.
 #include "bsp/bsp_tree.h"
+
+#include <glm/geometric.hpp>
+
 #include "core/numeric.h"
 
 namespace hsr::algo {
 namespace {
 
-Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n, Vec3 eye, Order order,
+Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n, Viewpoint eye, Order order,
                                                    std::vector<BspPolygonId> drawn) {
     if (n < 0) co_return drawn;
     const BspNode& node = t->nodes[std::size_t(n)];
-    const double distance = node.plane.distance(eye);
-    const Side side = classify(node.plane, eye, t->tolerance);
+    const double distance = eye.toward_eye ? glm::dot(node.plane.n, *eye.toward_eye) : node.plane.distance(eye.at);
+    const Side side = eye_side(node.plane, eye, node_tolerance(*t, node, eye.at));
     co_yield EyeClassified{n, side, order, distance};
 
     // The far side first: behind the plane when the eye is in front (or on it: then either order is right,
@@ -33,7 +36,7 @@ Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n
     co_return std::move(near_side).result();
 }
 
-Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Vec3 eye, Order order) {
+Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Viewpoint eye, Order order) {
     auto all = display(t, t->root, eye, order, {});
     for (const auto& e : all) co_yield e;
     std::vector<BspPolygonId> drawn = std::move(all).result();
@@ -43,8 +46,22 @@ Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Vec3 eye,
 
 }  // namespace
 
-Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Vec3 eye, Order order) {
-    require_finite(glm::dvec4(eye, 1.0), "eye");
+Viewpoint Viewpoint::at_infinity(Vec3 eye, Vec3 toward_eye) {
+    Viewpoint v(eye);
+    v.toward_eye = glm::normalize(toward_eye);
+    return v;
+}
+
+Side eye_side(const Plane& plane, const Viewpoint& eye, Tolerance tol) {
+    if (!eye.toward_eye) return classify(plane, eye.at, tol);
+    const double cosine = glm::dot(plane.n, *eye.toward_eye);  // both unit length
+    return cosine > 1e-12 ? Side::front : cosine < -1e-12 ? Side::back : Side::on;
+}
+
+Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Viewpoint eye, Order order) {
+    require_finite(glm::dvec4(eye.at, 1.0), "eye");
+    if (eye.toward_eye && !(glm::length(*eye.toward_eye) > 0.5)) throw InvalidInput("eye: a view direction of no length");
+    if (eye.toward_eye) require_finite(glm::dvec4(*eye.toward_eye, 0.0), "eye direction");
     return traversal(tree, eye, order);
 }
 
@@ -52,7 +69,7 @@ Location locate(const BspTree& tree, const Vec3& p) {
     Location where;
     for (BspNodeId n = tree.root; n >= 0;) {
         const BspNode& node = tree.nodes[std::size_t(n)];
-        const Side side = classify(node.plane, p, tree.tolerance);
+        const Side side = classify(node.plane, p, node_tolerance(tree, node, p));
         where.path.push_back(n);
         where.sides.push_back(side);
         n = side == Side::back ? node.back : node.front;  // a point on the plane counts as in front

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "bsp/bsp_events.h"
@@ -28,7 +30,7 @@ struct BspTree {
     std::vector<BspPolygon> polygons;  // inputs first, then parts as they are made
     std::vector<BspNode> nodes;        // in the order they are made; the root is nodes[0] when not empty
     BspNodeId root = -1;
-    Tolerance tolerance;
+    Tolerance tolerance;               // ε of the whole scene's extent; a test between polygons uses theirs (pair_tolerance)
     std::uint32_t splits = 0, depth = 0;  // depth: of the deepest node, counting the root as 1
     bool bounded = false;                 // a bound stopped the build; the tree is still a valid BSP of what it has
     std::vector<std::string> labels() const;
@@ -51,9 +53,28 @@ struct BspOptions {
 // lazy machine. The tolerance is ε = 1e-9 × the inputs' extent (core/plane.h).
 Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions options = {});
 
+// Where DisplayBSP looks from: a point (a perspective camera's eye), or an eye at infinity (an orthographic camera:
+// every ray runs along the view direction, so the eye is on the side of a plane that direction points back into).
+struct Viewpoint {
+    Vec3 at{0};                         // the eye (for an orthographic camera: where it is drawn)
+    std::optional<Vec3> toward_eye;     // orthographic: the unit direction from the scene back to the eye, which decides
+    Viewpoint(Vec3 eye = Vec3(0)) : at(eye) {}  // NOLINT(google-explicit-constructor): a point is a viewpoint
+    static Viewpoint at_infinity(Vec3 eye, Vec3 toward_eye);
+    bool operator==(const Viewpoint&) const = default;
+};
+
+// ε for testing polygon `b` against polygon `a`'s plane (or a point against a node's): their own size, not the scene's.
+Tolerance pair_tolerance(const BspTree& tree, BspPolygonId a, std::span<const Vec3> b);
+// ε for a point against a node's plane (the node's first polygon and the point).
+Tolerance node_tolerance(const BspTree& tree, const BspNode& node, const Vec3& p);
+
+// The eye's side of a plane: by its signed distance for a point, by the cosine with the normal for an eye at infinity
+// (on the plane: the plane holds the view direction, and its polygons are seen edge-on).
+Side eye_side(const Plane& plane, const Viewpoint& eye, Tolerance tol);
+
 // DisplayBSP: at each node classify the eye, visit the far side, draw the node's polygons, visit the near side
 // (front to back swaps the sides). The tree must outlive the machine.
-Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Vec3 eye,
+Steps<BspEvent, std::vector<BspPolygonId>> traverse_bsp(const BspTree* tree, Viewpoint eye,
                                                         Order order = Order::back_to_front);
 
 // The leaf region holding p: the path of nodes from the root and the side taken at each, in O(depth).

@@ -1,5 +1,6 @@
 #include "core/plane.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -11,6 +12,13 @@ double Plane::distance(const Vec3& p) const { return glm::dot(n, p) + d; }
 Side classify(const Plane& plane, const Vec3& p, Tolerance tol) {
     const double s = plane.distance(p);
     return s > tol.epsilon ? Side::front : s < -tol.epsilon ? Side::back : Side::on;
+}
+
+Tolerance Tolerance::for_points(std::span<const Vec3> a, std::span<const Vec3> b) {
+    double largest = 0;
+    for (const auto points : {a, b})
+        for (const Vec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return for_extent(largest);
 }
 
 PolygonSide classify(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol) {

@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include <span>
+
 #include <glm/vec3.hpp>
 
 namespace hsr::algo {
@@ -28,7 +30,12 @@ struct Plane {
 
 struct Tolerance {
     double epsilon = 1e-9;  // world units
-    static Tolerance for_extent(double extent) { return {1e-9 * (extent > 0 ? extent : 1.0)}; }
+    static constexpr double relative = 1e-9;  // ε as a share of the size of the numbers compared
+    static Tolerance for_extent(double extent) { return {relative * (extent > 0 ? extent : 1.0)}; }
+    // For a test between these points (a polygon against another's plane, an eye against a node's): ε relative to
+    // their largest coordinate. The rounding in n · x + d grows with |x| and |d|, so this covers it, and a giant
+    // polygon elsewhere in the scene changes nothing here.
+    static Tolerance for_points(std::span<const Vec3> a, std::span<const Vec3> b = {});
 };
 
 enum class Side : std::uint8_t { front, back, on };

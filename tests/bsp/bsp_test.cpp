@@ -197,7 +197,7 @@ TEST_CASE("point location follows the planes from the root to a leaf", "[bsp][lo
         CHECK(where.path.size() <= b.tree.depth);
         for (std::size_t k = 0; k < where.path.size(); ++k) {
             const BspNode& n = b.tree.nodes[std::size_t(where.path[k])];
-            CHECK(where.sides[k] == classify(n.plane, p, b.tree.tolerance));
+            CHECK(where.sides[k] == classify(n.plane, p, node_tolerance(b.tree, n, p)));
             if (k + 1 < where.path.size())
                 CHECK(where.path[k + 1] == (where.sides[k] == Side::back ? n.back : n.front));
         }
@@ -294,7 +294,7 @@ TEST_CASE("BSP extreme cases", "[bsp][extreme]") {
         const Built b = build(in);
         const BspPolygon& root = b.tree.polygons[std::size_t(b.tree.nodes[0].polygons[0])];
         const Vec3 on_plane = root.vertices[0] + Vec3(0, 0, 4) - root.plane.n * root.plane.distance(root.vertices[0] + Vec3(0, 0, 4));
-        REQUIRE(classify(root.plane, on_plane, b.tree.tolerance) == Side::on);
+        REQUIRE(classify(root.plane, on_plane, node_tolerance(b.tree, b.tree.nodes[0], on_plane)) == Side::on);
         CHECK(compare_images(in, b.tree, on_plane, false, 32, 32).wrong == 0);
     }
 }

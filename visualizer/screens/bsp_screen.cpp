@@ -59,7 +59,7 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
 
 void Screen<BspSession>::draw_scene(const BspSession& s, SceneFrame& f) const {
     draw_bsp_view(s.view(), s.edited_scene(), f.batches, f.labels);  // edits add segments: their colours
-    f.detail = "splitter: " + std::string(algo::to_string(s.stats().rule)) + " · ε = 1e-9 × extent" + (s.view().two_d ? " · 2D" : "");
+    f.detail = "splitter: " + std::string(algo::to_string(s.stats().rule)) + " · ε = 1e-9 × the polygons' size" + (s.view().two_d ? " · 2D" : "");
 }
 
 bool Screen<BspSession>::pointer(const BspSession& s, const Pointer& p, const ViewGeometry& g, UiActions& out) {

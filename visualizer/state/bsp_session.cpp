@@ -141,7 +141,7 @@ bool BspSession::redo() {
 
 algo::Scene BspSession::scene_of_job() const {
     algo::Scene s = lesson().scene;
-    s.camera.eye = job_.eye;
+    s.camera.eye = job_.eye.at;
     // Inputs as the edits left them: moved, added (new ids, colours in turn from the palette) or deleted.
     static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
     std::vector<algo::SceneSegment> segments;

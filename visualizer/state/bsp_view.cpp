@@ -10,7 +10,7 @@ using namespace hsr::algo;
 
 BspView initial_view(const BspJob& job) {
     BspView v;
-    v.eye = job.eye;
+    v.eye = job.eye.at;
     for (const BspInput& p : job.polygons) {
         v.polygons.push_back({p.id, std::to_string(p.id), std::make_shared<const std::vector<Vec3>>(p.vertices)});
         v.two_d = v.two_d || p.vertices.size() == 2;
