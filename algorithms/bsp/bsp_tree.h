@@ -50,7 +50,7 @@ struct BspOptions {
 };
 
 // Validates (InvalidInput naming the polygon: NaN, infinity, fewer than 2 vertices, no area), then returns the
-// lazy machine. The tolerance is ε = 1e-9 × the inputs' extent (core/plane.h).
+// lazy machine. Each test uses ε = 1e-9 × the largest coordinate of the polygons it compares (pair_tolerance).
 Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions options = {});
 
 // Where DisplayBSP looks from: a point (a perspective camera's eye), or an eye at infinity (an orthographic camera:

@@ -20,6 +20,47 @@ std::int64_t twice_area(const std::vector<ScreenVertex>& v) {
     return sum;
 }
 
+// The turn at b from edge a→b to edge b→c (twice the signed area of the triangle a, b, c).
+std::int64_t turn(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+}
+
+// Snapping moves each vertex by up to half a sub-pixel, so an edge of a convex polygon shorter than a sub-pixel or
+// two may turn the wrong way, and vertices closer than that may fall in line: the snapped polygon is then not
+// convex, and the fill, which intersects the half-planes of all edges, would cut a wedge off along the long
+// neighbour of such an edge. Keep the corners of the snapped polygon's convex hull (Andrew's monotone chain, exact
+// in integers), in the polygon's own direction, from its first vertex that is one. A polygon that is convex after
+// snapping (nearly all) is left as it is.
+void keep_convex(std::vector<ScreenVertex>& v, std::int64_t area) {
+    const std::size_t n = v.size();
+    bool convex = true;
+    for (std::size_t i = 0; i < n && convex; ++i) {
+        const std::int64_t t = turn(v[i], v[(i + 1) % n], v[(i + 2) % n]);
+        convex = area > 0 ? t > 0 : t < 0;
+    }
+    if (convex) return;
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a].x != v[b].x ? v[a].x < v[b].x : v[a].y < v[b].y; });
+    std::vector<std::size_t> hull;  // lower chain, then upper chain: one turning direction throughout
+    for (int pass = 0; pass < 2; ++pass) {
+        const std::size_t base = hull.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t i = pass == 0 ? order[k] : order[n - 1 - k];
+            while (hull.size() >= base + 2 && turn(v[hull[hull.size() - 2]], v[hull.back()], v[i]) <= 0) hull.pop_back();
+            hull.push_back(i);
+        }
+        hull.pop_back();  // each chain's last point starts the other
+    }
+    std::vector<ScreenVertex> corners;
+    for (std::size_t i : hull) corners.push_back(v[i]);
+    if ((twice_area(corners) > 0) != (area > 0)) std::reverse(hull.begin(), hull.end());
+    std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
+    corners.clear();
+    for (std::size_t i : hull) corners.push_back(v[i]);
+    v = std::move(corners);
+}
+
 // Newell's normal of the polygon in (x, y, d) screen space gives the depth plane d = c0 − (a/c)x − (b/c)y.
 DepthPlane depth_plane(const std::vector<glm::dvec3>& v) {
     glm::dvec3 n(0), centre(0);
@@ -109,7 +150,8 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec
         std::reverse(out.vertices.begin(), out.vertices.end());
         std::reverse(exact.begin(), exact.end());
     }
-    out.plane = depth_plane(exact);
+    out.plane = depth_plane(exact);  // from every vertex, before snapping may drop some
+    keep_convex(out.vertices, std::abs(area));
     std::int64_t y0 = out.vertices[0].y, y1 = y0;
     for (const auto& v : out.vertices) y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
     out.row_begin = int(std::clamp<std::int64_t>(ceil_div(y0 - subpixels / 2, subpixels), 0, viewport.height));
