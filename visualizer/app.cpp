@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "capture.h"
+#include "cli/commands.h"
 #include "gif_writer.h"
 #include "lesson_play.h"
 #include "panels/chapter_panels.h"
@@ -203,10 +204,11 @@ int run_app(const AppOptions& o) {
         std::optional<GifWriter> gif;  // half the drawable's size (made at the first frame): enough for slides
         bool gif_failed = false;
         if (o.gif && lp.session()) lp.session()->seek(std::min(o.gif_from, lp.session()->known()));
-        if (o.record_dir) std::filesystem::create_directories(*o.record_dir);
+        bool running = true;
+        if (o.record_dir && !make_folder(*o.record_dir)) exit_code = 1, running = false;  // said why
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
-        bool orbiting = false, running = true;
+        bool orbiting = false;
         std::size_t next_key = 0;
         std::uint64_t awake_until = SDL_GetTicks64() + 1000;  // ms: until when frames are drawn without waiting for input
         std::vector<double> frame_ms;  // --frame-log
@@ -312,6 +314,7 @@ int run_app(const AppOptions& o) {
         if (o.frame_log && !frame_ms.empty()) {
             std::ofstream log(*o.frame_log);
             for (double ms : frame_ms) log << ms << '\n';
+            if (!log.flush()) std::fprintf(stderr, "hsrviz: cannot write %s\n", o.frame_log->c_str()), exit_code = 1;
             std::vector<double> sorted = frame_ms;
             std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
             std::printf("hsrviz: %zu frames, median %.2f ms, written to %s\n", frame_ms.size(), sorted[sorted.size() / 2], o.frame_log->c_str());

@@ -1,12 +1,11 @@
 #include "capture.h"
 
-#include <stb/stb_image_write.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "cli/commands.h"
+#include "cli/png_io.h"
 #include "render/gl.h"
 #include "scene/save_scene.h"
 
@@ -40,13 +39,12 @@ std::vector<unsigned char> half_size_pixels(int w, int h) {
 
 bool write_png(const std::string& path, int w, int h) {
     const std::vector<unsigned char> pixels = read_pixels(w, h);
-    stbi_flip_vertically_on_write(1);
-    return stbi_write_png(path.c_str(), w, h, 4, pixels.data(), w * 4) != 0;
+    return write_png(path, w, h, 4, pixels.data(), true);
 }
 
 void export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
     const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
-    std::filesystem::create_directories(dir);
+    if (!make_folder(dir)) return;
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
     const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&

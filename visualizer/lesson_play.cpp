@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli/commands.h"
 #include "scene/save_scene.h"
 
 namespace hsr::viz {
@@ -45,7 +46,7 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
         const auto toml = random_scene_toml(session()->lesson().algorithm, two_d, next_seed);
         if (!toml) return;
         algorithm = std::string(session()->lesson().algorithm.id);
-        std::filesystem::create_directories("hsrviz-export");
+        if (!make_folder("hsrviz-export")) return;
         path = "hsrviz-export/random-" + *algorithm + "-seed" + std::to_string(next_seed++) + ".toml";
         std::ofstream(path) << *toml;
     } else {
@@ -59,8 +60,7 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
 
 void Lessonplay::save_edited(const algo::Scene& scene) const {
     const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
-    std::filesystem::create_directories("hsrviz-export");
-    const bool ok = static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene));
+    const bool ok = make_folder("hsrviz-export") && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
     std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
 }
 

@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
             const std::string trace_file = *app.record_dir + "/trace.jsonl";
             std::printf("hsrviz: no display found; playing %s headless, writing frames to %s/frame_*.png and the trace to %s\n",
                         app.lesson_path.c_str(), app.record_dir->c_str(), trace_file.c_str());
-            std::filesystem::create_directories(*app.record_dir);
+            if (!hsr::viz::make_folder(*app.record_dir)) return 1;
             if (hsr::viz::run_trace({app.lesson_path, trace_file, app.algorithm}) != 0) return 1;
         }
     }

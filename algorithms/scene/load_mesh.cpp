@@ -37,23 +37,34 @@ void read_meshes(const TomlReader& r, Scene& scene) {
             color = {std::uint8_t(rgb >> 16), std::uint8_t(rgb >> 8), std::uint8_t(rgb)};
         }
         const auto& v = obj.GetAttrib().vertices;
+        const std::size_t before = scene.polygons.size();
         for (const tinyobj::shape_t& shape : obj.GetShapes()) {
             std::size_t at = 0;
             for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
                 ScenePolygon p{SceneId(id), color, {}};
                 if (id < 1 || id > 65535) r.fail(t->get("id"), join(f, "id"), "the mesh's faces need ids from 1 to 65535");
                 ++id;
+                const std::string face_name = path.filename().string() + ": face " + std::to_string(face + 1);
+                if (shape.mesh.num_face_vertices[face] < 3)
+                    r.fail(t->get("file"), join(f, "file"), face_name + " has fewer than 3 vertices");
                 for (std::size_t k = 0; k < shape.mesh.num_face_vertices[face]; ++k) {
-                    const auto vi = std::size_t(shape.mesh.indices[at++].vertex_index);
+                    // tinyobjloader passes indices past the vertex list through: check each before reading
+                    const int index = shape.mesh.indices[at++].vertex_index;
+                    if (index < 0 || 3 * std::size_t(index) + 2 >= v.size())
+                        r.fail(t->get("file"), join(f, "file"),
+                               face_name + " names vertex " + std::to_string(std::int64_t(index) + 1) + ", but the file has " +
+                                   std::to_string(v.size() / 3) + " vertices");
+                    const auto vi = std::size_t(index);
                     const glm::dvec3 q = glm::dvec3(v[3 * vi], v[3 * vi + 1], v[3 * vi + 2]) * scale;
                     p.vertices.emplace_back(q.x * std::cos(turn) + q.z * std::sin(turn) + move.x, q.y + move.y,
                                             -q.x * std::sin(turn) + q.z * std::cos(turn) + move.z, 1.0);
                 }
-                if (!has_area(p.vertices))
-                    r.fail(t->get("file"), join(f, "file"), path.filename().string() + ": face " + std::to_string(face + 1) + " has no area");
+                if (!has_area(p.vertices)) r.fail(t->get("file"), join(f, "file"), face_name + " has no area");
                 scene.polygons.push_back(std::move(p));
             }
         }
+        if (scene.polygons.size() == before)  // garbage, or only points and lines: tinyobjloader reads them as nothing
+            r.fail(t->get("file"), join(f, "file"), path.filename().string() + " has no faces of 3 or more vertices");
     }
 }
 

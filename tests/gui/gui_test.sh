@@ -158,6 +158,19 @@ case "$case" in
       "$src/assets/scenes/cs_segments.toml" > typo.toml
     if "$hsrviz" check typo.toml > check.txt; then exit 1; fi
     grep -q 'typo.toml:4: chapters\[0\].when: the machine never tells "Nope"' check.txt ;;
+  write-errors)  # a file that cannot be written, or a folder that cannot be made, is an error with a reason, exit 1
+    lesson="$src/lessons/02_liang_barsky.toml"
+    if "$hsrviz" trace "$lesson" --out /dev/full 2> e1.txt; then exit 1; fi
+    grep -q "cannot write /dev/full" e1.txt
+    if "$hsrviz" render "$src/assets/scenes/bsp_parallel.toml" --out /dev/full 2> e2.txt; then exit 1; fi
+    grep -q "cannot write /dev/full" e2.txt
+    if "$hsrviz" "$lesson" --screenshot /dev/full --frames 2 > /dev/null 2> e3.txt; then exit 1; fi
+    grep -q "cannot write /dev/full" e3.txt
+    touch a-file
+    for folder in /proc/hsrviz-nope a-file/sub a-file; do
+      if "$hsrviz" "$lesson" --record "$folder" > /dev/null 2> e4.txt; then exit 1; fi
+      grep -q "cannot make the folder $folder" e4.txt
+    done ;;
   help)
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"

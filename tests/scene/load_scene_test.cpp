@@ -1,5 +1,6 @@
 // Scene files: a good one loads; a bad one gives one clear error with file, line, column and field.
 #include <filesystem>
+#include <fstream>
 #include "catch.h"
 #include "scene/load_scene.h"
 #include "scene/save_scene.h"
@@ -144,4 +145,24 @@ TEST_CASE("every scene saved to TOML loads back the same, to the last bit", "[sc
         ++scenes;
     }
     CHECK(scenes > 20);
+}
+
+TEST_CASE("an OBJ mesh whose face names a vertex past the list is refused, naming the face", "[scene][errors][mesh]") {
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_mesh_test";
+    std::filesystem::create_directories(dir);
+    const auto scene_with = [&](const std::string& obj) {
+        std::ofstream(dir / "m.obj") << obj;
+        return "[camera]\neye = [0, 0, 5]\n[[meshes]]\nfile = \"" + (dir / "m.obj").string() + "\"\n";
+    };
+    for (const char* face : {"f 1 2 100000000", "f 1 2 99", "f -5 -6 -7", "f 1 2 4"}) {
+        INFO(face);
+        const LoadError e = error_of(scene_with(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + face + "\n"));
+        CHECK_THAT(e.what(), Catch::Contains("m.obj: face 1 names vertex"));
+        CHECK_THAT(e.what(), Catch::Contains("the file has 3 vertices"));
+    }
+    const LoadError two = error_of(scene_with("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n"));
+    CHECK_THAT(two.what(), Catch::Contains("m.obj has no faces of 3 or more vertices"));
+    CHECK_THAT(error_of(scene_with("this is not an OBJ file\n")).what(), Catch::Contains("has no faces"));
+    CHECK(load_scene_text("ok.toml", scene_with("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).polygons.size() == 1);
+    std::filesystem::remove_all(dir);
 }

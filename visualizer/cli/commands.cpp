@@ -1,5 +1,9 @@
 #include "cli/commands.h"
 
+#include <cstring>
+
+#include <cerrno>
+
 #include <cstdio>
 #include <algorithm>
 #include <filesystem>
@@ -19,6 +23,10 @@ int run_trace(const TraceOptions& o) {
             return 1;
         }
         const TraceSummary t = trace_lesson(lesson, &out);
+        if (!out.flush()) {  // a full disk shows here, not at the open
+            std::fprintf(stderr, "hsrviz: cannot write %s: %s\n", o.out.c_str(), std::strerror(errno));
+            return 1;
+        }
         std::printf("%llu events, trace hash %s, written to %s\n", static_cast<unsigned long long>(t.events),
                     hex(t.hash).c_str(), o.out.c_str());
         return 0;
@@ -26,6 +34,14 @@ int run_trace(const TraceOptions& o) {
         std::fprintf(stderr, "hsrviz: %s\n", e.what());
         return 1;
     }
+}
+
+bool make_folder(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (!ec && std::filesystem::is_directory(dir, ec)) return true;
+    std::fprintf(stderr, "hsrviz: cannot make the folder %s: %s\n", dir.c_str(), ec ? ec.message().c_str() : "a file of that name is in the way");
+    return false;
 }
 
 int run_check(std::vector<std::string> files, const std::string& root) {

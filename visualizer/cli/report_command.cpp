@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "analysis/measurement.h"
+#include "cli/commands.h"
 #include "analysis/report_files.h"
 #include "state/lesson.h"
 
@@ -13,13 +14,14 @@ namespace {
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
     std::ofstream f(path, std::ios::binary);
-    f << text;
+    f << text << std::flush;  // a full disk shows at the flush
     if (!f) throw std::runtime_error("cannot write " + path.string());
 }
 
 }  // namespace
 
 int run_report(const ReportOptions& o) {
+    if (!make_folder(o.out)) return 1;  // before minutes of measuring, not after
     const analysis::ReportOptions options{.quick = o.quick, .repeats = o.quick ? 3 : o.repeats, .scenes_dir = data_dir() + "/assets/scenes"};
     std::vector<analysis::Measurement> rows;
     for (auto* family : {analysis::measure_clipping, analysis::measure_zbuffer, analysis::measure_hidden_surfaces,
@@ -31,7 +33,6 @@ int run_report(const ReportOptions& o) {
     }
     const auto extremes = analysis::run_extreme_cases(data_dir() + "/assets/scenes/extreme");
     const std::filesystem::path dir(o.out);
-    std::filesystem::create_directories(dir);
     write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by `hsrviz report" + std::string(o.quick ? " --quick" : "") +
                                       "`; every number comes from this run.\n\n" + analysis::report_markdown(rows) +
                                       analysis::extreme_markdown(extremes));
