@@ -92,7 +92,10 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
     out.polygons = std::move(polygons);
     std::vector<Extents> ext;
     for (const auto& p : out.polygons) ext.push_back(extents_of(p));
+    const std::uint64_t n = out.polygons.size();
+    const std::uint64_t max_pairs = o.max_pairs.value_or(std::clamp<std::uint64_t>(256 * n * n, 100'000, 50'000'000));
     std::vector<bool> moved(out.polygons.size(), false);
+    std::size_t moves_since_drawn = 0;  // moves since a polygon was last drawn: a round moves each polygon once at most
     // Find MINZ and MAXZ; sort, farthest first
     std::vector<std::uint32_t> list(out.polygons.size());
     for (std::uint32_t i = 0; i < list.size(); ++i) list[i] = i;
@@ -110,9 +113,9 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             // Q wholly nearer than R: R may go first. (Not so when Q is wholly farther: once polygons have been moved
             // to the head, R need not be the farthest, and a Q behind it must be tested like any other.)
             if (ext[q].max_z <= ext[r].min_z) continue;
-            if (++out.pairs > o.max_pairs) {
+            if (++out.pairs > max_pairs) {
                 out.bounded = true;
-                co_yield SortBoundReached{SortBound::pairs, o.max_pairs};
+                co_yield SortBoundReached{SortBound::pairs, max_pairs};
                 co_return out;
             }
             co_yield PairExamined{r, q, ext[r].min_z, ext[r].max_z, ext[q].min_z, ext[q].max_z};
@@ -141,7 +144,7 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             draw_r = false;
             if (q_first && !moved[q]) {  // Q goes to the head of the list
                 moved[q] = true;
-                ++out.moves;
+                ++out.moves, ++moves_since_drawn;
                 list.erase(list.begin() + std::ptrdiff_t(k));
                 list.insert(list.begin(), q);
                 co_yield PolygonMoved{q, r};
@@ -152,8 +155,11 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             std::uint32_t cut = q, by = r;
             if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
             if (!ext[by].has_plane || classify(ext[by].plane, out.polygons[cut].vertices, tol) != PolygonSide::spanning) {
-                if (q_first) {  // neither cuts the other, and Q must go first: that is an order, not a cycle of these
-                    ++out.moves;  // two (Q's mark is from another R); move it again (max_pairs bounds the moves)
+                // Neither cuts the other, and Q must go first: that is an order, not a cycle of these two (Q's mark is
+                // from another R): move it again. But only while this round has moved fewer polygons than the list
+                // holds; beyond that the moves go round a cycle no plane can cut, and they would never end.
+                if (q_first && moves_since_drawn < list.size()) {
+                    ++out.moves, ++moves_since_drawn;
                     list.erase(list.begin() + std::ptrdiff_t(k));
                     list.insert(list.begin(), q);
                     co_yield PolygonMoved{q, r};
@@ -184,6 +190,7 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
         }
         if (!draw_r) continue;
         list.erase(list.begin());
+        moves_since_drawn = 0;
         out.order.push_back(r);
         co_yield PolygonPainted{r, out.polygons[r].id};
     }

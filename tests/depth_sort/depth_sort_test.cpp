@@ -330,3 +330,16 @@ TEST_CASE("depth sort on 60 and 120 random piercing triangles paints what the ra
             CHECK(differ < 30);  // of 49,152: pixel centres on an edge, where the two rasterisations may differ
         }
 }
+
+TEST_CASE("depth sort ends on interpenetrating triangles whose moves go round a cycle no plane cuts", "[depth-sort][bounds]") {
+    // the differential run's regression scene: it once moved polygons to the head of the list until 2^32 pairs
+    const Scene scene = load_scene(HSR_SOURCE_DIR "/assets/scenes/extreme/depth_sort_interpenetrating.toml");
+    const DepthSortResult r = depth_sort(sort_polygons(scene)).run_to_end();
+    CHECK_FALSE(r.bounded);
+    CHECK(r.pairs < 20'000);
+    CHECK(r.order.size() == r.polygons.size() - r.splits);  // every part drawn once (a split replaces one by two)
+    // a bound is reached in well-defined steps and says so
+    const DepthSortResult bounded = depth_sort(sort_polygons(scene), {.max_pairs = 50}).run_to_end();
+    CHECK(bounded.bounded);
+    CHECK(bounded.pairs == 51);
+}

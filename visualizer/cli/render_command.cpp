@@ -48,6 +48,7 @@ algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::V
     std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
                 o.splitter.c_str(), scene.polygons.size(), p.tree.polygons.size(), p.tree.splits, p.tree.nodes.size(),
                 p.tree.depth, p.build_ms);
+    if (p.tree.bounded) throw std::runtime_error("the BSP build stopped at its step bound (depth or polygons); no image written");
     return std::move(p.image);
 }
 
@@ -107,9 +108,11 @@ algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, alg
 algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, algo::Viewport vp) {
     analysis::DepthSortPainting p = analysis::paint_depth_sort(scene, vp);
     const algo::DepthSortResult& r = p.sorted;
-    std::printf("depth-sort: %zu polygons, %llu pairs examined, %u moves, %u splits%s, sorted in %.3f ms\n",
-                scene.polygons.size(), (unsigned long long)r.pairs, r.moves, r.splits, r.bounded ? " (stopped at a bound)" : "",
-                p.sort_ms);
+    std::printf("depth-sort: %zu polygons, %llu pairs examined, %u moves, %u splits, sorted in %.3f ms\n", scene.polygons.size(),
+                (unsigned long long)r.pairs, r.moves, r.splits, p.sort_ms);
+    if (r.bounded)  // the painting would be of an unfinished sort: a wrong picture, so none
+        throw std::runtime_error("depth sort stopped at its step bound (" + std::to_string(r.pairs) + " pairs, " +
+                                 std::to_string(r.splits) + " splits); no image written");
     return std::move(p.image);
 }
 
