@@ -47,9 +47,20 @@ void question_panel(const Session& s, const Classroom& room, float x, float y, f
     ImGui::Begin("Question", nullptr, fixed | ImGuiWindowFlags_AlwaysAutoResize);
     if (q) {
         ImGui::TextWrapped("%s", in_language(q->ask, room.language(), lesson.languages).c_str());
+        // one button per choice, as many to a row as fit (none cut); a choice that already starts with its own
+        // number ("3. R wholly behind Q's plane") is not numbered twice
+        const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
         for (std::size_t i = 0; i < q->choices.size(); ++i) {
-            if (i % 3) ImGui::SameLine();
-            if (ImGui::Button((std::to_string(i + 1) + "  " + q->choices[i]).c_str())) out.answer = q->choices[i];
+            const std::string number = std::to_string(i + 1);
+            const std::string& choice = q->choices[i];
+            const bool numbered = choice.rfind(number + ".", 0) == 0;
+            const std::string label = numbered ? choice : number + "  " + choice;
+            const float button_width = ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
+            if (i > 0) {
+                ImGui::SameLine();
+                if (ImGui::GetCursorScreenPos().x + button_width > right_edge) ImGui::NewLine();
+            }
+            if (ImGui::Button((label + "##choice" + number).c_str())) out.answer = choice;
         }
         ImGui::TextColored(dim_text, "keys 1 to %zu; the machine's next event will tell", q->choices.size());
     } else {
