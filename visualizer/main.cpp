@@ -1,5 +1,6 @@
 // hsrviz: step through culling and hidden-surface algorithms.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -28,9 +29,9 @@ int main(int argc, char** argv) {
     cli.add_flag("--play", app.autoplay, "Start playing at once");
     cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
     cli.add_flag("--projector", app.projector, "Projector mode: fullscreen, larger type for the back row, high contrast (F1: keys)");
-    cli.add_option("--keys", app.keys, "Keys to press, one per frame (Space, Right, Shift+Right, Left, Home, End, F5); "
-                                       "with --screenshot, the keys alone move the player")
-        ->delimiter(',');
+    std::string keys;  // one comma-separated argument: a lesson after it is the lesson, not one more key
+    cli.add_option("--keys", keys, "Keys to press, one per frame, comma-separated (Space,Right,Shift+Right,Left,Home,End,F5,V,1); "
+                                   "with --screenshot, the keys alone move the player");
 
     hsr::viz::TraceOptions trace;
     CLI::App* trace_cmd = cli.add_subcommand("trace", "Run a lesson's machine headless to completion and write its trace");
@@ -68,6 +69,11 @@ int main(int argc, char** argv) {
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
     std::sscanf(size.c_str(), "%dx%d", &app.width, &app.height);
     app.size_given = size_option->count() > 0;
+    for (std::size_t at = 0; !keys.empty() && at <= keys.size();) {
+        const std::size_t comma = std::min(keys.find(',', at), keys.size());
+        app.keys.push_back(keys.substr(at, comma - at));
+        at = comma + 1;
+    }
 
     // No display: say so, and play the same lesson headless through SDL's offscreen driver (EGL on Mesa).
     const bool no_display = !std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("SDL_VIDEODRIVER");

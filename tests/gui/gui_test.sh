@@ -58,6 +58,8 @@ case "$case" in
     events=$("$hsrviz" trace "$lesson" --out t.jsonl | cut -d' ' -f1)
     test "$end" -eq "$events"
     test "$(at 4 End,Home)" -eq 0
+    # a lesson named after --keys is the lesson, not one more key
+    "$hsrviz" --keys Right,Right "$lesson" --screenshot k.png --frames 4 | grep -q "^hsrviz: at step 2 of $events,"
     state() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step [0-9+]* of [0-9+]*, \([a-z]*\).*/\1/p'; }
     test "$(state 3 Space)" = playing
     test "$(state 4 Space,Space)" = paused
