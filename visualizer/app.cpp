@@ -63,6 +63,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_RIGHTBRACKET: a.column_wider = true; break;
         case SDLK_b: a.back_to_lesson = true; break;
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
+        case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
         case SDLK_0: a.digit = 0; break;
         default:  // 1 … 9: a question's choice (or a preset while the presets show)
             if (e.key.keysym.sym >= SDLK_1 && e.key.keysym.sym <= SDLK_9) a.digit = int(e.key.keysym.sym - SDLK_0);

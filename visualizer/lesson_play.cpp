@@ -37,7 +37,7 @@ void Lessonplay::load(const AppOptions& o) {
 
 void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
     if (a.back_to_lesson) {
-        path = o.lesson_path, algorithm = o.algorithm;
+        path = home, algorithm = home == o.lesson_path ? o.algorithm : std::nullopt;
     } else if (a.preset && *a.preset >= 0 && std::size_t(*a.preset) < presets.size()) {
         if (session()) algorithm = std::string(session()->lesson().algorithm.id);
         path = presets[std::size_t(*a.preset)].file;
@@ -56,6 +56,24 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
     family.reset();  // a new scene starts at its first step
     load(o);
     std::printf("hsrviz: playing %s with %s\n", path.c_str(), algorithm.value_or("the lesson's algorithm").c_str());
+}
+
+void Lessonplay::switch_lesson(int step, const AppOptions& o) {
+    const std::vector<std::string> lessons = shipped_lessons();
+    if (lessons.empty()) return;
+    const std::string now = std::filesystem::path(home).filename().string();
+    auto at = std::find_if(lessons.begin(), lessons.end(), [&](const std::string& l) { return std::filesystem::path(l).filename() == now; });
+    std::ptrdiff_t k = at == lessons.end() ? (step > 0 ? -1 : std::ptrdiff_t(lessons.size())) : at - lessons.begin();
+    k = std::clamp<std::ptrdiff_t>(k + step, 0, std::ptrdiff_t(lessons.size()) - 1);
+    home = path = lessons[std::size_t(k)], algorithm.reset();
+    family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
+    classroom = Classroom{};
+    report.clear();
+    show_presets = show_report = false;
+    playback.playing = false;
+    second_view = false;
+    load(o);
+    std::printf("hsrviz: lesson %s\n", path.c_str());
 }
 
 void Lessonplay::save_edited(const algo::Scene& scene) const {
@@ -84,6 +102,7 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     } else if (a.preset || a.random_scene || a.back_to_lesson) {
         choose_preset(a, o);
     }
+    if (a.next_lesson) switch_lesson(a.next_lesson, o);
     if (!session()) return;
     Session& p = *session();
     // the classroom: a number answers the open question (and does nothing else), chapters, language

@@ -51,6 +51,8 @@ struct Lessonplay {
     void load(const AppOptions& o);
     // P: play another scene with the lesson's algorithm (an extreme case, a random scene), or go back to the lesson.
     void choose_preset(const UiActions& a, const AppOptions& o);
+    // N / Shift+N: the next or previous shipped lesson, from its start (a teacher switching lessons in class).
+    void switch_lesson(int step, const AppOptions& o);
     // S: the scene as edited, to hsrviz-export/NAME-edited.toml
     void save_edited(const algo::Scene& scene) const;
     // One frame's actions and dt seconds of playing.

@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
     CLI::Option* size_option = cli.add_option("--size", size, "Window size WxH (default: as the last run left it, else 1280x800)")->check(CLI::Validator(
         [](std::string& s) { return std::sscanf(s.c_str(), "%*dx%*d") == 0 && s.find('x') != std::string::npos ? "" : "expected WxH"; }, "WxH"));
     cli.add_flag("--play", app.autoplay, "Start playing at once");
+    bool lesson_list = false;
+    cli.add_flag("--lesson-list", lesson_list, "Print the shipped lessons in the course's order (file, difficulty, algorithm, title), then exit");
     cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
     cli.add_flag("--projector", app.projector, "Projector mode: fullscreen, larger type for the back row, high contrast (F1: keys)");
     std::string keys;  // one comma-separated argument: a lesson after it is the lesson, not one more key
@@ -69,6 +71,7 @@ int main(int argc, char** argv) {
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
     std::sscanf(size.c_str(), "%dx%d", &app.width, &app.height);
     app.size_given = size_option->count() > 0;
+    if (lesson_list) return hsr::viz::print_lesson_list();
     for (std::size_t at = 0; !keys.empty() && at <= keys.size();) {
         const std::size_t comma = std::min(keys.find(',', at), keys.size());
         app.keys.push_back(keys.substr(at, comma - at));

@@ -160,6 +160,17 @@ case "$case" in
       "$src/assets/scenes/cs_segments.toml" > typo.toml
     if "$hsrviz" check typo.toml > check.txt; then exit 1; fi
     grep -q 'typo.toml:4: chapters\[0\].when: the machine never tells "Nope"' check.txt ;;
+  lesson-switch)  # N and Shift+N go through the course in order (the first lesson stays the first); --lesson-list
+    "$hsrviz" "$src/lessons/00_tour.toml" --screenshot n.png --frames 4 --keys N,N > n.txt
+    grep -q "lesson .*/lessons/02_liang_barsky.toml" n.txt
+    grep -q "^hsrviz: at step 0 of 42, paused$" n.txt
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot n.png --frames 5 --keys Shift+N,Shift+N,N > back.txt
+    grep -q "lesson .*/lessons/01_cohen_sutherland.toml" back.txt
+    "$png_check" n.png 1280 800
+    "$hsrviz" --lesson-list > list.txt
+    test "$(wc -l < list.txt)" -eq "$(ls "$src"/lessons/*.toml | wc -l)"
+    head -n 1 list.txt | grep -q "^00_tour.toml"
+    grep -q "^15_depth_sort_tests.toml  *3  *depth_sort  *Depth sort: one pair" list.txt ;;
   write-errors)  # a file that cannot be written, or a folder that cannot be made, is an error with a reason, exit 1
     lesson="$src/lessons/02_liang_barsky.toml"
     if "$hsrviz" trace "$lesson" --out /dev/full 2> e1.txt; then exit 1; fi

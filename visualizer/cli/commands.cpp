@@ -1,14 +1,13 @@
 #include "cli/commands.h"
 
-#include <cstring>
-
-#include <cerrno>
-
-#include <cstdio>
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
+#include "state/lesson.h"
 #include "state/lesson_check.h"
 #include "state/trace.h"
 
@@ -34,6 +33,21 @@ int run_trace(const TraceOptions& o) {
         std::fprintf(stderr, "hsrviz: %s\n", e.what());
         return 1;
     }
+}
+
+int print_lesson_list() {
+    int status = 0;
+    for (const std::string& path : shipped_lessons()) {
+        const std::string file = std::filesystem::path(path).filename().string();
+        try {
+            const Lesson l = load_lesson(path);
+            std::printf("%-32s %d  %-26s %s\n", file.c_str(), l.difficulty, std::string(l.algorithm.id).c_str(), l.title.c_str());
+        } catch (const std::exception& e) {  // listed with its problem: the menu must not hide a broken lesson
+            std::printf("%-32s -  %-26s (cannot be loaded: %s)\n", file.c_str(), "?", e.what());
+            status = 1;
+        }
+    }
+    return status;
 }
 
 bool make_folder(const std::string& dir) {

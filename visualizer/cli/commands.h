@@ -16,6 +16,9 @@ struct TraceOptions {
 // Runs the machine to completion, writes the trace, prints the event count and the trace hash. Exit code.
 int run_trace(const TraceOptions& o);
 
+// --lesson-list: the shipped lessons, one line each (file, difficulty, algorithm, title); exit code.
+int print_lesson_list();
+
 // Makes a folder (and its parents); false, having said why on stderr, when it cannot be made.
 bool make_folder(const std::string& dir);
 

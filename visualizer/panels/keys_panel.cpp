@@ -10,7 +10,7 @@ void keys_panel(const PanelLayout& l) {
     static constexpr std::pair<const char*, const char*> rows[] = {
         {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
-        {"PageDown  PageUp", "next / previous chapter"}, {"1 … 9", "answer the open question"},
+        {"PageDown  PageUp", "next / previous chapter"}, {"N  Shift+N", "next / previous lesson"}, {"1 … 9", "answer the open question"},
         {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
         {"R", "error against run time for this algorithm's family"},       {"V", "the other view: 3D, the camera's, the walk-through"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},

@@ -54,6 +54,7 @@ struct UiActions {
     bool toggle_report = false;                                    // R
     std::optional<int> preset;                                     // an extreme case chosen (its index)
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
+    int next_lesson = 0;                                           // N: +1, Shift+N: −1 (the course's order)
 };
 
 struct PlaybackState {

@@ -1,5 +1,7 @@
 #include "state/lesson.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -109,5 +111,14 @@ std::string data_dir() {
 }
 
 std::string default_lesson_path() { return data_dir() + "/lessons/00_tour.toml"; }
+
+std::vector<std::string> shipped_lessons() {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(data_dir() + "/lessons", ec))
+        if (e.path().extension() == ".toml") out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());  // by their numbers: the course's order
+    return out;
+}
 
 }  // namespace hsr::viz

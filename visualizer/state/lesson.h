@@ -64,5 +64,7 @@ Lesson read_lesson(const algo::TomlReader& reader, std::optional<std::string> al
 // Where lessons/ and assets/ are: $HSRVIZ_DATA, else the source tree the program was built from.
 std::string data_dir();
 std::string default_lesson_path();
+// The lessons in data_dir()/lessons, in the course's order (by file name: NN_topic.toml).
+std::vector<std::string> shipped_lessons();
 
 }  // namespace hsr::viz
