@@ -57,9 +57,9 @@ ClipJob clip_job(const Scene& scene) {
 
 Steps<ClipEvent, std::vector<PrimitiveClip>> clip_scene(ClipJob job, ClipAlgorithm algorithm, ClipOptions options) {
     options.space = job.space;
-    for (const auto& p : job.points) require_finite(p);
-    for (const auto& s : job.segments) require_finite(s);
-    for (const auto& p : job.polygons) require_finite(p);
+    for (const auto& p : job.points) require_clippable(p);
+    for (const auto& s : job.segments) require_clippable(s);
+    for (const auto& p : job.polygons) require_clippable(p);
     return clip_scene_machine(std::move(job), algorithm, options);
 }
 

@@ -42,9 +42,10 @@ struct PolygonClip {
     bool operator==(const PolygonClip&) const = default;
 };
 
-// Throw InvalidInput naming the primitive and coordinate when any coordinate is NaN or infinite.
-void require_finite(const ClipSegment& s);
-void require_finite(const ClipPolygon& p);
-void require_finite(const ClipPoint& p);
+// Throw InvalidInput naming the primitive and coordinate when any coordinate is NaN, infinite or beyond
+// ±ClipTolerance::largest_coordinate.
+void require_clippable(const ClipSegment& s);
+void require_clippable(const ClipPolygon& p);
+void require_clippable(const ClipPoint& p);
 
 }  // namespace hsr::algo

@@ -67,7 +67,7 @@ Steps<ClipEvent, SegmentClip> liang_barsky_machine(ClipSegment segment, ClipOpti
 }  // namespace
 
 Steps<ClipEvent, SegmentClip> liang_barsky(ClipSegment segment, ClipOptions options) {
-    require_finite(segment);
+    require_clippable(segment);
     return liang_barsky_machine(segment, options);
 }
 

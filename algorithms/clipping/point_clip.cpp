@@ -12,7 +12,7 @@ Steps<ClipEvent, bool> clip_point_machine(ClipPoint point, ClipOptions o) {
 }  // namespace
 
 Steps<ClipEvent, bool> clip_point(ClipPoint point, ClipOptions options) {
-    require_finite(point);
+    require_clippable(point);
     return clip_point_machine(point, options);
 }
 

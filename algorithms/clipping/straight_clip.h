@@ -13,6 +13,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "clipping/carried_boundaries.h"
 #include "core/numeric.h"
 
 namespace hsr::algo {
@@ -82,44 +83,68 @@ unsigned plain_outcode(const Vec4Of<T>& p) {
     return c;
 }
 
-// The loop form of CS_Clip_3D, with the machine's rule that a plane once clipped against is not tested again.
+// The loop form of CS_Clip_3D, with the machine's rules: a plane once clipped against is not tested again, and
+// every cut is made on the input segment (carried_boundaries.h).
 template <class T>
 PlainSegment<T> plain_cohen_sutherland(Vec4Of<T> p1, Vec4Of<T> p2) {
+    const Vec4Of<T> in1 = p1, in2 = p2;
+    T t1 = 0, t2 = 1;
     unsigned allowed = 0x7f;
     for (;;) {
-        const unsigned c1 = plain_outcode(p1) & allowed, c2 = plain_outcode(p2) & allowed;
+        auto code = [&](T t) {  // mkcode from the input's boundary values, as the machine does
+            unsigned c = 0;
+            for (int k = 0; k < 7; ++k)
+                if (boundary_at(plain_boundary(in1, k), plain_boundary(in2, k), t) < 0) c |= 1u << k;
+            return c;
+        };
+        const unsigned c1 = code(t1) & allowed, c2 = code(t2) & allowed;
         if ((c1 | c2) == 0) return std::pair{p1, p2};
         if ((c1 & c2) != 0) return std::nullopt;
         int k = 0;
         while (((c1 ^ c2) >> k & 1u) == 0) ++k;
-        const T b1 = plain_boundary(p1, k), b2 = plain_boundary(p2, k);
-        const Vec4Of<T> i = plain_intersection(k, p1, p2, b1 / (b1 - b2));
-        (c1 >> k & 1u ? p1 : p2) = i;
+        const bool p1_outside = (c1 >> k & 1u) != 0;
+        const T t = cut_parameter(plain_boundary(in1, k), plain_boundary(in2, k), t1, t2, p1_outside);
+        (p1_outside ? p1 : p2) = plain_intersection(k, in1, in2, t);
+        (p1_outside ? t1 : t2) = t;
         allowed = (c1 | c2) & ~(1u << k);
     }
 }
 
 template <class T>
-std::vector<Vec4Of<T>> plain_sutherland_hodgman(std::vector<Vec4Of<T>> polygon) {
-    std::vector<Vec4Of<T>> input;
+std::vector<Vec4Of<T>> plain_sutherland_hodgman(const std::vector<Vec4Of<T>>& input_polygon) {
+    using Vertex = CarriedVertex<T>;  // boundary values carried, as the machine does
+    std::vector<Vertex> polygon, input;
+    for (const Vec4Of<T>& p : input_polygon) {
+        Vertex v{p, {}};
+        for (int k = 0; k < 7; ++k) v.b[std::size_t(k)] = plain_boundary(p, k);
+        polygon.push_back(v);
+    }
     for (int k = 0; k < 7 && !polygon.empty(); ++k) {
         std::swap(input, polygon);
         polygon.clear();
+        auto crossing = [k](const Vertex& in, const Vertex& out) {  // from the inside end, as the machine does
+            return cut_edge(k, in, out, [k](const Vec4Of<T>& from, const Vec4Of<T>& to, T t) {
+                return plain_intersection(k, from, to, t);
+            });
+        };
         for (std::size_t i = 0; i < input.size(); ++i) {
-            const Vec4Of<T>& s = input[i];
-            const Vec4Of<T>& e = input[(i + 1) % input.size()];
-            const T bs = plain_boundary(s, k), be = plain_boundary(e, k);
+            const Vertex& s = input[i];
+            const Vertex& e = input[(i + 1) % input.size()];
+            const T bs = s.b[std::size_t(k)], be = e.b[std::size_t(k)];
             if (bs >= 0 && be >= 0) {
                 polygon.push_back(e);
             } else if (bs >= 0) {
-                polygon.push_back(plain_intersection(k, s, e, bs / (bs - be)));
-            } else if (be >= 0) {  // from the inside end, as the machine does
-                polygon.push_back(plain_intersection(k, e, s, be / (be - bs)));
+                polygon.push_back(crossing(s, e));
+            } else if (be >= 0) {
+                polygon.push_back(crossing(e, s));
                 polygon.push_back(e);
             }
         }
     }
-    return polygon;
+    std::vector<Vec4Of<T>> points;
+    points.reserve(polygon.size());
+    for (const Vertex& v : polygon) points.push_back(v.p);
+    return points;
 }
 
 }  // namespace hsr::algo

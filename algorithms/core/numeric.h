@@ -56,6 +56,17 @@ inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div
 
 struct ClipTolerance {
     static constexpr double w_epsilon = 1e-9;  // clip-space w below which a point counts as at or behind the eye
+    // The largest clip-space coordinate a clipper takes. A boundary value (w − x) is at most twice it and the
+    // difference of two (the lecture's p_i = q1 − q2) four times, so nothing a clipper computes can overflow to
+    // infinity and then to NaN; 1e307 leaves room for that, where 1.5e308 did not.
+    static constexpr double largest_coordinate = 1e307;
 };
+
+inline bool clippable(const glm::dvec4& p) {
+    constexpr double m = ClipTolerance::largest_coordinate;
+    return std::fabs(p.x) <= m && std::fabs(p.y) <= m && std::fabs(p.z) <= m && std::fabs(p.w) <= m;  // false for NaN
+}
+// Throws InvalidInput("<where>.<axis> is 1.5e+308, beyond ±1e+307 …") for a finite coordinate a clipper cannot take.
+void require_clippable(const glm::dvec4& p, const std::string& where);
 
 }  // namespace hsr::algo

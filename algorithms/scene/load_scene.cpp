@@ -8,6 +8,7 @@
 #include <set>
 
 #include "bsp/bsp_events.h"
+#include "core/numeric.h"
 #include "core/plane.h"
 #include "scene/load_floor_plan.h"
 #include "scene/load_mesh.h"
@@ -226,10 +227,16 @@ Scene read_scene(const TomlReader& r) {
             r.fail(t.get("id"), join(f, "id"), "id " + std::to_string(id) + " is used twice");
         return SceneId(id);
     };
+    auto point = [&](const toml::node& n, const std::string& field) {
+        const glm::dvec4 v = r.vector(n, field, dims, dims);
+        if (s.coordinates == Coordinates::clip && !clippable(v))
+            r.fail(&n, field, "clip-space coordinates must lie within ±1e307 (beyond it w − x can overflow)");
+        return v;
+    };
     auto vertex = [&](const toml::table& t, std::string_view key, const std::string& f) {
         const toml::node* n = t.get(key);
         if (!n) r.fail(&t, join(f, key), "missing; expected an array of " + std::to_string(dims) + " numbers");
-        return r.vector(*n, join(f, key), dims, dims);
+        return point(*n, join(f, key));
     };
     for_each_table(r, root, "points", [&](const toml::table& t, const std::string& f) {
         r.only_keys(t, f, {"id", "color", "p"});
@@ -246,7 +253,7 @@ Scene read_scene(const TomlReader& r) {
         if (!(p.opacity >= 0 && p.opacity <= 1)) r.fail(t.get("opacity"), join(f, "opacity"), "expected an opacity from 0 to 1");
         const toml::array* v = r.array(t, "vertices", f, true);
         for (std::size_t i = 0; i < v->size(); ++i)
-            p.vertices.push_back(r.vector(*v->get(i), index(join(f, "vertices"), i), dims, dims));
+            p.vertices.push_back(point(*v->get(i), index(join(f, "vertices"), i)));
         if (p.vertices.size() < 3)
             r.fail(t.get("vertices"), join(f, "vertices"), "a polygon needs at least 3 vertices");
         if (s.coordinates == Coordinates::world && !has_area(p.vertices))
