@@ -66,6 +66,11 @@ TEST_CASE("a bad scene names file, line, column and field", "[scene][errors]") {
         {"[[segments]]\nid = 1\na = [0, 0, nan]\nb = [1, 1, 1]\n", 3, "segments[0].a[2]", "finite"},
         {"[[segments]]\nid = 1\na = [0, \"x\", 0]\nb = [1, 1, 1]\n", 3, "segments[0].a[1]", "a number"},
         {"[[segments]]\nid = 1\nb = [1, 1, 1]\n", 1, "segments[0].a", "missing"},
+        // issue 19 bug 5b: w − z overflowed to infinity and then to NaN in every clipper
+        {"coordinates = \"clip\"\n[[segments]]\nid = 1\na = [0, 0, 1.5e308, 1e308]\nb = [0, 0, -1.5e308, 1e308]\n", 4,
+         "segments[0].a", "within ±1e307"},
+        {"coordinates = \"clip\"\n[[polygons]]\nid = 1\nvertices = [[0, 0, 0, 1], [1, 0, 0, 1],\n [0, 2e307, 0, 1]]\n", 5,
+         "polygons[0].vertices[2]", "within ±1e307"},
         {"[camera]\nfov = 200\n", 2, "camera.fov", "0 < fov < 180"},
         {"[camera]\nnear = 5\nfar = 1\n", 3, "camera.far", "far > near"},
         {"[camera]\neye = [0, 0, 0]\n", 1, "camera.target", "target equals eye"},
