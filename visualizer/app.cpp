@@ -135,7 +135,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     if (s.lesson().chapters.empty()) lesson_panel(s, scene.detail, layout);
     else chapter_lesson_panel(s, lp.classroom, scene.detail, layout);
     pseudocode_panel(s, layout);
-    question_panel(s, lp.classroom, 0, 0, view_w, view_h, actions);
+    question_panel(s, lp.classroom, layout, actions);
     if (lp.show_report) report_panel(lp.report, layout);
     if (lp.show_keys) keys_panel(layout);
     if (lp.show_presets)
@@ -264,7 +264,10 @@ int run_app(const AppOptions& o) {
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
             lp.side = clamp_side(lp.side, io.DisplaySize.x);
-            draw_frame(lp, renderer, PanelLayout{io.DisplaySize.x, io.DisplaySize.y, lp.side}, io.DisplayFramebufferScale.x, from_panels);
+            PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y, lp.side};
+            lp.column.arrange(layout.height - layout.bottom, lp.path);
+            layout.fit = &lp.column;
+            draw_frame(lp, renderer, layout, io.DisplayFramebufferScale.x, from_panels);
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             ++frame;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app.h"
+#include "panels/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/orbit_camera.h"
 #include "screens/screens.h"
@@ -35,6 +36,7 @@ struct Lessonplay {
     std::optional<std::string> algorithm;
     bool show_presets = false;            // P
     float side = 500;                     // the panel column's width ([ and ] change it; remembered)
+    ColumnFit column;                     // the column's boxes sized to their content
     bool show_report = false;             // R: error against run time for the algorithm's family
     std::vector<analysis::Measurement> report;  // measured when R first opens it
     std::vector<Preset> presets;          // of the lesson's algorithm

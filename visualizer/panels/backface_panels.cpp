@@ -7,12 +7,11 @@
 namespace hsr::viz {
 
 void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Faces");
     const BackfaceView& v = s.view();
-    ImGui::Begin("Faces", nullptr, fixed);
     ImGui::TextColored(dim_text, "%d kept · %d culled · %d to test (%s)", v.kept, v.culled,
                        int(v.faces.size()) - v.kept - v.culled, std::string(algo::to_string(v.test)).c_str());
-    if (ImGui::BeginTable("faces", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg)) {
+    if (ImGui::BeginTable("faces", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("face", ImGuiTableColumnFlags_WidthFixed, 50);
         ImGui::TableSetupColumn(v.test == algo::BackfaceTest::view_vector      ? "v·n"
                                 : v.test == algo::BackfaceTest::plane_equation ? "N·eye + D"
@@ -37,7 +36,7 @@ void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
         }
         ImGui::EndTable();
     }
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -1,23 +1,24 @@
 #include "panels/bsp_panels.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <string>
 
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 
 namespace hsr::viz {
 
 void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
-    ImGui::Begin("BSP tree", nullptr, fixed);
+    begin_column_box(l, Box::state, "BSP tree");
     const BspSession::Stats& st = s.stats();
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%zu polygons in · %zu after %u splits · %zu nodes · depth %u · built in %.3f ms",
-                       st.polygons_in, st.polygons_after, st.splits, st.nodes, st.depth, st.build_ms);
-    ImGui::PopStyleColor();
+    char stats[200];
+    std::snprintf(stats, sizeof stats, "%zu polygons in · %zu after %u splits · %zu nodes · depth %u · built in %.3f ms",
+                  st.polygons_in, st.polygons_after, st.splits, st.nodes, st.depth, st.build_ms);
+    wrapped_text(stats, dim_text);
 
     // Layout: x by in-order position, y by depth.
     const BspView& v = s.view();
@@ -60,7 +61,7 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
         }
     }
     ImGui::Dummy(avail);
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

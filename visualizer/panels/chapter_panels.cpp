@@ -5,48 +5,51 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 
 namespace hsr::viz {
+namespace {
+
+const ImVec4 chapter_colour(0.94f, 0.89f, 0.26f, 1);
+const ImVec4 question_title(0.94f, 0.89f, 0.26f, 1);
+
+}  // namespace
 
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& l) {
     const Lesson& lesson = s.lesson();
-    place_in_column(l, 0);
-    ImGui::Begin("Lesson", nullptr, fixed);
-    ImGui::TextWrapped("%s", lesson.title.c_str());
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%s  ·  difficulty %d  ·  %s", std::string(lesson.algorithm.id).c_str(), lesson.difficulty, detail.c_str());
-    ImGui::PopStyleColor();
+    begin_column_box(l, Box::lesson, "Lesson");
+    wrapped_text(lesson.title);
+    wrapped_text(std::string(lesson.algorithm.id) + "  ·  difficulty " + std::to_string(lesson.difficulty) + "  ·  " + detail,
+                 dim_text);
     ImGui::Separator();
     if (const auto c = room.chapter(s)) {
         const Chapter& ch = lesson.chapters[*c];
-        ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%zu/%zu  %s", *c + 1, lesson.chapters.size(), ch.title.c_str());
-        ImGui::TextWrapped("%s", in_language(ch.narration, room.language(), lesson.languages).c_str());
+        wrapped_text(std::to_string(*c + 1) + "/" + std::to_string(lesson.chapters.size()) + "  " + ch.title, chapter_colour);
+        wrapped_text(reflow(in_language(ch.narration, room.language(), lesson.languages)));
     } else {
-        ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-        ImGui::TextWrapped("%s", lesson.summary.c_str());
-        ImGui::PopStyleColor();
+        wrapped_text(reflow(lesson.summary), dim_text);
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("PgUp/PgDn chapters · L language (%s)%s", room.language().c_str(),
-                       room.questions() ? (" · score " + std::to_string(room.right()) + " of " + std::to_string(room.answered()) +
-                                           " answered, " + std::to_string(room.questions()) + " questions")
-                                              .c_str()
-                                        : "");
-    ImGui::PopStyleColor();
-    ImGui::End();
+    wrapped_text("PgUp/PgDn chapters · L language (" + room.language() + ")" +
+                     (room.questions() ? " · score " + std::to_string(room.right()) + " of " + std::to_string(room.answered()) +
+                                             " answered, " + std::to_string(room.questions()) + " questions"
+                                       : std::string()),
+                 dim_text);
+    end_column_box(l, Box::lesson);
 }
 
-void question_panel(const Session& s, const Classroom& room, float x, float y, float w, float h, UiActions& out) {
+void question_panel(const Session& s, const Classroom& room, const PanelLayout& l, UiActions& out) {
     const Lesson& lesson = s.lesson();
     const Question* q = room.open_question(s);
     const auto verdict = room.verdict(s);
     if (!q && !verdict) return;
-    const float width = std::min(w - 24, 520.0f);
-    ImGui::SetNextWindowPos(ImVec2(x + 12, y + h - 12), ImGuiCond_Always, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(width, 0));
-    ImGui::Begin("Question", nullptr, fixed | ImGuiWindowFlags_AlwaysAutoResize);
+    // a title bar in the chapter colour: the box the class is asked to look at
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, question_title);
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, question_title);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.08f, 0.08f, 0.1f, 1));
+    begin_column_box(l, Box::question, q ? "Question" : "Answer");
+    ImGui::PopStyleColor(3);
     if (q) {
-        ImGui::TextWrapped("%s", in_language(q->ask, room.language(), lesson.languages).c_str());
+        wrapped_text(in_language(q->ask, room.language(), lesson.languages));
         // one button per choice, as many to a row as fit (none cut); a choice that already starts with its own
         // number ("3. R wholly behind Q's plane") is not numbered twice
         const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
@@ -62,15 +65,14 @@ void question_panel(const Session& s, const Classroom& room, float x, float y, f
             }
             if (ImGui::Button((label + "##choice" + number).c_str())) out.answer = choice;
         }
-        ImGui::TextColored(dim_text, "keys 1 to %zu; the machine's next event will tell", q->choices.size());
     } else {
         if (verdict->revealed)
-            ImGui::TextColored(dim_text, "Shown before it was answered: no score.");
+            wrapped_text("Shown before it was answered: no score.", dim_text);
         else
-            ImGui::TextColored(verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", verdict->right ? "Right." : "Not quite.");
-        ImGui::TextWrapped("The machine: %s (%s)", verdict->answer.c_str(), verdict->because.c_str());
+            wrapped_text(verdict->right ? "Right." : "Not quite.", verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
+        wrapped_text("The machine: " + verdict->answer + " (" + verdict->because + ")");
     }
-    ImGui::End();
+    end_column_box(l, Box::question);
 }
 
 }  // namespace hsr::viz

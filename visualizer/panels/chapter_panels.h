@@ -1,6 +1,7 @@
 // The classroom in the window: the chapter showing (its title and narration in the chosen language) above the
-// lesson's summary, and the open question over the view with a button per choice (keys 1 to 9), then the verdict
-// with the machine's own sentence, and the score.
+// lesson's summary, and the open question at the foot of the panel column, where it hides nothing of the view it
+// asks about, with a button per choice (keys 1 to 9), then the verdict with the machine's own sentence, and the
+// score.
 #pragma once
 
 #include "panels/lesson_panels.h"
@@ -10,7 +11,7 @@ namespace hsr::viz {
 
 // Replaces the lesson panel when the lesson has chapters.
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& layout);
-// Over the view area, bottom left: the open question (out.answer on a click) or the last verdict.
-void question_panel(const Session& s, const Classroom& room, float x, float y, float w, float h, UiActions& out);
+// The column's last box: the open question (out.answer on a click) or the last verdict.
+void question_panel(const Session& s, const Classroom& room, const PanelLayout& layout, UiActions& out);
 
 }  // namespace hsr::viz

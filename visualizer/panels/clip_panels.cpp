@@ -78,19 +78,18 @@ void pipeline(const ClipView& v) {
 }  // namespace
 
 void clip_state_panel(const ClipSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
     const ClipView& v = s.view();
     const char* title = s.algorithm() == ClipAlgorithm::cohen_sutherland ? "Outcodes"
                         : s.algorithm() == ClipAlgorithm::liang_barsky   ? "Parameters"
                                                                          : "Pipeline";
-    ImGui::Begin(title, nullptr, fixed);
+    begin_column_box(l, Box::state, title);
     switch (s.algorithm()) {
         case ClipAlgorithm::cohen_sutherland: outcode_table(v); break;
         case ClipAlgorithm::liang_barsky: parameter_bar(v); break;
         case ClipAlgorithm::sutherland_hodgman: pipeline(v); break;
     }
     if (v.bound_reached) ImGui::TextColored(bit_set, "a step bound was reached");
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

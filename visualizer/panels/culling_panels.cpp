@@ -73,9 +73,8 @@ void void_table(const CullingView& v) {
 }  // namespace
 
 void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Culling");
     const CullingView& v = s.culling_view();
-    ImGui::Begin("Culling", nullptr, fixed);
     ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · V: god's eye / camera", std::string(to_string(s.culling_machine())).c_str(), v.kept, v.left_out);
     if (s.culling_machine() == algo::CullingMachine::frustum) {
         ImGui::SameLine();
@@ -96,7 +95,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
         }
         ImGui::EndTabBar();
     }
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 void zpyramid_canvas(const CullingView& v, const std::vector<std::uint32_t>& depth, float x, float y, float w, float h) {

@@ -11,9 +11,8 @@ namespace hsr::viz {
 // The tests tried on the pair under examination, one row each (the swapped retries of 3 and 4 after the five),
 // scrolled so that the latest is in sight.
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Decision table");
     const DepthSortView& v = s.view();
-    ImGui::Begin("Decision table", nullptr, fixed);
     if (v.r < 0) {
         ImGui::TextColored(dim_text, v.done ? "All drawn: %zu polygons, %u moves, %u splits." : "No pair under examination.",
                            v.drawn.size(), v.moves, v.splits);
@@ -21,7 +20,7 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
         ImGui::Text("R = #%d and Q = #%d overlap in z: the tests come next.", v.r, v.q);
     }
     ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
-    if (!v.tests.empty() && ImGui::BeginTable("tests", 3, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY)) {
+    if (!v.tests.empty() && ImGui::BeginTable("tests", 3, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, 226);
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 28);
         ImGui::TableSetupColumn("numbers");
@@ -43,7 +42,7 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
         ImGui::EndTable();
     }
     ImGui::PopStyleVar();
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string_view>
+#include <vector>
 
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 
 namespace hsr::viz {
 namespace {
@@ -24,55 +27,80 @@ std::string step_text(const Session& s) {
 
 // ── [SECTION] lesson, pseudocode, narration ─────────────────────────────────────────────────────────────────
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& l) {
-    place_in_column(l, 0);
-    ImGui::Begin("Lesson", nullptr, fixed);
-    ImGui::TextWrapped("%s", s.lesson().title.c_str());
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%s  ·  difficulty %d  ·  %s", std::string(s.lesson().algorithm.id).c_str(),
-                       s.lesson().difficulty, detail.c_str());
-    ImGui::PopStyleColor();
+    begin_column_box(l, Box::lesson, "Lesson");
+    wrapped_text(s.lesson().title);
+    wrapped_text(std::string(s.lesson().algorithm.id) + "  ·  difficulty " + std::to_string(s.lesson().difficulty) +
+                     "  ·  " + detail,
+                 dim_text);
     ImGui::Separator();
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    ImGui::TextWrapped("%s", s.lesson().summary.c_str());
-    ImGui::PopStyleColor();
-    ImGui::End();
+    wrapped_text(reflow(s.lesson().summary), dim_text);
+    end_column_box(l, Box::lesson);
 }
 
 void pseudocode_panel(const Session& s, const PanelLayout& l) {
-    place_in_column(l, 1);
-    ImGui::Begin("Pseudocode", nullptr, fixed | ImGuiWindowFlags_HorizontalScrollbar);
-    const auto lines = s.pseudocode();
-    const int current = s.current_line();
+    begin_column_box(l, Box::pseudocode, "Pseudocode", fixed | ImGuiWindowFlags_NoScrollbar);
     if (ImFont* mono = monospace_font()) ImGui::PushFont(mono);
+    // A line wider than the box wraps at a space onto rows indented under it, so nothing is cut on the right.
+    struct Row {
+        std::string text;
+        int line;
+    };
+    std::vector<Row> rows;
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 1.0f);
+    const auto measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
+    const auto lines = s.pseudocode();
     for (int i = 0; i < int(lines.size()); ++i) {
-        const std::string text(lines[std::size_t(i)]);
-        if (i == current) {
-            const ImVec2 at = ImGui::GetCursorScreenPos();
-            const float w = std::max(ImGui::GetContentRegionAvail().x, ImGui::CalcTextSize(text.c_str()).x);
-            ImGui::GetWindowDrawList()->AddRectFilled(
-                at, ImVec2(at.x + w, at.y + ImGui::GetTextLineHeightWithSpacing()), ImGui::GetColorU32(highlight_bg));
-            ImGui::TextUnformatted(text.c_str());
-            ImGui::SetScrollHereY(0.5f);
-        } else {
-            ImGui::TextUnformatted(text.c_str());
-        }
+        const std::string_view line = lines[std::size_t(i)];
+        const std::string indent(line.substr(0, std::min(line.find_first_not_of(' '), line.size())));
+        const std::string hanging = indent + "    ";
+        const auto pieces = wrap_at_spaces(line.substr(indent.size()), width - measure(hanging), measure);
+        for (std::size_t k = 0; k < pieces.size(); ++k) rows.push_back({(k == 0 ? indent : hanging) + pieces[k], i});
     }
+    // When the rows do not all fit, a window of whole rows around the running line (a third of the way down), and a
+    // row at either end saying how many more there are: no row is cut at the top or the bottom.
+    const int current = s.current_line();
+    const float row_height = ImGui::GetTextLineHeightWithSpacing();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float room = ImGui::GetWindowHeight() - ImGui::GetCursorStartPos().y - style.WindowPadding.y + style.ItemSpacing.y;
+    const int fit = std::max(3, int(room / row_height));
+    int first = 0, last = int(rows.size());
+    if (last > fit) {
+        const auto at = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.line == current; });
+        const int running = at == rows.end() ? 0 : int(at - rows.begin());
+        first = std::clamp(running - fit / 3, 0, last - fit);
+        last = first + fit;
+    }
+    for (int r = first; r < last; ++r) {
+        if ((r == first && first > 0) || (r == last - 1 && last < int(rows.size()))) {
+            const int hidden = r == first ? first + 1 : int(rows.size()) - r;
+            ImGui::TextColored(dim_text, "   … %d more line%s %s", hidden, hidden == 1 ? "" : "s", r == first ? "above" : "below");
+            continue;
+        }
+        const Row& row = rows[std::size_t(r)];
+        if (row.line == current) {
+            const ImVec2 at = ImGui::GetCursorScreenPos();
+            ImGui::GetWindowDrawList()->AddRectFilled(at, ImVec2(at.x + width, at.y + row_height), ImGui::GetColorU32(highlight_bg));
+        }
+        ImGui::TextUnformatted(row.text.c_str());
+    }
+    // all rows when there is room; must be seen: the title and five rows (the running one among them)
+    auto height_of = [&](std::size_t n) {
+        return ImGui::GetCursorStartPos().y + float(n) * row_height - style.ItemSpacing.y + style.WindowPadding.y + 2;
+    };
     if (monospace_font()) ImGui::PopFont();
+    if (l.fit) l.fit->asked(Box::pseudocode, {height_of(std::min<std::size_t>(rows.size(), 5)), height_of(rows.size())});
     ImGui::End();
 }
 
 void narration_panel(const Session& s, const PanelLayout& l) {
-    place_in_column(l, 3);
-    ImGui::Begin("Narration", nullptr, fixed);
+    begin_column_box(l, Box::narration, "Narration");
     ImGui::TextColored(dim_text, "%s", step_text(s).c_str());
     const std::string now = s.narration();
-    ImGui::TextWrapped("%s", now.empty() ? "Press Space to play, or → to take one step." : now.c_str());
+    wrapped_text(now.empty() ? "Press Space to play, or → to take one step." : now);
+    const float need = column_box_height_so_far();
     // the few events before, faint, newest first
-    ImGui::PushStyleColor(ImGuiCol_Text, dim_text);
-    for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back)
-        ImGui::TextWrapped("%s", s.sentence(s.cursor() - back).c_str());
-    ImGui::PopStyleColor();
-    ImGui::End();
+    for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back) wrapped_text(s.sentence(s.cursor() - back), dim_text);
+    end_column_box(l, Box::narration, need);
 }
 
 // ── [SECTION] timeline ──────────────────────────────────────────────────────────────────────────────────────
@@ -121,10 +149,10 @@ void error_panel(const std::string& message, const PanelLayout& l, UiActions& ou
     place(40, 40, l.width - 80, 220);
     ImGui::Begin("The lesson could not be loaded", nullptr, fixed);
     ImGui::PushStyleColor(ImGuiCol_Text, bit_set);
-    ImGui::TextWrapped("%s", message.c_str());
+    wrapped_text(message);
     ImGui::PopStyleColor();
     ImGui::Separator();
-    ImGui::TextWrapped("Fix the file and press F5 (or the button) to load it again.");
+    wrapped_text("Fix the file and press F5 (or the button) to load it again.");
     out.reload |= ImGui::Button("Reload (F5)");
     ImGui::End();
 }

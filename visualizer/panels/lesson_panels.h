@@ -6,6 +6,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "panels/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/label.h"
 #include "state/session.h"
@@ -16,18 +17,17 @@ struct PanelLayout {
     float width, height;  // of the window, in pixels
     float side = 500;     // width of the right-hand column
     float bottom = 96;    // height of the timeline
+    ColumnFit* fit = nullptr;  // the column's boxes sized to their content (arranged for this frame)
 
-    // The right-hand column, top to bottom: lesson, pseudocode, state, narration; as shares of its height, so that
-    // 1280×800 gives 150, 262, 170 and the rest, and smaller windows shrink every panel alike.
-    struct Slot {
-        float y, h;
-    };
-    Slot slot(int panel) const {
-        static constexpr float share[] = {150.f / 704, 262.f / 704, 170.f / 704, 122.f / 704};
+    // A box of the right-hand column: where the fit put it, or its default share (1280×800: 150, 262, 170, 122)
+    // when there is no fit.
+    BoxSlot slot(Box b) const {
+        if (fit) return fit->slot(b);
+        static constexpr float share[] = {150.f / 704, 262.f / 704, 170.f / 704, 122.f / 704, 0};
         const float column = height - bottom;
         float y = 0;
-        for (int i = 0; i < panel; ++i) y += share[i] * column;
-        return {y, panel == 3 ? column - y : share[panel] * column};
+        for (int i = 0; i < int(b); ++i) y += share[i] * column;
+        return {y, b == Box::narration ? column - y : share[int(b)] * column};
     }
 };
 

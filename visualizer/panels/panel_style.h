@@ -2,6 +2,7 @@
 #pragma once
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "panels/lesson_panels.h"
 
@@ -34,9 +35,29 @@ inline ImDrawList* begin_canvas(const char* name, float x, float y, float w, flo
     return ImGui::GetWindowDrawList();
 }
 
-inline void place_in_column(const PanelLayout& l, int panel) {
-    const auto slot = l.slot(panel);
+// A box of the right-hand column: placed where the column's fit puts it, begun as a window with `flags`. End it
+// with end_column_box, which tells the fit how tall its content was.
+inline void begin_column_box(const PanelLayout& l, Box b, const char* title, ImGuiWindowFlags flags = fixed) {
+    const auto slot = l.slot(b);
     place(l.width - l.side, slot.y, l.side, slot.h);
+    ImGui::Begin(title, nullptr, flags);
+}
+
+// The height of the box's content down to the cursor: the content's bottom (the cursor stands one item spacing below
+// it) and the padding under it.
+inline float column_box_height_so_far() {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y + 2;
+}
+
+// `need`: how much of the box must be seen (column_box_height_so_far() at that point), all of it by default.
+inline void end_column_box(const PanelLayout& l, Box b, float need = -1) {
+    if (l.fit) {
+        float full = column_box_height_so_far();
+        if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;
+        l.fit->asked(b, {need < 0 ? full : need, full});
+    }
+    ImGui::End();
 }
 
 }  // namespace hsr::viz

@@ -231,9 +231,8 @@ void stab_tree(const algo::CellModel& m, const std::vector<algo::StabNode>& tree
 }  // namespace
 
 void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "PVS");
     const PvsView& v = s.view();
-    ImGui::Begin("PVS", nullptr, fixed);
     ImGui::TextColored(dim_text, "%llu sightline tests%s", (unsigned long long)v.tests, v.bounded ? " · a bound was reached" : "");
     if (ImGui::BeginTabBar("pvs tabs")) {
         if (ImGui::BeginTabItem("PVS matrix")) {
@@ -246,14 +245,13 @@ void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
         }
         ImGui::EndTabBar();
     }
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelLayout& l, UiActions& out) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Portals");
     const PortalView& v = s.view();
     const auto& m = v.world->model;
-    ImGui::Begin("Portals", nullptr, fixed);
     bool show_3d = three_d;
     if (ImGui::Checkbox("3D walk-through", &show_3d)) out.toggle_3d = true;
     ImGui::SameLine();
@@ -271,7 +269,7 @@ void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelL
         }
         ImGui::EndTabBar();
     }
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -38,9 +38,8 @@ void raycast_image(const RayCastSession& s, float x, float y, float w, float h) 
 }
 
 void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Ray");
     const RayView& v = s.view();
-    ImGui::Begin("Ray", nullptr, fixed);
     ImGui::TextColored(dim_text, "%s · %d×%d rays · t = 0 on the near plane, 1 on the far plane",
                        std::string(algo::to_string(v.acceleration)).c_str(), v.viewport.width, v.viewport.height);
     if (v.ray_x >= 0) {
@@ -59,7 +58,7 @@ void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
     }
     ImGui::TextColored(dim_text, "%llu rays · %llu primitive tests (%.3g per ray)", (unsigned long long)v.rays,
                        (unsigned long long)v.tests, v.rays ? double(v.tests) / double(v.rays) : 0.0);
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -40,12 +40,11 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
 }
 
 void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Edge table");
     const ScanView& v = s.view();
-    ImGui::Begin("Edge table", nullptr, fixed);
     ImGui::TextColored(dim_text, "line %d · %zu active edges · %llu spans output", v.line, v.active.size(),
                        (unsigned long long)v.spans);
-    if (ImGui::BeginTable("edges", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg)) {
+    if (ImGui::BeginTable("edges", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("edge", ImGuiTableColumnFlags_WidthFixed, 44);
         ImGui::TableSetupColumn("polygon", ImGuiTableColumnFlags_WidthFixed, 64);
         ImGui::TableSetupColumn("lines", ImGuiTableColumnFlags_WidthFixed, 70);
@@ -70,7 +69,7 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l) {
         }
         ImGui::EndTable();
     }
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -118,9 +118,8 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
 }
 
 void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout& l, UiActions& out) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Depth buffer");
     const ZView& v = s.view();
-    ImGui::Begin("Depth buffer", nullptr, fixed);
     int current = 0;
     for (std::size_t i = 0; i < formats.size(); ++i)
         if (formats[i] == v.format) current = int(i);
@@ -163,7 +162,7 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
                     v.incoming < v.stored ? "<" : "≥", (unsigned long long)v.stored);
     ImGui::TextColored(dim_text, "%llu tested · %llu written · %zu pixels unlike the ray cast", (unsigned long long)v.tested,
                        (unsigned long long)v.written, s.pixels_unlike_ray_cast());
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -38,15 +38,14 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
 }
 
 void zmerge_state_panel(const ZMergeSession& s, const PanelLayout& l) {
-    place_in_column(l, 2);
+    begin_column_box(l, Box::state, "Merge");
     const ZMergeView& v = s.view();
-    ImGui::Begin("Merge", nullptr, fixed);
     ImGui::TextColored(dim_text, "%s · smaller codes are nearer · on a tie B stays",
                        std::string(algo::to_string(s.lesson().depth_format)).c_str());
     if (v.x >= 0)
         ImGui::Text("pixel (%d, %d): Za = %u, Zb = %u → %s", v.x, v.y, v.depth_a, v.depth_b, v.from_a ? "A" : "B");
     ImGui::Text("%llu pixels from A · %llu from B", (unsigned long long)v.from_a_count, (unsigned long long)v.from_b_count);
-    ImGui::End();
+    end_column_box(l, Box::state);
 }
 
 }  // namespace hsr::viz

@@ -1,0 +1,88 @@
+#include "panels/column_fit.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace hsr::viz {
+namespace {
+
+// Max–min fair shares of `room` for asks `want` (the smallest met in full, the others splitting what remains).
+template <std::size_t N>
+std::array<float, N> fair(const std::array<float, N>& want, float room) {
+    std::array<std::size_t, N> order{};
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return want[a] < want[b]; });
+    std::array<float, N> got{};
+    auto left = std::count_if(want.begin(), want.end(), [](float w) { return w > 0; });
+    for (std::size_t i : order) {
+        if (want[i] <= 0) continue;
+        got[i] = std::max(0.0f, std::min(want[i], room / float(left--)));
+        room -= got[i];
+    }
+    return got;
+}
+
+}  // namespace
+
+std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count>& asks, float height) {
+    std::array<float, box_count> h{};
+    const auto q = std::size_t(Box::question);
+    h[q] = std::min(asks[q].full, height / 2);
+    float room = height - h[q];
+
+    // then what the lesson box must show (the chapter's text is the lesson; up to half of what is left)
+    const auto lesson = std::size_t(Box::lesson);
+    std::array<float, box_count - 1> need{}, extra{};
+    for (std::size_t i = 0; i < need.size(); ++i) need[i] = std::min(asks[i].need, asks[i].full);
+    h[lesson] = std::min(need[lesson], room / 2);
+    room -= h[lesson];
+    need[lesson] = 0;
+    auto first = fair(need, room);
+    first[lesson] = h[lesson];
+    room += h[lesson];
+    for (std::size_t i = 0; i < need.size(); ++i) {
+        h[i] = first[i];
+        room -= first[i];
+        extra[i] = asks[i].full - first[i];
+    }
+    const auto second = fair(extra, room);
+    for (std::size_t i = 0; i < extra.size(); ++i) {
+        h[i] += second[i];
+        room -= second[i];
+    }
+    const auto to = asks[std::size_t(Box::state)].full > 0 ? Box::state : Box::narration;
+    if (room > 0 && asks[std::size_t(to)].full > 0) h[std::size_t(to)] += room;
+    return h;
+}
+
+void ColumnFit::arrange(float height, const std::string& lesson) {
+    if (lesson != lesson_) {
+        lesson_ = lesson;
+        // the shares the column had before it was fitted (1280×800: 150, 262, 170, 122): until the boxes are drawn
+        const float share[] = {150, 262, 170, 122, 0};
+        for (std::size_t i = 0; i < box_count; ++i) asks_[i] = {height * share[i] / 704, height * share[i] / 704};
+        drawn_ = {true, true, true, true, false};
+        measured_ = {};
+    }
+    for (std::size_t i = 0; i < box_count; ++i)
+        if (!drawn_[i]) asks_[i] = {}, measured_[i] = false;  // not drawn last frame: no room kept for it
+    drawn_ = {};
+    const auto h = share(asks_, height);
+    float y = 0;
+    for (std::size_t i = 0; i < box_count; ++i) {
+        slots_[i] = {y, h[i]};
+        y += h[i];
+    }
+}
+
+void ColumnFit::asked(Box b, BoxAsk ask) {
+    BoxAsk& a = asks_[std::size_t(b)];
+    bool& seen = measured_[std::size_t(b)];
+    // the boxes that change at every step keep their largest size (a default was only a guess); the lesson text
+    // changes with the chapter, the pseudocode never, the question once
+    const bool steady = b == Box::state || b == Box::narration;
+    a = seen && steady ? BoxAsk{std::max(a.need, ask.need), std::max(a.full, ask.full)} : ask;
+    seen = drawn_[std::size_t(b)] = true;
+}
+
+}  // namespace hsr::viz

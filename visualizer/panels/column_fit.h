@@ -1,0 +1,52 @@
+// The right-hand column sized to what its boxes hold: a box with one line takes one line, the lesson text and the
+// narration grow, a table gets the rows it has; only when everything does not fit do the boxes share the height,
+// each scrolling inside its share (with its scrollbar visible).
+//
+// A box says how tall its content was when it is drawn (ImGui lays text out as it draws, so the height is known
+// only then), and how much of it must be seen (the narration's current sentence, not the faint ones before it; a
+// few lines of pseudocode around the one running); the next frame's column is arranged from that. The state and
+// narration boxes, which change at every step, keep their largest height for the lesson, so the boxes do not jump
+// up and down as a class steps through it.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace hsr::viz {
+
+// Top to bottom.
+enum class Box { lesson, pseudocode, state, narration, question };
+inline constexpr int box_count = 5;
+
+struct BoxSlot {
+    float y = 0, h = 0;
+};
+
+// What a box asks for: `need` must be seen, `full` is all of it (0: not drawn).
+struct BoxAsk {
+    float need = 0, full = 0;
+};
+
+class ColumnFit {
+public:
+    // Arranges the column of `height` pixels for this frame, from what the boxes asked for when last drawn. `lesson`
+    // names what plays: another lesson starts from the default shares again.
+    void arrange(float height, const std::string& lesson);
+    BoxSlot slot(Box b) const { return slots_[std::size_t(b)]; }
+    // What the box's content needed this frame (title bar and padding included).
+    void asked(Box b, BoxAsk ask);
+
+    // The arithmetic of arrange, for tests: the question first (up to half the column), the lesson's need (up to
+    // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
+    // remains equally); what is left over goes to the state box, else the narration.
+    static std::array<float, box_count> share(const std::array<BoxAsk, box_count>& asks, float height);
+
+private:
+    std::string lesson_;
+    std::array<BoxAsk, box_count> asks_{};    // high-water marks of what each box asked for
+    std::array<bool, box_count> drawn_{};     // asked for this frame
+    std::array<bool, box_count> measured_{};  // asked for since the lesson started (else asks_ is a default)
+    std::array<BoxSlot, box_count> slots_{};
+};
+
+}  // namespace hsr::viz
