@@ -25,6 +25,7 @@
 #include "lesson_play.h"
 #include "panels/chapter_panels.h"
 #include "panels/keys_panel.h"
+#include "panels/layout_audit.h"
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "render/gl.h"
@@ -64,7 +65,19 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_b: a.back_to_lesson = true; break;
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
-        case SDLK_0: a.digit = 0; break;
+        case SDLK_EQUALS:
+        case SDLK_PLUS:
+        case SDLK_KP_PLUS:
+            if (e.key.keysym.mod & KMOD_CTRL) a.scale_step = +1;
+            break;
+        case SDLK_MINUS:
+        case SDLK_KP_MINUS:
+            if (e.key.keysym.mod & KMOD_CTRL) a.scale_step = -1;
+            break;
+        case SDLK_0:
+            if (e.key.keysym.mod & KMOD_CTRL) a.scale_reset = true;
+            else a.digit = 0;
+            break;
         default:  // 1 … 9: a question's choice (or a preset while the presets show)
             if (e.key.keysym.sym >= SDLK_1 && e.key.keysym.sym <= SDLK_9) a.digit = int(e.key.keysym.sym - SDLK_0);
             break;
@@ -197,6 +210,8 @@ int run_app(const AppOptions& o) {
         Lessonplay lp;
         lp.load(o);
         lp.side = settings.side;
+        lp.scale = lp.first_scale = initial_scale(o);
+        float applied_scale = lp.scale;
         for (int k = 0; k < 8 && !settings.language.empty() && lp.classroom.language() != settings.language; ++k)
             lp.classroom.next_language();  // the language last chosen, where the lesson has it
         lp.playback.playing = o.autoplay;
@@ -257,14 +272,17 @@ int run_app(const AppOptions& o) {
             last_ticks = ticks;
 
             // Draw
+            if (lp.scale != applied_scale) apply_scale(applied_scale = lp.scale);  // fonts are rebuilt between frames
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplSDL2_NewFrame();
             ImGui::NewFrame();
+            layout_problems().clear();
             int width = 0, height = 0;
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
             lp.side = clamp_side(lp.side, io.DisplaySize.x);
-            PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y, lp.side};
+            // the column and the timeline grow with the type (the column's width is remembered unscaled)
+            PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y, clamp_side(lp.side * lp.scale, io.DisplaySize.x), 96 * lp.scale};
             lp.column.arrange(layout.height - layout.bottom, lp.path);
             layout.fit = &lp.column;
             draw_frame(lp, renderer, layout, io.DisplayFramebufferScale.x, from_panels);
@@ -291,13 +309,15 @@ int run_app(const AppOptions& o) {
                 if (gif) gif->add_frame(half_size_pixels(width, height));
                 if (!gif || !lp.session() || lp.session()->at_end() || lp.session()->cursor() >= o.gif_to) running = false;
             }
-            if (o.screenshot && frame >= std::uint64_t(o.frames)) {
+            // the screenshot waits (a few frames at most) until the panel column has settled
+            if (o.screenshot && frame >= std::uint64_t(o.frames) && (!lp.column.moved() || frame >= std::uint64_t(o.frames) + 8)) {
                 if (const Session* s = lp.session())
                     std::printf("hsrviz: at step %zu of %zu%s, %s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
                                 lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "");
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
+                for (const std::string& problem : layout_problems()) std::printf("hsrviz: layout: %s\n", problem.c_str());
                 if (!write_png(*o.screenshot, width, height)) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
                     exit_code = 1;

@@ -21,6 +21,8 @@ struct AppOptions {
     std::size_t gif_from = 0, gif_to = 60;
     std::optional<std::string> frame_log;      // one line per frame: its time in ms (and the median printed at exit)
     bool projector = false;                    // fullscreen, larger type for the back row, high contrast
+    float scale = 0;                           // the size of type and panels (1 = normal); 0: 1.3 for a projector, else
+                                               // the screen's (2 on a high-DPI screen)
     std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };
 

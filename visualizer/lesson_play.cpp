@@ -120,6 +120,8 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     if (a.next_language) classroom.next_language();
     if (a.toggle_keys) show_keys = !show_keys;
     side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
+    if (a.scale_step) scale = std::clamp(scale * (a.scale_step > 0 ? 1.1f : 1 / 1.1f), 0.5f, 4.0f);
+    if (a.scale_reset) scale = first_scale;
     if (a.export_all) export_pending = true;
     if (a.close_overlays) show_keys = show_presets = show_report = false;
     if (a.toggle_3d) second_view = !second_view;

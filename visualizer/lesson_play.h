@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app.h"
-#include "panels/column_fit.h"
+#include "state/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/orbit_camera.h"
 #include "screens/screens.h"
@@ -37,6 +37,7 @@ struct Lessonplay {
     bool show_presets = false;            // P
     float side = 500;                     // the panel column's width ([ and ] change it; remembered)
     ColumnFit column;                     // the column's boxes sized to their content
+    float scale = 1, first_scale = 1;     // of type and panels (Ctrl+= / Ctrl+−), and as the window started
     bool show_report = false;             // R: error against run time for the algorithm's family
     std::vector<analysis::Measurement> report;  // measured when R first opens it
     std::vector<Preset> presets;          // of the lesson's algorithm

@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
     bool lesson_list = false;
     cli.add_flag("--lesson-list", lesson_list, "Print the shipped lessons in the course's order (file, difficulty, algorithm, title), then exit");
     cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
+    cli.add_option("--scale", app.scale, "Size of type and panels, 0.5 to 4 (default: 1.3 with --projector, the screen's on a high-DPI screen, else 1; Ctrl+= and Ctrl+- change it)")
+        ->check(CLI::Range(0.5f, 4.0f));
     cli.add_flag("--projector", app.projector, "Projector mode: fullscreen, larger type for the back row, high contrast (F1: keys)");
     std::string keys;  // one comma-separated argument: a lesson after it is the lesson, not one more key
     cli.add_option("--keys", keys, "Keys to press, one per frame, comma-separated (Space,Right,Shift+Right,Left,Home,End,F5,V,1); "

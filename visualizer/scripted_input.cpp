@@ -1,7 +1,9 @@
 #include "scripted_input.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace hsr::viz {
@@ -45,15 +47,22 @@ std::optional<ScriptedInput> parse_scripted_input(const std::string& token) {
 }
 
 bool key_event(const std::string& name, SDL_Event& e) {
-    const bool shift = name.rfind("Shift+", 0) == 0;
-    const SDL_Keycode code = SDL_GetKeyFromName(shift ? name.substr(6).c_str() : name.c_str());
+    // modifiers first, in any order: Shift+Right, Ctrl+=, Ctrl+Shift+Z
+    std::string key = name;
+    Uint16 mod = KMOD_NONE;
+    for (bool more = true; more;) {
+        more = false;
+        for (const auto& [prefix, bit] : {std::pair<const char*, Uint16>{"Shift+", KMOD_LSHIFT}, {"Ctrl+", KMOD_LCTRL}})
+            if (key.size() > std::strlen(prefix) && key.rfind(prefix, 0) == 0) key = key.substr(std::strlen(prefix)), mod |= bit, more = true;
+    }
+    const SDL_Keycode code = SDL_GetKeyFromName(key.c_str());
     if (code == SDLK_UNKNOWN) return false;
     e = SDL_Event{};
     e.type = SDL_KEYDOWN;
     e.key.state = SDL_PRESSED;
     e.key.keysym.sym = code;
     e.key.keysym.scancode = SDL_GetScancodeFromKey(code);
-    e.key.keysym.mod = shift ? KMOD_LSHIFT : KMOD_NONE;
+    e.key.keysym.mod = mod;
     return true;
 }
 

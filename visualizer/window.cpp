@@ -24,6 +24,12 @@ void load_fonts(ImGuiIO& io, float scale) {
     io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges);  // pseudocode
 }
 
+// The style before scaling (ScaleAllSizes multiplies, so each scale starts from this).
+ImGuiStyle& unscaled_style() {
+    static ImGuiStyle style;
+    return style;
+}
+
 }  // namespace
 
 bool interactive(const AppOptions& o) { return !o.screenshot && !o.record_dir && !o.gif; }
@@ -74,7 +80,6 @@ void setup_imgui(const Window& w, const AppOptions& o) {
     io.IniFilename = nullptr;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0;
-    load_fonts(io, o.projector ? 1.3f : 1.0f);
     if (o.projector) {  // high contrast for a washed-out projector: white on black, bright frames
         ImGuiStyle& style = ImGui::GetStyle();
         style.Colors[ImGuiCol_Text] = ImVec4(1, 1, 1, 1);
@@ -82,8 +87,29 @@ void setup_imgui(const Window& w, const AppOptions& o) {
         style.Colors[ImGuiCol_Border] = ImVec4(0.8f, 0.8f, 0.8f, 1);
         style.FrameBorderSize = 1, style.WindowBorderSize = 2;
     }
+    unscaled_style() = ImGui::GetStyle();
     ImGui_ImplSDL2_InitForOpenGL(w.window, w.gl);
     ImGui_ImplOpenGL3_Init("#version 330 core");
+    apply_scale(initial_scale(o));
+}
+
+float initial_scale(const AppOptions& o) {
+    if (o.scale > 0) return o.scale;
+    if (o.projector) return 1.3f;
+    float dpi = 0;
+    if (SDL_GetDisplayDPI(0, &dpi, nullptr, nullptr) == 0 && dpi >= 144) return std::min(dpi / 96, 3.0f);
+    return 1.0f;
+}
+
+void apply_scale(float scale) {
+    ImGuiIO& io = ImGui::GetIO();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style = unscaled_style();
+    style.ScaleAllSizes(scale);
+    io.Fonts->Clear();
+    load_fonts(io, scale);
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
 }  // namespace hsr::viz

@@ -20,7 +20,12 @@ struct Window {
     void close();
 };
 
-// Dear ImGui's context, fonts and style (larger and high contrast for a projector) on the window.
+// Dear ImGui's context, fonts and style (high contrast for a projector) on the window, at initial_scale(o).
 void setup_imgui(const Window& w, const AppOptions& o);
+// The scale the window starts at: --scale; else 1.3 for a projector, the screen's DPI / 96 on a high-DPI screen
+// (144 dpi and more), else 1.
+float initial_scale(const AppOptions& o);
+// Type, paddings and frames rebuilt at `scale` (Ctrl+= and Ctrl+−). Between frames only.
+void apply_scale(float scale);
 
 }  // namespace hsr::viz

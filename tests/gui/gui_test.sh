@@ -19,6 +19,25 @@ case "$case" in
       "$hsrviz" "$lesson" --screenshot "$name.png" --frames 15
       "$png_check" "$name.png" 1280 800
     done ;;
+  layout)  # every lesson at 1280×800 and on a projector at 1920×1080: no panel of the column cut without a
+            # scrollbar, no word broken inside (the window prints each as "hsrviz: layout: …")
+    for lesson in "$src"/lessons/*.toml; do
+      name=$(basename "$lesson" .toml)
+      for mode in "--size 1280x800" "--projector --size 1920x1080" "--scale 1.6 --size 1280x800"; do
+        for keys in Right,Right,Right End; do
+          # shellcheck disable=SC2086
+          "$hsrviz" "$lesson" $mode --keys "$keys" --screenshot l.png --frames 5 > out.txt
+          if grep "layout:" out.txt; then echo "in $name with $mode after $keys"; exit 1; fi
+        done
+      done
+    done
+    # Ctrl+= makes type and column larger (the column's right edge is the window's, its left edge moves left)
+    small=$("$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot a.png --frames 4 --keys Right)
+    large=$("$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot b.png --frames 6 --keys Right,Ctrl+=,Ctrl+=)
+    echo "$large" | grep -q "at step"
+    test "$(echo "$small" | grep -c layout:)" -eq 0
+    test "$(echo "$large" | grep -c layout:)" -eq 0
+    ! cmp -s a.png b.png ;;
   bad-lesson)  # a typo in a lesson: the window opens, shows the error, and exits cleanly
     printf 'title = "typo"\nalgorithm = "cohen_sutherlnd"\nscene = "x.toml"\n' > typo.toml
     "$hsrviz" typo.toml --screenshot typo.png --frames 3 2> err.txt
@@ -155,7 +174,7 @@ case "$case" in
     "$hsrviz" trace hsrviz-export/01_cohen_sutherland-scene.toml --out again.jsonl --algorithm cohen_sutherland > /dev/null
     cmp <(sed 's/"text".*//' again.jsonl) <(sed 's/"text".*//' hsrviz-export/01_cohen_sutherland.jsonl)
     "$hsrviz" check "$lesson" > check.txt
-    grep -q "ok .*01_cohen_sutherland.toml (64 events, 4 chapters, 3 questions)" check.txt
+    grep -q "ok .*01_cohen_sutherland.toml (64 events, 5 chapters, 3 questions)" check.txt
     printf 'title = "t"\nalgorithm = "cohen_sutherland"\nscene = "%s"\n[[chapters]]\nwhen = "Nope"\nnarration = "x"\n' \
       "$src/assets/scenes/cs_segments.toml" > typo.toml
     if "$hsrviz" check typo.toml > check.txt; then exit 1; fi

@@ -7,25 +7,28 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 
 namespace hsr::viz {
 namespace {
 
 void pipeline_table(const CullingView& v) {
     if (!ImGui::BeginTable("pipeline", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) return;
-    ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthFixed, 90);
-    ImGui::TableSetupColumn("in", ImGuiTableColumnFlags_WidthFixed, 60);
-    ImGui::TableSetupColumn("left out", ImGuiTableColumnFlags_WidthFixed, 70);
-    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 50);
+    const float em = ImGui::GetFontSize();  // widths that grow with the type (projector, Ctrl+=)
+    ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthFixed, 5.5f * em);
+    ImGui::TableSetupColumn("in", ImGuiTableColumnFlags_WidthFixed, 3.5f * em);
+    ImGui::TableSetupColumn("left out", ImGuiTableColumnFlags_WidthFixed, 4.2f * em);
+    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 3 * em);
     ImGui::TableSetupColumn("");
     ImGui::TableHeadersRow();
     for (const algo::StageReport& r : v.world->pipeline) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(std::string(algo::to_string(r.stage)).c_str());
-        if (!r.ran) {
+        if (!r.ran) {  // a dash in each number's column, the reason where the bar would be
+            for (int k = 0; k < 3; ++k) ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
             ImGui::TableNextColumn();
-            ImGui::TextColored(dim_text, "not needed: left out of the pipeline");
+            ImGui::TextColored(dim_text, "not needed");
             continue;
         }
         ImGui::TableNextColumn();
@@ -75,15 +78,11 @@ void void_table(const CullingView& v) {
 void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, "Culling");
     const CullingView& v = s.culling_view();
-    ImGui::TextColored(dim_text, "%s: %u kept, %u left out so far · V: god's eye / camera", std::string(to_string(s.culling_machine())).c_str(), v.kept, v.left_out);
-    if (s.culling_machine() == algo::CullingMachine::frustum) {
-        ImGui::SameLine();
-        ImGui::TextColored(dim_text, "· %u plane tests", v.plane_tests);
-    }
-    if (s.culling_machine() == algo::CullingMachine::hiz) {
-        ImGui::SameLine();
-        ImGui::TextColored(dim_text, "· %u texels tested", v.texels);
-    }
+    std::string header = std::string(to_string(s.culling_machine())) + ": " + std::to_string(v.kept) + " kept, " +
+                         std::to_string(v.left_out) + " left out so far";
+    if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + std::to_string(v.plane_tests) + " plane tests";
+    if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + std::to_string(v.texels) + " texels tested";
+    wrapped_text(header + " · V: god's eye / camera", dim_text);
     if (ImGui::BeginTabBar("culling tabs")) {
         if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem("void space")) {
             void_table(v);

@@ -62,7 +62,8 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
     const float row_height = ImGui::GetTextLineHeightWithSpacing();
     const ImGuiStyle& style = ImGui::GetStyle();
     const float room = ImGui::GetWindowHeight() - ImGui::GetCursorStartPos().y - style.WindowPadding.y + style.ItemSpacing.y;
-    const int fit = std::max(3, int(room / row_height));
+    const int fit = std::max(1, int(room / row_height));
+    const bool marks = fit >= 3;  // room for a row saying what is above or below, besides the running line
     int first = 0, last = int(rows.size());
     if (last > fit) {
         const auto at = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.line == current; });
@@ -71,7 +72,7 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
         last = first + fit;
     }
     for (int r = first; r < last; ++r) {
-        if ((r == first && first > 0) || (r == last - 1 && last < int(rows.size()))) {
+        if (marks && ((r == first && first > 0) || (r == last - 1 && last < int(rows.size())))) {
             const int hidden = r == first ? first + 1 : int(rows.size()) - r;
             ImGui::TextColored(dim_text, "   … %d more line%s %s", hidden, hidden == 1 ? "" : "s", r == first ? "above" : "below");
             continue;
@@ -89,6 +90,7 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
     };
     if (monospace_font()) ImGui::PopFont();
     if (l.fit) l.fit->asked(Box::pseudocode, {height_of(std::min<std::size_t>(rows.size(), 5)), height_of(rows.size())});
+    audit_current_window();
     ImGui::End();
 }
 
@@ -121,7 +123,7 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
     ImGui::SameLine();
     out.to_end |= ImGui::Button("End >|");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(180);
+    ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
     float speed = playback.speed;
     if (ImGui::SliderFloat("steps/s", &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
     ImGui::SameLine();

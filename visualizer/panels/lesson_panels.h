@@ -6,7 +6,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "panels/column_fit.h"
+#include "state/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/label.h"
 #include "state/session.h"

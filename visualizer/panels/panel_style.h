@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "panels/layout_audit.h"
 #include "panels/lesson_panels.h"
 
 namespace hsr::viz {
@@ -52,6 +53,7 @@ inline float column_box_height_so_far() {
 
 // `need`: how much of the box must be seen (column_box_height_so_far() at that point), all of it by default.
 inline void end_column_box(const PanelLayout& l, Box b, float need = -1) {
+    audit_current_window();
     if (l.fit) {
         float full = column_box_height_so_far();
         if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;

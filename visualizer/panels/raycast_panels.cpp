@@ -1,11 +1,13 @@
 #include "panels/raycast_panels.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 
 namespace hsr::viz {
 
@@ -40,8 +42,9 @@ void raycast_image(const RayCastSession& s, float x, float y, float w, float h) 
 void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, "Ray");
     const RayView& v = s.view();
-    ImGui::TextColored(dim_text, "%s · %d×%d rays · t = 0 on the near plane, 1 on the far plane",
-                       std::string(algo::to_string(v.acceleration)).c_str(), v.viewport.width, v.viewport.height);
+    wrapped_text(std::string(algo::to_string(v.acceleration)) + " · " + std::to_string(v.viewport.width) + "×" +
+                     std::to_string(v.viewport.height) + " rays · t = 0 on the near plane, 1 on the far plane",
+                 dim_text);
     if (v.ray_x >= 0) {
         ImGui::Text("pixel (%d, %d): %u tests so far", v.ray_x, v.ray_y, v.ray_tests);
         if (v.acceleration == algo::Acceleration::grid && !v.cells.empty())
@@ -56,8 +59,10 @@ void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
         else
             ImGui::TextColored(dim_text, "nearest: none yet");
     }
-    ImGui::TextColored(dim_text, "%llu rays · %llu primitive tests (%.3g per ray)", (unsigned long long)v.rays,
-                       (unsigned long long)v.tests, v.rays ? double(v.tests) / double(v.rays) : 0.0);
+    char totals[160];
+    std::snprintf(totals, sizeof totals, "%llu rays · %llu primitive tests (%.3g per ray)", (unsigned long long)v.rays,
+                  (unsigned long long)v.tests, v.rays ? double(v.tests) / double(v.rays) : 0.0);
+    wrapped_text(totals, dim_text);
     end_column_box(l, Box::state);
 }
 

@@ -51,6 +51,8 @@ struct UiActions {
     std::optional<std::size_t> delete_polygon;
     bool toggle_presets = false;                                   // P
     bool column_narrower = false, column_wider = false;            // [ and ]
+    int scale_step = 0;                                            // Ctrl+= +1, Ctrl+− −1; Ctrl+0: back to the start
+    bool scale_reset = false;
     bool toggle_report = false;                                    // R
     std::optional<int> preset;                                     // an extreme case chosen (its index)
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show

@@ -1,4 +1,4 @@
-#include "panels/column_fit.h"
+#include "state/column_fit.h"
 
 #include <algorithm>
 #include <numeric>
@@ -69,7 +69,9 @@ void ColumnFit::arrange(float height, const std::string& lesson) {
     drawn_ = {};
     const auto h = share(asks_, height);
     float y = 0;
+    moved_ = false;
     for (std::size_t i = 0; i < box_count; ++i) {
+        moved_ = moved_ || slots_[i].y != y || slots_[i].h != h[i];
         slots_[i] = {y, h[i]};
         y += h[i];
     }

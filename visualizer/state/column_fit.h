@@ -33,6 +33,9 @@ public:
     // names what plays: another lesson starts from the default shares again.
     void arrange(float height, const std::string& lesson);
     BoxSlot slot(Box b) const { return slots_[std::size_t(b)]; }
+    // Whether this frame's arrangement differs from the last one's (a screenshot waits until it does not: ImGui
+    // shows a box's scrollbar a frame after its content outgrew it).
+    bool moved() const { return moved_; }
     // What the box's content needed this frame (title bar and padding included).
     void asked(Box b, BoxAsk ask);
 
@@ -47,6 +50,7 @@ private:
     std::array<bool, box_count> drawn_{};     // asked for this frame
     std::array<bool, box_count> measured_{};  // asked for since the lesson started (else asks_ is a default)
     std::array<BoxSlot, box_count> slots_{};
+    bool moved_ = true;
 };
 
 }  // namespace hsr::viz

@@ -1,0 +1,111 @@
+// The panel column's arithmetic: boxes get what they hold when it fits and fair shares when it does not; text wraps
+// at spaces only, so a number is never broken.
+#include <numeric>
+
+#include "catch.h"
+#include "state/column_fit.h"
+#include "state/text_wrap.h"
+
+using namespace hsr::viz;
+
+namespace {
+
+std::array<BoxAsk, box_count> asks(BoxAsk lesson, BoxAsk code, BoxAsk state, BoxAsk narration, BoxAsk question = {}) {
+    return {lesson, code, state, narration, question};
+}
+float sum(const std::array<float, box_count>& h) { return std::accumulate(h.begin(), h.end(), 0.0f); }
+// one unit per character: a monospace measure
+float chars(std::string_view s) { return float(s.size()); }
+
+}  // namespace
+
+TEST_CASE("when everything fits, each box gets what it holds and the rest goes to the state box", "[column]") {
+    const auto h = ColumnFit::share(asks({60, 60}, {100, 200}, {50, 80}, {40, 90}), 700);
+    CHECK(h[0] == 60);
+    CHECK(h[1] == 200);
+    CHECK(h[3] == 90);
+    CHECK(h[2] == 700 - 60 - 200 - 90);  // a one-line box is one line; the state box takes the slack
+    CHECK(h[4] == 0);
+    CHECK(sum(h) == 700);
+}
+
+TEST_CASE("a family without a state box gives the slack to the narration", "[column]") {
+    const auto h = ColumnFit::share(asks({60, 60}, {100, 100}, {}, {40, 90}), 500);
+    CHECK(h[2] == 0);
+    CHECK(h[3] == 500 - 160);
+}
+
+TEST_CASE("when it does not fit: the question, the lesson's text, then what each box must show", "[column]") {
+    const auto h = ColumnFit::share(asks({200, 200}, {150, 400}, {300, 300}, {80, 200}, {120, 120}), 704);
+    CHECK(h[4] == 120);              // the question in full
+    CHECK(h[0] == 200);              // the lesson's text in full
+    CHECK(h[3] >= 80);               // the narration's current sentence
+    CHECK(h[1] >= 150);              // five lines of pseudocode
+    CHECK(sum(h) == Approx(704));    // no pixel of the column wasted, none beyond it
+    CHECK(h[2] > 0);
+}
+
+TEST_CASE("a question never takes more than half the column, and needs beyond the column are shared fairly", "[column]") {
+    const auto h = ColumnFit::share(asks({900, 900}, {900, 900}, {900, 900}, {900, 900}, {900, 900}), 800);
+    CHECK(h[4] == 400);
+    CHECK(h[0] == 200);  // the lesson: up to half of what is left
+    CHECK(h[1] == Approx(200.0f / 3));
+    CHECK(h[2] == Approx(200.0f / 3));
+    CHECK(h[3] == Approx(200.0f / 3));
+    CHECK(sum(h) == Approx(800));
+}
+
+TEST_CASE("the fitted column keeps the state and narration boxes' largest size for the lesson", "[column]") {
+    ColumnFit fit;
+    fit.arrange(700, "a.toml");
+    fit.asked(Box::lesson, {50, 50}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::state, {200, 200}), fit.asked(Box::narration, {80, 80});
+    fit.arrange(700, "a.toml");
+    CHECK(fit.slot(Box::lesson).h == 50);
+    CHECK(fit.slot(Box::pseudocode).y == 50);
+    fit.asked(Box::lesson, {30, 30}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::state, {120, 120}), fit.asked(Box::narration, {60, 60});  // smaller this step
+    fit.arrange(700, "a.toml");
+    CHECK(fit.slot(Box::lesson).h == 30);          // the lesson box follows its text
+    CHECK(fit.slot(Box::narration).h == 80);       // the narration keeps its height: no jumping
+    CHECK(fit.slot(Box::question).h == 0);         // no question drawn, no room kept
+    fit.asked(Box::lesson, {30, 30}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::narration, {60, 60});           // no state box drawn this frame
+    fit.arrange(700, "a.toml");
+    CHECK(fit.slot(Box::state).h == 0);
+    fit.arrange(700, "b.toml");                    // another lesson: the default shares again
+    CHECK(fit.slot(Box::lesson).h == Approx(700 * 150.0f / 704));
+}
+
+TEST_CASE("text wraps at spaces only: a number is never broken", "[column][wrap]") {
+    const auto lines = wrap_at_spaces("the segment meets x ≤ w at t = 0.481125: i = (-1.73205, 0.416667, 4.14286, 5)", 24, chars);
+    for (const std::string& line : lines) {
+        INFO(line);
+        CHECK(chars(line) <= 24);
+        CHECK(line.front() != ' ');
+    }
+    std::string joined;
+    for (const std::string& line : lines) joined += (joined.empty() ? "" : " ") + line;
+    CHECK(joined == "the segment meets x ≤ w at t = 0.481125: i = (-1.73205, 0.416667, 4.14286, 5)");
+    for (const char* number : {"0.481125:", "(-1.73205,", "0.416667,", "4.14286,"}) {
+        bool whole = false;
+        for (const std::string& line : lines) whole = whole || line.find(number) != std::string::npos;
+        CHECK(whole);
+    }
+}
+
+TEST_CASE("a word wider than a line is broken only as a last resort, and counted", "[column][wrap]") {
+    int forced = 0;
+    const auto lines = wrap_at_spaces("a 0123456789012345 b", 8, chars, &forced);
+    CHECK(forced == 1);
+    CHECK(lines == std::vector<std::string>{"a", "01234567", "89012345", "b"});
+    forced = 0;
+    CHECK(wrap_at_spaces("line one\nline two", 100, chars, &forced) == std::vector<std::string>{"line one", "line two"});
+    CHECK(forced == 0);
+    CHECK(wrap_at_spaces("", 10, chars) == std::vector<std::string>{""});
+}
+
+TEST_CASE("lesson text is reflowed: a single line break is a space, an empty line a paragraph", "[column][wrap]") {
+    CHECK(reflow("\nEach endpoint gets a\n6-bit outcode.\n\nIn clip space\nthe planes.\n") ==
+          "Each endpoint gets a 6-bit outcode.\nIn clip space the planes.");
+}
