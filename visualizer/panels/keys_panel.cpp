@@ -15,6 +15,7 @@ void keys_panel(const PanelLayout& l) {
         {"R", "error against run time for this algorithm's family"},       {"V", "the other view: 3D, the camera's, the walk-through"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
+        {"Ctrl+=  Ctrl+−  Ctrl+0", "larger / smaller type and panels, back to the start"},
         {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
         {"Shift+drag, right-click", "2D scenes: a new segment; z-buffer pixels: a new triangle; delete what is clicked"},
     };
