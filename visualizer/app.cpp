@@ -26,6 +26,7 @@
 #include "panels/chapter_panels.h"
 #include "panels/keys_panel.h"
 #include "panels/layout_audit.h"
+#include "panels/lesson_menu.h"
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "render/gl.h"
@@ -65,6 +66,11 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_b: a.back_to_lesson = true; break;
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
+        case SDLK_m: a.toggle_menu = true; break;
+        case SDLK_UP: a.up_down = -1; break;
+        case SDLK_DOWN: a.up_down = +1; break;
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER: a.enter = true; break;
         case SDLK_EQUALS:
         case SDLK_PLUS:
         case SDLK_KP_PLUS:
@@ -110,7 +116,7 @@ struct Renderer {
 // The 3D view as the last frame drew it, with the overlays and the second view as they are now.
 ViewGeometry geometry_now(const Lessonplay& lp, const Renderer& r) {
     ViewGeometry g = r.geometry;
-    g.overlay_open = lp.show_presets || lp.show_keys || lp.show_report;
+    g.overlay_open = lp.show_presets || lp.show_keys || lp.show_report || lp.show_menu;
     g.second_view = lp.second_view;
     return g;
 }
@@ -137,8 +143,9 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));  // GL's y axis points up
     const glm::mat4 vp = scene.view_projection.value_or(lp.camera.view_projection(view_w / view_h));
     r.geometry.view_projection = vp, r.geometry.width = view_w, r.geometry.height = view_h;
-    r.batches.faint.draw(vp, 1.5f * scale, 7.0f * scale);
-    r.batches.bold.draw(vp, 3.5f * scale, 11.0f * scale);
+    const float thick = scale * lp.scale;  // lines and points grow with the type (projector, Ctrl+=)
+    r.batches.faint.draw(vp, 1.5f * thick, 7.0f * thick);
+    r.batches.bold.draw(vp, 3.5f * thick, 11.0f * thick);
     glViewport(0, 0, px(layout.width), px(layout.height));
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
 
@@ -148,14 +155,20 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     if (s.lesson().chapters.empty()) lesson_panel(s, scene.detail, layout);
     else chapter_lesson_panel(s, lp.classroom, scene.detail, layout);
     pseudocode_panel(s, layout);
-    question_panel(s, lp.classroom, layout, actions);
+    question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
     if (lp.show_report) report_panel(lp.report, layout);
     if (lp.show_keys) keys_panel(layout);
     if (lp.show_presets)
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
+    if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, layout, actions);
     narration_panel(s, layout);
     const Question* open = lp.classroom.open_question(s);
-    timeline_panel(s, lp.playback, open ? open->choices.size() : 0, layout, actions);
+    std::vector<TimelineMark> marks;
+    if (const LessonScript* script = lp.classroom.script())
+        for (std::size_t k = 0; k < script->places().size() && k < s.lesson().chapters.size(); ++k)
+            if (const auto at = script->places()[k].starts)
+                marks.push_back({*at, s.lesson().chapters[k].question.has_value(), s.lesson().chapters[k].title});
+    timeline_panel(s, lp.playback, open ? open->choices.size() : 0, marks, layout, actions);
 }
 
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
@@ -312,8 +325,9 @@ int run_app(const AppOptions& o) {
             // the screenshot waits (a few frames at most) until the panel column has settled
             if (o.screenshot && frame >= std::uint64_t(o.frames) && (!lp.column.moved() || frame >= std::uint64_t(o.frames) + 8)) {
                 if (const Session* s = lp.session())
-                    std::printf("hsrviz: at step %zu of %zu%s, %s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
-                                lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "");
+                    std::printf("hsrviz: at step %zu of %zu%s, %s%s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
+                                lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "",
+                                lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());

@@ -65,15 +65,26 @@ void Lessonplay::switch_lesson(int step, const AppOptions& o) {
     auto at = std::find_if(lessons.begin(), lessons.end(), [&](const std::string& l) { return std::filesystem::path(l).filename() == now; });
     std::ptrdiff_t k = at == lessons.end() ? (step > 0 ? -1 : std::ptrdiff_t(lessons.size())) : at - lessons.begin();
     k = std::clamp<std::ptrdiff_t>(k + step, 0, std::ptrdiff_t(lessons.size()) - 1);
-    home = path = lessons[std::size_t(k)], algorithm.reset();
+    open_lesson(lessons[std::size_t(k)], o);
+}
+
+void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
+    home = path = lesson, algorithm.reset();
     family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
     classroom = Classroom{};
     report.clear();
-    show_presets = show_report = false;
+    show_presets = show_report = show_menu = false;
     playback.playing = false;
     second_view = false;
     load(o);
     std::printf("hsrviz: lesson %s\n", path.c_str());
+}
+
+const CourseLesson* Lessonplay::next_in_course() const {
+    const std::string now = std::filesystem::path(home).filename().string();
+    for (std::size_t k = 0; k + 1 < course.size(); ++k)
+        if (course[k].file == now) return &course[k + 1];
+    return nullptr;
 }
 
 void Lessonplay::save_edited(const algo::Scene& scene) const {
@@ -84,6 +95,21 @@ void Lessonplay::save_edited(const algo::Scene& scene) const {
 
 void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     if (a.reload || watch.changed(dt)) load(o);
+    if (course.empty()) course = load_course();
+    if (a.toggle_menu) {
+        show_menu = !show_menu;
+        const std::string now = std::filesystem::path(home).filename().string();
+        for (std::size_t k = 0; k < course.size(); ++k)
+            if (course[k].file == now) menu_cursor = k;  // the menu opens on the lesson playing
+    }
+    if (a.open_lesson) return open_lesson(*a.open_lesson, o);
+    if (show_menu) {  // the menu takes ↑ ↓ and Enter, and the stepping keys do not move the lesson behind it
+        if (a.up_down && !course.empty())
+            menu_cursor = std::size_t(std::clamp<long>(long(menu_cursor) + a.up_down, 0, long(course.size()) - 1));
+        if (a.enter && menu_cursor < course.size()) return open_lesson(course[menu_cursor].path, o);
+        if (a.close_overlays) show_menu = false;
+        return;
+    }
     if (a.toggle_presets) show_presets = !show_presets;
     if (a.toggle_report) {
         show_report = !show_report;
@@ -123,7 +149,7 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
     if (a.scale_step) scale = std::clamp(scale * (a.scale_step > 0 ? 1.1f : 1 / 1.1f), 0.5f, 4.0f);
     if (a.scale_reset) scale = first_scale;
     if (a.export_all) export_pending = true;
-    if (a.close_overlays) show_keys = show_presets = show_report = false;
+    if (a.close_overlays) show_keys = show_presets = show_report = show_menu = false;
     if (a.toggle_3d) second_view = !second_view;
     // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
     // machine reruns, and the classroom follows the new events

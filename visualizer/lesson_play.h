@@ -13,6 +13,7 @@
 #include "render/orbit_camera.h"
 #include "screens/screens.h"
 #include "state/classroom.h"
+#include "state/course.h"
 #include "state/file_watch.h"
 #include "state/presets.h"
 
@@ -35,6 +36,9 @@ struct Lessonplay {
     std::string path;                     // what plays: the lesson, or a preset scene chosen with P
     std::optional<std::string> algorithm;
     bool show_presets = false;            // P
+    bool show_menu = false;               // M: the lesson menu
+    std::size_t menu_cursor = 0;          // the lesson the arrow keys are on
+    std::vector<CourseLesson> course;     // the shipped lessons, for the menu and the end card
     float side = 500;                     // the panel column's width ([ and ] change it; remembered)
     ColumnFit column;                     // the column's boxes sized to their content
     float scale = 1, first_scale = 1;     // of type and panels (Ctrl+= / Ctrl+−), and as the window started
@@ -56,6 +60,10 @@ struct Lessonplay {
     void choose_preset(const UiActions& a, const AppOptions& o);
     // N / Shift+N: the next or previous shipped lesson, from its start (a teacher switching lessons in class).
     void switch_lesson(int step, const AppOptions& o);
+    // A lesson chosen in the menu, from its start.
+    void open_lesson(const std::string& lesson, const AppOptions& o);
+    // The lesson after the one playing in the course, if there is one.
+    const CourseLesson* next_in_course() const;
     // S: the scene as edited, to hsrviz-export/NAME-edited.toml
     void save_edited(const algo::Scene& scene) const;
     // One frame's actions and dt seconds of playing.

@@ -122,7 +122,7 @@ case "$case" in
     if "$hsrviz" render "$scene" --algorithm painter --out x.png 2>/dev/null; then exit 1; fi ;;
   zbuffer)  # a z-buffer lesson in 3D (key V): the scene, the frustum and the image; traces of every new family
     "$hsrviz" "$src/lessons/08_depth_precision.toml" --screenshot z3d.png --frames 6 --keys V,End > out.txt
-    grep -q "at step 1640 of 1640, paused$" out.txt
+    grep -q "at step 1640 of 1640, paused, end of the lesson$" out.txt
     "$png_check" z3d.png 1280 800
     for lesson in 08_depth_precision 09_ray_casting_grid 10_scan_line 12_z_merge; do
       "$hsrviz" trace "$src/lessons/$lesson.toml" --out "$lesson.jsonl" > /dev/null
@@ -179,17 +179,28 @@ case "$case" in
       "$src/assets/scenes/cs_segments.toml" > typo.toml
     if "$hsrviz" check typo.toml > check.txt; then exit 1; fi
     grep -q 'typo.toml:4: chapters\[0\].when: the machine never tells "Nope"' check.txt ;;
-  lesson-switch)  # N and Shift+N go through the course in order (the first lesson stays the first); --lesson-list
+  lesson-switch)  # N and Shift+N go through the course in order (the first lesson stays the first); the menu (M); the end card; --lesson-list
     "$hsrviz" "$src/lessons/00_tour.toml" --screenshot n.png --frames 4 --keys N,N > n.txt
     grep -q "lesson .*/lessons/02_liang_barsky.toml" n.txt
     grep -q "^hsrviz: at step 0 of 42, paused$" n.txt
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot n.png --frames 5 --keys Shift+N,Shift+N,N > back.txt
     grep -q "lesson .*/lessons/01_cohen_sutherland.toml" back.txt
     "$png_check" n.png 1280 800
+    # M opens the lesson menu on the lesson playing; ↓ ↓ and Enter open the second lesson after it, from its start
+    "$hsrviz" "$src/lessons/05_bsp_traversal.toml" --screenshot m.png --frames 5 --keys M,Down,Down > m.txt
+    grep -q "^hsrviz: at step 0 of 43, paused, question open, lesson menu open$" m.txt
+    "$hsrviz" "$src/lessons/05_bsp_traversal.toml" --screenshot m.png --frames 6 --keys M,Down,Down,Return > m.txt
+    grep -q "lesson .*/lessons/07_zbuffer_fill.toml" m.txt
+    "$hsrviz" "$src/lessons/00_tour.toml" --screenshot m.png --frames 5 --keys M,Up,Return > m.txt   # no lesson before the first
+    grep -q "lesson .*/lessons/00_tour.toml" m.txt
+    # the end card: at the last step of a lesson, and its Next lesson is N
+    "$hsrviz" "$src/lessons/02_liang_barsky.toml" --screenshot e.png --frames 4 --keys End > e.txt
+    grep -q "^hsrviz: at step 42 of 42, paused, end of the lesson$" e.txt
+    "$png_check" e.png 1280 800
     "$hsrviz" --lesson-list > list.txt
     test "$(wc -l < list.txt)" -eq "$(ls "$src"/lessons/*.toml | wc -l)"
     head -n 1 list.txt | grep -q "^00_tour.toml"
-    grep -q "^15_depth_sort_tests.toml  *3  *depth_sort  *Depth sort: one pair" list.txt ;;
+    grep -q "^15_depth_sort_tests.toml  *3  *depth_sort  *Depth sort  *Depth sort: one pair" list.txt ;;
   write-errors)  # a file that cannot be written, or a folder that cannot be made, is an error with a reason, exit 1
     lesson="$src/lessons/02_liang_barsky.toml"
     if "$hsrviz" trace "$lesson" --out /dev/full 2> e1.txt; then exit 1; fi

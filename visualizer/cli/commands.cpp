@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "state/course.h"
 #include "state/lesson.h"
 #include "state/lesson_check.h"
 #include "state/trace.h"
@@ -37,15 +38,13 @@ int run_trace(const TraceOptions& o) {
 
 int print_lesson_list() {
     int status = 0;
-    for (const std::string& path : shipped_lessons()) {
-        const std::string file = std::filesystem::path(path).filename().string();
-        try {
-            const Lesson l = load_lesson(path);
-            std::printf("%-32s %d  %-26s %s\n", file.c_str(), l.difficulty, std::string(l.algorithm.id).c_str(), l.title.c_str());
-        } catch (const std::exception& e) {  // listed with its problem: the menu must not hide a broken lesson
-            std::printf("%-32s -  %-26s (cannot be loaded: %s)\n", file.c_str(), "?", e.what());
+    for (const CourseLesson& l : load_course()) {
+        if (!l.problem.empty()) {  // listed with its problem: the menu must not hide a broken lesson
+            std::printf("%-32s -  %-26s (cannot be loaded: %s)\n", l.file.c_str(), "?", l.problem.c_str());
             status = 1;
+            continue;
         }
+        std::printf("%-32s %d  %-26s %-20s %s\n", l.file.c_str(), l.difficulty, l.algorithm.c_str(), l.topic.c_str(), l.title.c_str());
     }
     return status;
 }

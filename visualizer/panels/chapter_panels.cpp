@@ -13,6 +13,24 @@ namespace {
 const ImVec4 chapter_colour(0.94f, 0.89f, 0.26f, 1);
 const ImVec4 question_title(0.94f, 0.89f, 0.26f, 1);
 
+// The lesson's end: the score, what it showed (its chapters), and the next lesson to open.
+void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* next, UiActions& out) {
+    if (room.questions() > 0)
+        wrapped_text("Score: " + std::to_string(room.right()) + " right of " + std::to_string(room.answered()) + " answered (" +
+                     std::to_string(room.questions()) + " questions in the lesson).");
+    else
+        wrapped_text("The lesson has no questions; P offers its extreme cases to try.");
+    if (!lesson.chapters.empty()) {
+        std::string showed = "It showed:";
+        for (std::size_t k = 0; k < lesson.chapters.size(); ++k) showed += (k ? " · " : " ") + lesson.chapters[k].title;
+        wrapped_text(showed, dim_text);
+    }
+    if (next) wrapped_text("Next: " + next->title, dim_text);
+    if (next && ImGui::Button("Next lesson (N)")) out.next_lesson = 1;
+    if (next) ImGui::SameLine();
+    if (ImGui::Button("All lessons (M)")) out.toggle_menu = true;
+}
+
 }  // namespace
 
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& l) {
@@ -37,16 +55,17 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     end_column_box(l, Box::lesson);
 }
 
-void question_panel(const Session& s, const Classroom& room, const PanelLayout& l, UiActions& out) {
+void question_panel(const Session& s, const Classroom& room, const CourseLesson* next, const PanelLayout& l, UiActions& out) {
     const Lesson& lesson = s.lesson();
     const Question* q = room.open_question(s);
     const auto verdict = room.verdict(s);
-    if (!q && !verdict) return;
+    const bool finished = !q && s.complete() && s.cursor() >= s.known();
+    if (!q && !verdict && !finished) return;
     // a title bar in the chapter colour: the box the class is asked to look at
     ImGui::PushStyleColor(ImGuiCol_TitleBg, question_title);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, question_title);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.08f, 0.08f, 0.1f, 1));
-    begin_column_box(l, Box::question, q ? "Question" : "Answer");
+    begin_column_box(l, Box::question, q ? "Question" : finished ? "End of the lesson" : "Answer");
     ImGui::PopStyleColor(3);
     if (q) {
         wrapped_text(in_language(q->ask, room.language(), lesson.languages));
@@ -65,13 +84,14 @@ void question_panel(const Session& s, const Classroom& room, const PanelLayout& 
             }
             if (ImGui::Button((label + "##choice" + number).c_str())) out.answer = choice;
         }
-    } else {
+    } else if (verdict) {
         if (verdict->revealed)
             wrapped_text("Shown before it was answered: no score.", dim_text);
         else
             wrapped_text(verdict->right ? "Right." : "Not quite.", verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
         wrapped_text("The machine: " + verdict->answer + " (" + verdict->because + ")");
     }
+    if (finished) end_card(lesson, room, next, out);
     end_column_box(l, Box::question);
 }
 

@@ -6,12 +6,15 @@
 
 #include "panels/lesson_panels.h"
 #include "state/classroom.h"
+#include "state/course.h"
 
 namespace hsr::viz {
 
 // Replaces the lesson panel when the lesson has chapters.
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& layout);
-// The column's last box: the open question (out.answer on a click) or the last verdict.
-void question_panel(const Session& s, const Classroom& room, const PanelLayout& layout, UiActions& out);
+// The column's last box: the open question (out.answer on a click) or the last verdict; at the lesson's end, the
+// end card (the score, what the lesson showed, the next lesson of the course, `next`, to open).
+void question_panel(const Session& s, const Classroom& room, const CourseLesson* next, const PanelLayout& layout,
+                    UiActions& out);
 
 }  // namespace hsr::viz

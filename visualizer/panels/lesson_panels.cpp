@@ -106,7 +106,8 @@ void narration_panel(const Session& s, const PanelLayout& l) {
 }
 
 // ── [SECTION] timeline ──────────────────────────────────────────────────────────────────────────────────────
-void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const PanelLayout& l, UiActions& out) {
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices,
+                    const std::vector<TimelineMark>& marks, const PanelLayout& l, UiActions& out) {
     place(0, l.height - l.bottom, l.width, l.bottom);
     ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
     out.to_start |= ImGui::Button("|< Home");
@@ -122,6 +123,8 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
     out.step |= ImGui::Button("Step >>");
     ImGui::SameLine();
     out.to_end |= ImGui::Button("End >|");
+    ImGui::SameLine();
+    out.toggle_menu |= ImGui::Button("Lessons (M)");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
     float speed = playback.speed;
@@ -140,9 +143,26 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
     ImGui::TextColored(question_choices ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text, "%s", line.c_str());
 
     int cursor = int(s.cursor());
+    const int last = int(std::max<std::size_t>(s.known(), 1));
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderInt("##scrub", &cursor, 0, int(std::max<std::size_t>(s.known(), 1)), "step %d"))
-        out.seek = std::size_t(cursor);
+    if (ImGui::SliderInt("##scrub", &cursor, 0, last, "step %d")) out.seek = std::size_t(cursor);
+    // the chapters' starts under the scrub bar, where ImGui's slider puts those steps' grab (a click seeks there)
+    const ImVec2 bar_min = ImGui::GetItemRectMin(), bar_max = ImGui::GetItemRectMax();
+    const float pad = 2, width = bar_max.x - bar_min.x - 2 * pad;
+    const float grab = std::max(width / float(last + 1), ImGui::GetStyle().GrabMinSize);
+    const float tick = 0.35f * ImGui::GetFontSize();
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+        const TimelineMark& m = marks[k];
+        const float x = bar_min.x + pad + grab / 2 + (width - grab) * float(std::min<std::size_t>(m.step, std::size_t(last))) / float(last);
+        ImGui::SetCursorScreenPos(ImVec2(x - tick, bar_max.y + 1));
+        ImGui::PushID(int(k));
+        if (ImGui::InvisibleButton("mark", ImVec2(2 * tick, 2 * tick))) out.seek = m.step;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s (step %zu)", m.question ? "question: " : "", m.title.c_str(), m.step);
+        ImGui::PopID();
+        const ImU32 colour = ImGui::GetColorU32(m.question ? ImVec4(0.94f, 0.89f, 0.26f, 1) : ImVec4(0.85f, 0.85f, 0.9f, 1));
+        ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x, bar_max.y + 1), ImVec2(x - tick, bar_max.y + 1 + 2 * tick),
+                                                      ImVec2(x + tick, bar_max.y + 1 + 2 * tick), colour);
+    }
     ImGui::End();
 }
 

@@ -35,9 +35,15 @@ struct PanelLayout {
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& layout);
 void pseudocode_panel(const Session& s, const PanelLayout& layout);
 void narration_panel(const Session& s, const PanelLayout& layout);
+// A chapter's start on the timeline (yellow when it asks a question); a click seeks there.
+struct TimelineMark {
+    std::size_t step;
+    bool question;
+    std::string title;
+};
 // `question_choices`: while a question waits for an answer, its number of choices (the player holds), else 0.
-void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const PanelLayout& layout,
-                    UiActions& out);
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices,
+                    const std::vector<TimelineMark>& marks, const PanelLayout& layout, UiActions& out);
 void error_panel(const std::string& message, const PanelLayout& layout, UiActions& out);
 
 // Labels of the 3D view, projected with the viewer's camera into the viewport (x, y, w, h in pixels, top-left).

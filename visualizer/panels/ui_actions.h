@@ -57,6 +57,10 @@ struct UiActions {
     std::optional<int> preset;                                     // an extreme case chosen (its index)
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
     int next_lesson = 0;                                           // N: +1, Shift+N: −1 (the course's order)
+    bool toggle_menu = false;                                      // M: the lesson menu
+    std::optional<std::string> open_lesson;                        // a lesson chosen in the menu (its path)
+    int up_down = 0;                                               // ↑ −1, ↓ +1 (the menu's highlight)
+    bool enter = false;                                            // Enter (opens the highlighted lesson)
 };
 
 struct PlaybackState {

@@ -56,6 +56,7 @@ const Pseudocode<CullEvent>& BackfaceSession::table() const {
 }
 
 const FamilyFacts BackfaceSession::facts = {
+    .topic = "Back-face culling",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.cull.empty(); },
     .random_scene = &random_triangle_scene,
     .measure = &analysis::measure_culling,

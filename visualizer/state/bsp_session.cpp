@@ -179,6 +179,7 @@ bool BspSession::is_major(const BspEvent& e) const {
 }
 
 const FamilyFacts BspSession::facts = {
+    .topic = "BSP trees",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.bsp.empty() || expects_from_renderer(s, "bsp"); },
     .random_scene = [](std::uint32_t seed, bool two_d) -> std::optional<algo::Scene> { return two_d ? random_segment_scene_2d(seed) : random_triangle_scene(seed, false); },
     .measure = &analysis::measure_hidden_surfaces,

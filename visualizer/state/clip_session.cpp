@@ -22,6 +22,7 @@ std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return
 const Pseudocode<algo::ClipEvent>& ClipSession::table() const { return pseudocode_table(algorithm_); }
 
 const FamilyFacts ClipSession::facts = {
+    .topic = "Clipping",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo& a) {  // Sutherland–Hodgman clips the polygons, the others the segments
         return !s.expect.clip.empty() && !(a.id == "sutherland_hodgman" ? s.polygons.empty() : s.segments.empty());
     },

@@ -252,6 +252,7 @@ std::string CullingSession<Event, Result>::describe_event(const Event& e) const 
 }
 template <class Event, class Result>
 const FamilyFacts CullingSession<Event, Result>::facts = {
+    .topic = "Culling",
     .speaks_to = [](const Scene&, const AlgorithmInfo&) { return false; },
     .random_scene = [](std::uint32_t seed, bool) -> std::optional<Scene> { return city_scene({.triangles = 3000, .seed = seed}); },
     .measure = &analysis::measure_culling,

@@ -93,6 +93,7 @@ std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { re
 const Pseudocode<DepthSortEvent>& DepthSortSession::table() const { return sort_lines; }
 
 const FamilyFacts DepthSortSession::facts = {
+    .topic = "Depth sort",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "depth-sort"); },
     .random_scene = &random_triangle_scene,
     .measure = &analysis::measure_hidden_surfaces,

@@ -14,6 +14,8 @@
 namespace hsr::viz {
 
 struct FamilyFacts {
+    // The lecture's topic the family teaches, as the lesson menu groups lessons ("Clipping", "BSP trees", …).
+    std::string_view topic;
     // Whether an extreme case's [expect] tables speak to the algorithm (the family's answers are checked there).
     bool (*speaks_to)(const algo::Scene& scene, const algo::AlgorithmInfo& algorithm);
     // A random scene for the family from a seed; nullopt for a family with none. two_d: a 2D BSP lesson.

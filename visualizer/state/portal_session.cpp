@@ -178,6 +178,7 @@ const Pseudocode<PvsEvent>& PvsSession::table() const { return pvs_lines; }
 const Pseudocode<PortalEvent>& PortalRenderSession::table() const { return render_lines; }
 
 const FamilyFacts PvsSession::facts = {
+    .topic = "Cells and portals",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return !s.expect.pvs.empty(); },
     .random_scene = [](std::uint32_t seed, bool) -> std::optional<algo::Scene> { return algo::cell_maze({.rows = 4, .cols = 4, .seed = seed}); },
     .measure = &analysis::measure_portals,

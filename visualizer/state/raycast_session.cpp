@@ -43,6 +43,7 @@ std::string RayCastSession::describe_event(const RayCastEvent& e) const { return
 const Pseudocode<RayCastEvent>& RayCastSession::table() const { return cast_lines; }
 
 const FamilyFacts RayCastSession::facts = {
+    .topic = "Ray casting",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) {  // the reference every image is measured against
         return !s.expect.image.empty() || expects_from_renderer(s, "raycast");
     },

@@ -37,6 +37,7 @@ std::string ScanLineSession::describe_event(const ScanLineEvent& e) const { retu
 const Pseudocode<ScanLineEvent>& ScanLineSession::table() const { return scan_lines; }
 
 const FamilyFacts ScanLineSession::facts = {
+    .topic = "Scan line",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "scanline"); },
     .random_scene = &random_triangle_scene,
     .measure = &analysis::measure_zbuffer,

@@ -158,6 +158,7 @@ std::string ZBufferSession::describe_event(const ZBufferEvent& e) const { return
 const Pseudocode<ZBufferEvent>& ZBufferSession::table() const { return fill_lines; }
 
 const FamilyFacts ZBufferSession::facts = {
+    .topic = "Z-buffer",
     .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "zbuffer"); },
     .random_scene = &random_triangle_scene,
     .measure = &analysis::measure_zbuffer,

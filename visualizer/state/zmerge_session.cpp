@@ -67,6 +67,7 @@ std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return s
 const Pseudocode<ZMergeEvent>& ZMergeSession::table() const { return merge_lines; }
 
 const FamilyFacts ZMergeSession::facts = {
+    .topic = "Z-buffer",
     .speaks_to = [](const algo::Scene&, const algo::AlgorithmInfo&) { return false; },
     .random_scene = &no_random_scene,
     .measure = &analysis::measure_zbuffer,
