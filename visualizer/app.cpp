@@ -27,6 +27,7 @@
 #include "panels/keys_panel.h"
 #include "panels/layout_audit.h"
 #include "panels/lesson_menu.h"
+#include "panels/toast_panel.h"
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "render/gl.h"
@@ -131,6 +132,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     if (!lp.session()) {
         error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), layout, actions);
         if (lp.show_presets) preset_panel(lp.presets, false, lp.next_seed, lp.path != lp.home, layout, actions);
+        toast_panel(lp.toasts, seconds_now(), layout);
         return;
     }
     const Session& s = *lp.session();
@@ -161,6 +163,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     if (lp.show_presets)
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
     if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, layout, actions);
+    toast_panel(lp.toasts, seconds_now(), layout);
     narration_panel(s, layout);
     const Question* open = lp.classroom.open_question(s);
     std::vector<TimelineMark> marks;
@@ -256,7 +259,9 @@ int run_app(const AppOptions& o) {
             }
             // Asleep while nothing moves: a paused window waits for input (waking twice a second for edited files)
             // instead of drawing the same frame again; it draws on for a moment after any input, for tweens to end
-            if (interactive(o) && !lp.playback.playing && SDL_GetTicks64() > awake_until) SDL_WaitEventTimeout(nullptr, 500);
+            // (and while a note shows, so that it fades and goes)
+            const bool note_showing = lp.toasts.until() > seconds_now();
+            if (interactive(o) && !lp.playback.playing && !note_showing && SDL_GetTicks64() > awake_until) SDL_WaitEventTimeout(nullptr, 500);
             SDL_Event e;
             while (SDL_PollEvent(&e)) {
                 awake_until = SDL_GetTicks64() + 1000;
@@ -312,7 +317,7 @@ int run_app(const AppOptions& o) {
             }
             if (lp.export_pending && lp.session()) {
                 lp.export_pending = false;
-                export_lesson(*lp.session(), lp.path, lp.algorithm, width, height);
+                lp.tell(export_lesson(*lp.session(), lp.path, lp.algorithm, width, height));
             }
             if (o.gif) {
                 if (!gif && !gif_failed) {
@@ -332,6 +337,7 @@ int run_app(const AppOptions& o) {
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
                 for (const std::string& problem : layout_problems()) std::printf("hsrviz: layout: %s\n", problem.c_str());
+                for (const Toasts::Showing& n : lp.toasts.showing(seconds_now())) std::printf("hsrviz: note showing: %s\n", n.text.c_str());
                 if (!write_png(*o.screenshot, width, height)) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
                     exit_code = 1;

@@ -42,14 +42,14 @@ bool write_png(const std::string& path, int w, int h) {
     return write_png(path, w, h, 4, pixels.data(), true);
 }
 
-void export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
+std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
     const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
-    if (!make_folder(dir)) return;
+    if (!make_folder(dir)) return "could not make the folder " + dir;
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
     const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
                     static_cast<bool>(std::ofstream(scene) << algo::scene_toml(s.lesson().scene));
-    std::printf("hsrviz: %s %s, %s and %s\n", ok ? "exported" : "could not export all of", png.c_str(), trace.c_str(), scene.c_str());
+    return std::string(ok ? "exported " : "could not export all of ") + png + ", " + trace + " and " + scene;
 }
 
 }  // namespace hsr::viz

@@ -15,6 +15,7 @@ bool write_png(const std::string& path, int width, int height);
 // The drawable's pixels at half size (each 2×2 block averaged), RGBA, the top row first.
 std::vector<unsigned char> half_size_pixels(int width, int height);
 // E: the window as a PNG, the lesson's trace, and its scene as TOML, into hsrviz-export/; says what it wrote.
-void export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height);
+// Returns what it did, as a sentence for the window's note ("exported …" or "could not export all of …").
+std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height);
 
 }  // namespace hsr::viz

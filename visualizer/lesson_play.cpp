@@ -55,7 +55,7 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
     show_presets = false;
     family.reset();  // a new scene starts at its first step
     load(o);
-    std::printf("hsrviz: playing %s with %s\n", path.c_str(), algorithm.value_or("the lesson's algorithm").c_str());
+    tell("playing " + path + " with " + algorithm.value_or("the lesson's algorithm"));
 }
 
 void Lessonplay::switch_lesson(int step, const AppOptions& o) {
@@ -77,7 +77,7 @@ void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     playback.playing = false;
     second_view = false;
     load(o);
-    std::printf("hsrviz: lesson %s\n", path.c_str());
+    std::printf("hsrviz: lesson %s\n", path.c_str());  // the lesson box and the title say it in the window
 }
 
 const CourseLesson* Lessonplay::next_in_course() const {
@@ -87,14 +87,22 @@ const CourseLesson* Lessonplay::next_in_course() const {
     return nullptr;
 }
 
-void Lessonplay::save_edited(const algo::Scene& scene) const {
+void Lessonplay::tell(const std::string& text) {
+    std::printf("hsrviz: %s\n", text.c_str());
+    toasts.say(text, seconds_now());
+}
+
+void Lessonplay::save_edited(const algo::Scene& scene) {
     const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
     const bool ok = make_folder("hsrviz-export") && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
-    std::printf("hsrviz: %s %s\n", ok ? "saved the edited scene to" : "could not write", file.c_str());
+    tell((ok ? "saved the edited scene to " : "could not write ") + file);
 }
 
 void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
-    if (a.reload || watch.changed(dt)) load(o);
+    if (a.reload || watch.changed(dt)) {
+        load(o);
+        tell(error.empty() ? "reloaded " + path : "could not reload " + path + " (its error is shown)");
+    }
     if (course.empty()) course = load_course();
     if (a.toggle_menu) {
         show_menu = !show_menu;
@@ -115,8 +123,8 @@ void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
         show_report = !show_report;
         if (show_report && session() && report.empty()) {
             report = family_report(session()->lesson().algorithm, data_dir() + "/assets/scenes");
-            std::printf("hsrviz: measured %zu rows of error against run time for %s\n", report.size(),
-                        std::string(session()->lesson().algorithm.id).c_str());
+            tell("measured " + std::to_string(report.size()) + " rows of error against run time for " +
+                 std::string(session()->lesson().algorithm.id));
         }
     }
     if (show_presets) {  // the presets take the number keys while they show: 1 … 9 a case, 0 a random scene

@@ -14,6 +14,7 @@
 #include "screens/screens.h"
 #include "state/classroom.h"
 #include "state/course.h"
+#include "state/toasts.h"
 #include "state/file_watch.h"
 #include "state/presets.h"
 
@@ -39,6 +40,7 @@ struct Lessonplay {
     bool show_menu = false;               // M: the lesson menu
     std::size_t menu_cursor = 0;          // the lesson the arrow keys are on
     std::vector<CourseLesson> course;     // the shipped lessons, for the menu and the end card
+    Toasts toasts;                        // notes of what happened (exported, saved, reloaded, …)
     float side = 500;                     // the panel column's width ([ and ] change it; remembered)
     ColumnFit column;                     // the column's boxes sized to their content
     float scale = 1, first_scale = 1;     // of type and panels (Ctrl+= / Ctrl+−), and as the window started
@@ -65,7 +67,9 @@ struct Lessonplay {
     // The lesson after the one playing in the course, if there is one.
     const CourseLesson* next_in_course() const;
     // S: the scene as edited, to hsrviz-export/NAME-edited.toml
-    void save_edited(const algo::Scene& scene) const;
+    void save_edited(const algo::Scene& scene);
+    // Says what happened: on the terminal ("hsrviz: …") and for a few seconds in the window.
+    void tell(const std::string& text);
     // One frame's actions and dt seconds of playing.
     void update(const UiActions& a, double dt, const AppOptions& o);
 };

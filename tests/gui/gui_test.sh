@@ -231,6 +231,8 @@ case "$case" in
     grep -q '^id = 6$' "$saved"                                  # the new one has the next free id
     if grep -q '^id = 5$' "$saved"; then exit 1; fi              # segment 5 (through (-2, -1.75)) is gone
     grep -q 'b = \[ 4.0[0-9]*, -1.99[0-9]*, 0.0 \]' "$saved"    # segment 1's end dragged from (4, 1) to (4, -2)
+    grep -q "note showing: saved the edited scene to $saved" after.txt   # the window says so too (no terminal needed)
+    grep -q "note showing" before.txt && exit 1
     # the machine reran on the edited scene: a different number of steps, the cursor still at step 1
     grep -q "at step 1 of" after.txt
     test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"

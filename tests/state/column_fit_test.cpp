@@ -5,6 +5,7 @@
 #include "catch.h"
 #include "state/column_fit.h"
 #include "state/text_wrap.h"
+#include "state/toasts.h"
 
 using namespace hsr::viz;
 
@@ -108,4 +109,23 @@ TEST_CASE("a word wider than a line is broken only as a last resort, and counted
 TEST_CASE("lesson text is reflowed: a single line break is a space, an empty line a paragraph", "[column][wrap]") {
     CHECK(reflow("\nEach endpoint gets a\n6-bit outcode.\n\nIn clip space\nthe planes.\n") ==
           "Each endpoint gets a 6-bit outcode.\nIn clip space the planes.");
+}
+
+TEST_CASE("the window's notes show for a few seconds, the newest three, a repeat only once", "[toasts]") {
+    Toasts t;
+    CHECK(t.showing(0).empty());
+    CHECK(t.until() == 0);
+    t.say("exported a.png", 10);
+    t.say("saved b.toml", 11);
+    REQUIRE(t.showing(11).size() == 2);
+    CHECK(t.showing(11)[0].text == "exported a.png");
+    CHECK(t.showing(12)[0].faded == Approx(2 / Toasts::seconds));
+    CHECK(t.until() == 11 + Toasts::seconds);
+    CHECK(t.showing(10 + Toasts::seconds).size() == 1);  // the first has gone, the second not yet
+    t.say("saved b.toml", 12);                            // said again: shown once, from now
+    t.say("c", 12), t.say("d", 12);
+    const auto now = t.showing(12);
+    REQUIRE(now.size() == Toasts::most);
+    CHECK(now.back().text == "d");
+    CHECK(t.showing(20).empty());
 }
