@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
+#include <tuple>
+
+#include <glm/geometric.hpp>
 
 #include "clipping/sutherland_hodgman.h"
 #include "core/numeric.h"
@@ -72,6 +76,39 @@ bool projections_overlap(const std::vector<Vec3>& a, const std::vector<Vec3>& b)
             if (a1 <= b0 + slack || b1 <= a0 + slack) return false;
         }
     return true;
+}
+
+// Does the plane of one polygon cut another (vertices on both sides, beyond the tolerance)?
+bool cuts(const Extents& of_plane, const SortPolygon& polygon) {
+    return of_plane.has_plane && classify(of_plane.plane, polygon.vertices, tol) == PolygonSide::spanning;
+}
+
+
+// In a cycle of polygons each to be drawn before the next, one whose plane cuts another whose projection it
+// overlaps: (the one cut, the one cutting). None when no plane of the cycle cuts another member.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> cut_in_cycle(const std::vector<std::uint32_t>& cycle,
+                                                                   const std::vector<SortPolygon>& polygons,
+                                                                   const std::vector<Extents>& ext) {
+    for (const std::uint32_t a : cycle)
+        for (const std::uint32_t b : cycle)
+            if (a != b && cuts(ext[b], polygons[a]) && projections_overlap(polygons[a].vertices, polygons[b].vertices))
+                return std::pair{a, b};
+    return std::nullopt;
+}
+
+// The plane along the view rays (n.z = 0) through the middle of a polygon's projection, square to the line
+// between its two vertices farthest apart on the screen: it cuts the polygon across its length.
+Plane across_plane(const SortPolygon& p) {
+    glm::dvec2 a(0), b(0), centre(0);
+    for (const Vec3& u : p.vertices) {
+        centre += glm::dvec2(u) / double(p.vertices.size());
+        for (const Vec3& v : p.vertices)
+            if (glm::distance(glm::dvec2(u), glm::dvec2(v)) > glm::distance(a, b)) a = u, b = v;
+    }
+    const glm::dvec2 along = b - a;
+    if (along == glm::dvec2(0)) return {};
+    const Vec3 n = glm::normalize(Vec3(along, 0));
+    return {n, -glm::dot(n, Vec3(centre, 0))};
 }
 
 // Tests 1, 2, 3, 4, 5 in order of cost: may R be drawn before Q?
@@ -153,11 +190,14 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             // Q was moved before: a cycle, or no order could be shown. Split Q by R's plane if that cuts it, else R by
             // Q's plane.
             std::uint32_t cut = q, by = r;
+            std::optional<Plane> across;  // a plane along the view rays, when no polygon's plane cuts the cycle
             if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
-            if (!ext[by].has_plane || classify(ext[by].plane, out.polygons[cut].vertices, tol) != PolygonSide::spanning) {
+            if (!cuts(ext[by], out.polygons[cut])) {
                 // Neither cuts the other, and Q must go first: that is an order, not a cycle of these two (Q's mark is
                 // from another R): move it again. But only while this round has moved fewer polygons than the list
-                // holds; beyond that the moves go round a cycle no plane can cut, and they would never end.
+                // holds; beyond that the moves go round a cycle of three or more (each before the next, the last
+                // before the first) in which R's and Q's planes cut neither: the plane of another member of the
+                // cycle must cut one of them, so split that one.
                 if (q_first && moves_since_drawn < list.size()) {
                     ++out.moves, ++moves_since_drawn;
                     list.erase(list.begin() + std::ptrdiff_t(k));
@@ -165,8 +205,20 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
                     co_yield PolygonMoved{q, r};
                     break;
                 }
-                draw_r = true;  // neither cuts the other and no order shows: nothing orders them better than the list
-                continue;
+                // The cycle's members: the polygons moved to the head of the list since the last was drawn, and Q
+                std::vector<std::uint32_t> cycle(list.begin(), list.begin() + std::ptrdiff_t(std::min(moves_since_drawn + 1, k)));
+                cycle.push_back(q);
+                if (const auto pair = cut_in_cycle(cycle, out.polygons, ext)) {
+                    std::tie(cut, by) = *pair;
+                } else if (const Plane p = across_plane(out.polygons[r]); classify(p, out.polygons[r].vertices, tol) == PolygonSide::spanning) {
+                    // No plane of the cycle cuts another member (bars lying each over the next): cut R across its
+                    // length by a plane along the view rays, so that each half overlaps fewer of the others
+                    cut = by = r, across = p;
+                } else {
+                    draw_r = true;  // too small to cut: nothing orders them better than the list
+                    continue;
+                }
+                moves_since_drawn = 0;  // the parts are new polygons: the round starts again
             }
             if (q_first) co_yield CycleDetected{q};
             if (out.splits == o.max_splits) {
@@ -174,7 +226,7 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
                 co_yield SortBoundReached{SortBound::splits, o.max_splits};
                 co_return out;
             }
-            const SplitParts parts = split(ext[by].plane, out.polygons[cut].vertices, tol);
+            const SplitParts parts = split(across.value_or(ext[by].plane), out.polygons[cut].vertices, tol);
             const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
             for (const auto* part : {&parts.front, &parts.back}) {
                 out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part, out.polygons[cut].opacity});
@@ -185,7 +237,7 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
             const auto at = std::find(list.begin(), list.end(), cut);
             *at = back;
             list.insert(at + 1, front);
-            const DepthSortEvent cut_event = PolygonCut{cut, by, front, back, parts.front, parts.back};
+            const DepthSortEvent cut_event = PolygonCut{cut, by, front, back, parts.front, parts.back, across.has_value()};
             co_yield cut_event;
         }
         if (!draw_r) continue;

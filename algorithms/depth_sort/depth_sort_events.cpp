@@ -48,6 +48,9 @@ std::string describe(const DepthSortEvent& event) {
             [](const PolygonMoved& e) { return "Q = #" + n(e.polygon) + " must be drawn before #" + n(e.ahead_of) + ": it moves to the head of the list."; },
             [](const CycleDetected& e) { return "#" + n(e.polygon) + " would move a second time: a cycle. Split instead."; },
             [](const PolygonCut& e) {
+                if (e.across)
+                    return "No plane of the cycle cuts another of it: split #" + n(e.polygon) +
+                           " across its length, by a plane along the view rays, into #" + n(e.front) + " and #" + n(e.back) + ".";
                 return "Split #" + n(e.polygon) + " by the plane of #" + n(e.by) + " into #" + n(e.front) + " and #" + n(e.back) + ".";
             },
             [](const PolygonPainted& e) { return "Draw #" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ")."; },

@@ -61,6 +61,8 @@ struct PolygonCut {
     std::uint32_t polygon, by;     // cut by the plane of `by`
     std::uint32_t front, back;     // the new parts, which take its place in the list (back part first)
     std::vector<Vec3> front_vertices, back_vertices;
+    bool across = false;           // cut across its length by a plane along the view rays instead (`by` is itself):
+                                   // no plane of the cycle cut another of its members
     bool operator==(const PolygonCut&) const = default;
 };
 struct PolygonPainted {
