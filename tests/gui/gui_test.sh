@@ -246,10 +246,10 @@ case "$case" in
     grep -q "at step 515 of 515" zb.txt                      # the fill reran on the edited scene
     if "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot x.png --frames 2 --keys "Drag:1:2" 2> bad.txt; then exit 1; fi
     grep -q 'unknown key or gesture "Drag:1:2"' bad.txt ;;
-  presets)  # P lists the extreme cases of the lesson's algorithm; 3 plays the third (the cyclic overlap) with it; 0 a random scene; B goes back
+  presets)  # P lists the extreme cases of the lesson's algorithm; 7 plays the seventh (the cyclic overlap) with it; 0 a random scene; B goes back
     "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot presets.png --frames 4 --keys P > open.txt
     "$png_check" presets.png 1280 800
-    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot case.png --frames 6 --keys "P,3,Right" > case.txt
+    "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot case.png --frames 6 --keys "P,7,Right" > case.txt
     grep -q "playing .*extreme/depth_sort_cyclic_overlap.toml with depth_sort" case.txt
     "$hsrviz" "$src/lessons/13_depth_sort_cycle.toml" --screenshot random.png --frames 8 --keys "P,0,Right,B" > random.txt
     grep -q "playing hsrviz-export/random-depth_sort-seed1.toml with depth_sort" random.txt
