@@ -16,18 +16,39 @@ std::vector<Vec3> world_vertices(const ScenePolygon& p) {
     return v;
 }
 
-// The occlusion frustum of a convex polygon seen from the eye: inside when behind the polygon, within its edges.
-std::vector<Plane> occlusion_frustum(const std::vector<Vec3>& poly, const Vec3& eye, double eps) {
+// Where the view comes from: the eye point of a perspective camera, or, for an orthographic one, the view
+// direction along which every ray runs (the "eye" at infinity).
+struct ViewOrigin {
+    bool at_infinity;
+    Vec3 eye, direction;  // direction: unit, from the eye into the scene
+};
+
+ViewOrigin view_origin(const Camera& c) {
+    const Vec3 d = c.target - c.eye;
+    return {c.projection == Projection::orthographic, c.eye, glm::length(d) > 0 ? glm::normalize(d) : Vec3(0, 0, -1)};
+}
+
+// Wholly beyond the near plane. What lies nearer is clipped away and hides nothing, so a polygon reaching in front
+// of the near plane (or behind the eye, where a frustum through the eye turns inside out) is no occluder.
+bool beyond_near_plane(const std::vector<Vec3>& poly, const Camera& c, const ViewOrigin& view) {
+    return std::all_of(poly.begin(), poly.end(), [&](const Vec3& v) { return glm::dot(v - view.eye, view.direction) >= c.near; });
+}
+
+// The occlusion frustum of a convex polygon seen from the view's origin: inside when behind the polygon, within its
+// edges. From an eye point the side planes pass through the eye; from a direction they run along it (a prism).
+std::vector<Plane> occlusion_frustum(const std::vector<Vec3>& poly, const ViewOrigin& view, double eps) {
     std::vector<Plane> f;
     const Vec3 centre = centroid(poly);
     for (std::size_t i = 0; i < poly.size(); ++i) {
-        Plane p = plane_through(glm::cross(poly[i] - eye, poly[(i + 1) % poly.size()] - eye), eye);
+        const Vec3 &a = poly[i], &b = poly[(i + 1) % poly.size()];
+        Plane p = view.at_infinity ? plane_through(glm::cross(b - a, view.direction), a) : plane_through(glm::cross(a - view.eye, b - view.eye), view.eye);
         if (p.distance(centre) < 0) p = {-p.n, -p.d};
         f.push_back(p);
     }
     Plane own;
     plane_of(poly, own);
-    if (own.distance(eye) > 0) own = {-own.n, -own.d};  // the far side of the occluder is inside
+    // the far side of the occluder is inside
+    if (view.at_infinity ? glm::dot(own.n, view.direction) < 0 : own.distance(view.eye) > 0) own = {-own.n, -own.d};
     own.d -= eps;  // strictly behind it: the occluder (and what lies in its plane) is not culled by itself
     f.push_back(own);
     return f;
@@ -41,6 +62,14 @@ bool wholly_outside(const Aabb& box, const std::vector<Plane>& f) {
 }
 
 }  // namespace
+
+double occluder_rank(const std::vector<Vec3>& poly, const Camera& camera) {
+    const ViewOrigin view = view_origin(camera);
+    if (!view.at_infinity) return occluder_rank(poly, view.eye);
+    Plane p;  // seen along a direction: the area it covers on the screen, as large from any distance
+    if (!plane_of(poly, p)) return 0;
+    return std::max(0.0, -measure(poly) * glm::dot(p.n, view.direction));
+}
 
 double occluder_rank(const std::vector<Vec3>& poly, const Vec3& eye) {
     Plane p;
@@ -77,18 +106,18 @@ Steps<OcclusionEvent, OcclusionCull> occlusion_cull(const Scene* scene, const Hi
     OcclusionCull out;
     const std::size_t n = scene->polygons.size();
     out.kept = o.candidates.empty() ? std::vector<std::uint8_t>(n, 1) : o.candidates;
-    const Vec3 eye = scene->camera.eye;
+    const ViewOrigin view = view_origin(scene->camera);
     // Choose the occluders: the best ranked polygons
     std::vector<std::pair<double, std::uint32_t>> ranked;
     for (std::uint32_t i = 0; i < n; ++i)
-        if (out.kept[i])
-            if (const double f = occluder_rank(world_vertices(scene->polygons[i]), eye); f > 0) ranked.push_back({f, i});
+        if (const auto poly = world_vertices(scene->polygons[i]); out.kept[i] && beyond_near_plane(poly, scene->camera, view))
+            if (const double f = occluder_rank(poly, scene->camera); f > 0) ranked.push_back({f, i});
     std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     double extent = 1;
     for (const Aabb& b : h->boxes) extent = std::max({extent, std::abs(b.lo.x), std::abs(b.hi.x), std::abs(b.lo.y), std::abs(b.hi.y), std::abs(b.lo.z), std::abs(b.hi.z)});
     for (std::size_t k = 0; k < ranked.size() && k < o.max_occluders; ++k) {
         const auto poly = world_vertices(scene->polygons[ranked[k].second]);
-        out.occluders.push_back({ranked[k].second, ranked[k].first, occlusion_frustum(poly, eye, 1e-9 * extent)});
+        out.occluders.push_back({ranked[k].second, ranked[k].first, occlusion_frustum(poly, view, 1e-9 * extent)});
         co_yield OccluderChosen{ranked[k].second, ranked[k].first, measure(poly)};
     }
     // Cull top-down: a box wholly inside one occlusion frustum goes with its subtree

@@ -65,7 +65,11 @@ struct OcclusionCull {
 // The hierarchy is over the scene's polygons (in order); both must outlive the machine.
 Steps<OcclusionEvent, OcclusionCull> occlusion_cull(const Scene* scene, const Hierarchy* hierarchy, OcclusionOptions options = {});
 
-// The rank of a polygon as an occluder from `eye` (0 when it faces away).
+// The rank of a polygon as an occluder from `eye` (0 when it faces away): its area over the squared distance,
+// times the cosine of its turn from the eye.
 double occluder_rank(const std::vector<Vec3>& polygon, const Vec3& eye);
+// The same seen by the camera: from its eye, or for an orthographic camera along its view direction (the area it
+// covers on the screen, whatever its distance).
+double occluder_rank(const std::vector<Vec3>& polygon, const Camera& camera);
 
 }  // namespace hsr::algo

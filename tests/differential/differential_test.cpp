@@ -81,3 +81,23 @@ TEST_CASE("depth sort: a cycle of five no plane of theirs cuts is cut across, an
         if (const auto* cut = std::get_if<algo::PolygonCut>(&e)) across += cut->across;
     CHECK(across >= 1);
 }
+
+TEST_CASE("occlusion culling: orthographic cameras and occluders reaching behind the eye hide nothing visible",
+          "[differential][culling]") {
+    // Found by the differential test. The occlusion frustum was built through the eye point for an orthographic
+    // camera too (orthographic seed 4: polygon 4 culled where it is the nearest), and from polygons
+    // reaching in front of the near plane, behind the eye, whose frustum through the eye turns inside out
+    // (behind-eye seed 20: polygon 17 culled).
+    const algo::Viewport vp{192, 144};
+    const auto renderers = test::cpu_renderers();
+    const auto culled = std::find_if(renderers.begin(), renderers.end(), [](const auto& r) { return r.name.starts_with("culling"); });
+    REQUIRE(culled != renderers.end());
+    for (const auto& [name, seed] : {std::pair{"orthographic", 4u}, std::pair{"behind-eye", 20u}}) {
+        INFO(name << " seed " << seed);
+        const auto& families = test::scene_families();
+        const auto family = std::find_if(families.begin(), families.end(), [&](const auto& f) { return f.name == name; });
+        REQUIRE(family != families.end());
+        const test::Tally t = against_ray_cast(family->make(seed, 4.0 / 3), *culled, vp);
+        CHECK(t.unexplained == 0);
+    }
+}

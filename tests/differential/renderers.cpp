@@ -1,6 +1,7 @@
 #include "renderers.h"
 
 #include "analysis/painters.h"
+#include "culling/pipeline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
@@ -47,6 +48,12 @@ Drawn depth_sort(const algo::Scene& s, algo::Viewport vp) {
     return d;
 }
 
+// The culling pipeline's conservative stages, then its z-buffer: what they leave out must not change the picture.
+Drawn culled(const algo::Scene& s, algo::Viewport vp) {
+    algo::PipelineResult r = algo::run_pipeline(s, {.stages = algo::parse_stages("frustum,occluders,hiz"), .viewport = vp});
+    return {std::move(r.frame.image.ids), {}, r.frame.bounded};
+}
+
 }  // namespace
 
 Drawn ray_cast(const algo::Scene& s, algo::Viewport vp, algo::Acceleration a) {
@@ -59,7 +66,7 @@ std::vector<Renderer> cpu_renderers() {
     std::vector<Renderer> r;
     for (const F f : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24})
         r.push_back({"zbuffer " + std::string(algo::format_id(f)), {f}, [f](const auto& s, auto vp) { return zbuffer(s, vp, f); }});
-    for (const F f : {F::int24, F::float32})
+    for (const F f : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24})
         r.push_back({"scanline " + std::string(algo::format_id(f)), {f}, [f](const auto& s, auto vp) { return scan_line(s, vp, f); }});
     for (const algo::Acceleration a : {algo::Acceleration::grid, algo::Acceleration::octree})
         r.push_back({"raycast " + std::string(algo::to_string(a)), {}, [a](const auto& s, auto vp) { return ray_cast(s, vp, a); }});
@@ -70,6 +77,7 @@ std::vector<Renderer> cpu_renderers() {
         r.push_back({std::string("bsp ") + name, {}, [rr](const auto& s, auto vp) { return bsp(s, vp, rr); }});
     }
     r.push_back({"depth-sort", {}, depth_sort});
+    r.push_back({"culling frustum,occluders,hiz", {F::int24}, culled});
     return r;
 }
 

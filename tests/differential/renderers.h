@@ -27,7 +27,7 @@ struct Renderer {
 };
 
 // The z-buffer in every depth format, the scan line, the ray cast with each acceleration, the BSP painter with
-// each splitter rule, and depth sort.
+// each splitter rule, depth sort, and the culling pipeline's conservative stages before its z-buffer.
 std::vector<Renderer> cpu_renderers();
 // The plainest reference: the double-precision ray cast with no acceleration.
 Drawn ray_cast(const algo::Scene& s, algo::Viewport vp, algo::Acceleration a = algo::Acceleration::none);
