@@ -161,15 +161,15 @@ int main(int argc, char** argv) {
     }
     std::printf("differential: %d scenes in %zu families at %dx%d, references: ray cast (no acceleration) and OpenGL (%s)\n",
                 scene_count, only.empty() ? test::scene_families().size() : 1, width, height, gl.renderer());
-    std::printf("%-24s %11s | %-34s | %-34s | %9s %6s\n", "", "pixels", "against the ray cast", "against OpenGL", "median", "");
-    std::printf("%-24s %11s | %8s %8s %8s %7s | %8s %8s %8s %7s | %9s %6s\n", "algorithm", "compared", "differ", "edge", "tie",
+    std::printf("%-30s %11s | %-34s | %-34s | %9s %6s\n", "", "pixels", "against the ray cast", "against OpenGL", "median", "");
+    std::printf("%-30s %11s | %8s %8s %8s %7s | %8s %8s %8s %7s | %9s %6s\n", "algorithm", "compared", "differ", "edge", "tie",
                 "unexpl", "differ", "edge", "tie", "unexpl", "ms", "slow");
     bool failed = false;
     for (const test::Renderer& r : list) {
         Totals& t = totals[r.name];
         std::sort(t.ms.begin(), t.ms.end());
         const double median = t.ms.empty() ? 0 : t.ms[t.ms.size() / 2];
-        std::printf("%-24s %11llu | %8llu %8llu %8llu %7llu | %8llu %8llu %8llu %7llu | %9.3f %6llu%s\n", r.name.c_str(),
+        std::printf("%-30s %11llu | %8llu %8llu %8llu %7llu | %8llu %8llu %8llu %7llu | %9.3f %6llu%s\n", r.name.c_str(),
                     (unsigned long long)t.vs_ray.compared, (unsigned long long)t.vs_ray.differ, (unsigned long long)t.vs_ray.edge,
                     (unsigned long long)t.vs_ray.tie, (unsigned long long)t.vs_ray.unexplained, (unsigned long long)t.vs_gl.differ,
                     (unsigned long long)t.vs_gl.edge, (unsigned long long)t.vs_gl.tie, (unsigned long long)t.vs_gl.unexplained, median,
