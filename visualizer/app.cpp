@@ -321,10 +321,10 @@ int run_app(const AppOptions& o) {
             }
             if (o.gif) {
                 if (!gif && !gif_failed) {
-                    gif.emplace(*o.gif, width / 2, height / 2, 50);
+                    gif.emplace(*o.gif, o.gif_half ? width / 2 : width, o.gif_half ? height / 2 : height, 50);
                     if (!gif->ok()) std::fprintf(stderr, "hsrviz: cannot write %s\n", o.gif->c_str()), gif.reset(), gif_failed = true, exit_code = 1;
                 }
-                if (gif) gif->add_frame(half_size_pixels(width, height));
+                if (gif) gif->add_frame(frame_pixels(width, height, o.gif_half));
                 if (!gif || !lp.session() || lp.session()->at_end() || lp.session()->cursor() >= o.gif_to) running = false;
             }
             // the screenshot waits (a few frames at most) until the panel column has settled

@@ -19,6 +19,7 @@ struct AppOptions {
     bool autoplay = false;                     // start playing (the screenshot and record modes step on their own)
     std::optional<std::string> gif;            // headless: an animated GIF of steps gif_from … gif_to, then exit
     std::size_t gif_from = 0, gif_to = 60;
+    bool gif_half = false;                     // GIF frames at half size (smaller files, text harder to read)
     std::optional<std::string> frame_log;      // one line per frame: its time in ms (and the median printed at exit)
     bool projector = false;                    // fullscreen, larger type for the back row, high contrast
     float scale = 0;                           // the size of type and panels (1 = normal); 0: 1.3 for a projector, else

@@ -21,20 +21,20 @@ std::vector<unsigned char> read_pixels(int w, int h) {
 
 }  // namespace
 
-std::vector<unsigned char> half_size_pixels(int w, int h) {
+std::vector<unsigned char> frame_pixels(int w, int h, bool half) {
     const std::vector<unsigned char> full = read_pixels(w, h);
-    const int hw = w / 2, hh = h / 2;
-    std::vector<unsigned char> half(std::size_t(hw) * std::size_t(hh) * 4);
-    for (int y = 0; y < hh; ++y)
-        for (int x = 0; x < hw; ++x)
+    const int f = half ? 2 : 1, fw = w / f, fh = h / f;  // each pixel of the frame averages f × f of the window's
+    std::vector<unsigned char> out(std::size_t(fw) * std::size_t(fh) * 4);
+    for (int y = 0; y < fh; ++y)
+        for (int x = 0; x < fw; ++x)
             for (int c = 0; c < 4; ++c) {
                 int sum = 0;
-                for (int dy = 0; dy < 2; ++dy)
-                    for (int dx = 0; dx < 2; ++dx)  // flip while shrinking
-                        sum += full[(std::size_t(h - 1 - (2 * y + dy)) * std::size_t(w) + std::size_t(2 * x + dx)) * 4 + std::size_t(c)];
-                half[(std::size_t(y) * std::size_t(hw) + std::size_t(x)) * 4 + std::size_t(c)] = static_cast<unsigned char>(sum / 4);
+                for (int dy = 0; dy < f; ++dy)
+                    for (int dx = 0; dx < f; ++dx)  // GL's rows run bottom up: flip
+                        sum += full[(std::size_t(h - 1 - (f * y + dy)) * std::size_t(w) + std::size_t(f * x + dx)) * 4 + std::size_t(c)];
+                out[(std::size_t(y) * std::size_t(fw) + std::size_t(x)) * 4 + std::size_t(c)] = static_cast<unsigned char>(sum / (f * f));
             }
-    return half;
+    return out;
 }
 
 bool write_png(const std::string& path, int w, int h) {

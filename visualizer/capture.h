@@ -12,8 +12,8 @@ namespace hsr::viz {
 
 // The drawable's pixels as a PNG (top row first). False when it cannot be written.
 bool write_png(const std::string& path, int width, int height);
-// The drawable's pixels at half size (each 2×2 block averaged), RGBA, the top row first.
-std::vector<unsigned char> half_size_pixels(int width, int height);
+// The drawable's pixels, RGBA, the top row first: at full size, or at half (each 2×2 block averaged).
+std::vector<unsigned char> frame_pixels(int width, int height, bool half);
 // E: the window as a PNG, the lesson's trace, and its scene as TOML, into hsrviz-export/; says what it wrote.
 // Returns what it did, as a sentence for the window's note ("exported …" or "could not export all of …").
 std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height);

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     cli.add_option("--gif", app.gif, "Write an animated GIF of the window for steps --from to --to (one frame a step), then exit");
     cli.add_option("--from", app.gif_from, "First step of the GIF (default 0)");
     cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
+    cli.add_flag("--gif-half", app.gif_half, "GIF frames at half the window's size (smaller files; text is harder to read)");
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
     cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
     CLI::Option* size_option = cli.add_option("--size", size, "Window size WxH (default: as the last run left it, else 1280x800)")->check(CLI::Validator(

@@ -165,7 +165,9 @@ case "$case" in
     "$hsrviz" "$lesson" --gif cs.gif --from 2 --to 14 > gif.txt
     frames=$(sed -n 's/^hsrviz: wrote \([0-9]*\) frames to cs.gif$/\1/p' gif.txt)
     test "$frames" -ge 3
-    "$png_check" --gif-frames cs.gif "$frames"
+    "$png_check" --gif-frames cs.gif "$frames" 1280 800                 # at the window's size: its text legible
+    "$hsrviz" "$lesson" --gif half.gif --gif-half --from 2 --to 4 > /dev/null
+    "$png_check" --gif-frames half.gif 3 640 400
     # E exports the window, the trace and the scene; the scene loads back and renders
     "$hsrviz" "$lesson" --screenshot e.png --frames 4 --keys Right,E > e.txt
     grep -q "hsrviz: exported hsrviz-export/01_cohen_sutherland-step-1.png" e.txt

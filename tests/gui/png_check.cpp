@@ -51,7 +51,8 @@ int same_ids(char** argv) {
 }
 
 // An animated GIF decodes and has this many frames, each the size of the screen.
-int gif_frames(char** argv) {
+// --gif-frames FILE N [W H]: the GIF decodes, with N frames (each the size of the whole, W × H when given)
+int gif_frames(int argc, char** argv) {
     int error = 0;
     GifFileType* gif = DGifOpenFileName(argv[2], &error);
     if (!gif || DGifSlurp(gif) == GIF_ERROR) {
@@ -59,15 +60,17 @@ int gif_frames(char** argv) {
         return 1;
     }
     const int frames = gif->ImageCount, want = std::atoi(argv[3]);
+    const bool size_given = argc == 6;
     bool sizes = true;
     for (int i = 0; i < frames; ++i) sizes = sizes && gif->SavedImages[i].ImageDesc.Width == gif->SWidth && gif->SavedImages[i].ImageDesc.Height == gif->SHeight;
     std::printf("png_check: %s: %d frames of %dx%d\n", argv[2], frames, gif->SWidth, gif->SHeight);
+    if (size_given) sizes = sizes && gif->SWidth == std::atoi(argv[4]) && gif->SHeight == std::atoi(argv[5]);
     DGifCloseFile(gif, &error);
     return frames == want && frames > 0 && sizes ? 0 : 1;
 }
 
 int main(int argc, char** argv) {
-    if (argc == 4 && std::string(argv[1]) == "--gif-frames") return gif_frames(argv);
+    if ((argc == 4 || argc == 6) && std::string(argv[1]) == "--gif-frames") return gif_frames(argc, argv);
     if (argc == 5 && std::string(argv[1]) == "--same-ids") return same_ids(argv);
     if (argc >= 5 && std::string(argv[1]) == "--ids") return check_ids(argc, argv);
     if (argc != 4) {
