@@ -2,6 +2,7 @@
 // and sentences print numbers the same way.
 #pragma once
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -21,6 +22,12 @@ inline std::string format_number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
+}
+
+// A number computed from numbers of size `scale`: what lies below 1e-12 of the scale is rounding, not a value, and
+// prints as 0 (a depth that changes by 1.48e-17 per pixel does not change).
+inline std::string format_number(double v, double scale) {
+    return format_number(std::abs(v) < 1e-12 * std::abs(scale) ? 0.0 : v);
 }
 
 }  // namespace hsr::algo

@@ -1,5 +1,8 @@
 #include "depth_sort/depth_sort_events.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/events.h"
 #include "core/overloaded.h"
 
@@ -8,7 +11,10 @@ namespace {
 
 std::string n(std::uint64_t v) { return std::to_string(v); }
 std::string vertices(double count) { return n(std::uint64_t(count)) + (count == 1 ? " vertex" : " vertices"); }
-std::string range(double a, double b) { return "[" + format_number(a) + ", " + format_number(b) + "]"; }
+std::string range(double a, double b) {
+    const double scale = std::max(std::abs(a), std::abs(b));
+    return "[" + format_number(a, scale) + ", " + format_number(b, scale) + "]";
+}
 
 }  // namespace
 

@@ -30,7 +30,8 @@ std::string describe(const ZBufferEvent& event, DepthFormat format) {
                        std::string(to_string(format)) + ").";
             },
             [](const PolygonFillStarted& e) {
-                return "Polygon " + std::to_string(e.id) + ": its depth changes by −a/c = " + format_number(e.per_x) +
+                return "Polygon " + std::to_string(e.id) + ": its depth changes by −a/c = " + format_number(e.per_x, 1.0) +  // depths in [0, 1]
+                      
                        " per pixel along x.";
             },
             [](const PolygonSkipped& e) {

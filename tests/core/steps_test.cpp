@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "catch.h"
+#include "core/events.h"
 #include "core/steps.h"
 
 using hsr::algo::Steps;
@@ -186,4 +187,14 @@ TEST_CASE("a temporary machine's result is moved out, so iterating it does not d
     for (int d : digits().run_to_end()) sum += d;  // the Steps temporary ends before the loop body runs
     CHECK(sum == 6);
     STATIC_REQUIRE(std::is_same_v<decltype(digits().run_to_end()), std::vector<int>>);
+}
+
+TEST_CASE("numbers in sentences: rounding noise below 1e-12 of the scale prints as 0", "[core][format]") {
+    using hsr::algo::format_number;
+    CHECK(format_number(1.4802973661668754e-17, 1.0) == "0");     // lesson 11's −a/c of a polygon facing the eye
+    CHECK(format_number(-1.1102230246251565e-16, 0.612716) == "0");  // lesson 16's x extent
+    CHECK(format_number(-0.0, 1.0) == "0");
+    CHECK(format_number(1e-9, 1.0) == "1e-09");                    // small, but a value: kept
+    CHECK(format_number(1e-15, 1e-6) == "1e-15");                  // tiny numbers of a tiny scale are values
+    CHECK(format_number(0.25, 1.0) == "0.25");
 }
