@@ -60,9 +60,24 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
                 out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
                                c * glm::vec4(1, 1, 1, m == PrimitiveMark::left_out ? 0.12f : 0.35f));
     }
-    // the hierarchy's boxes, by what happened to them (the current one bold)
-    for (std::size_t n = 0; n < h.nodes.size(); ++n)
-        if (v.nodes[n] != NodeMark::untouched) box_lines(out.faint, h.nodes[n].box, mark_colour(v.nodes[n]));
+    // the hierarchy's boxes, by what happened to them: the node under test bold, the nodes on its way down from the
+    // root in full colour, what is settled dimmed; a node decided whole (rejected, accepted, too small, occluded)
+    // stands for its subtree, so its descendants are not drawn (they would bury the picture in wireframe)
+    std::vector<bool> on_path(h.nodes.size(), false);
+    for (std::int32_t n = v.current; n >= 0; n = h.nodes[std::size_t(n)].parent) on_path[std::size_t(n)] = true;
+    const auto decided_whole = [&](std::size_t n) {
+        const NodeMark m = v.nodes[n];
+        return m == NodeMark::outside || m == NodeMark::inside || m == NodeMark::too_small || m == NodeMark::occluded;
+    };
+    for (std::size_t n = 0; n < h.nodes.size(); ++n) {
+        if (v.nodes[n] == NodeMark::untouched || std::int32_t(n) == v.current) continue;
+        bool under_decided = false;
+        for (std::int32_t a = h.nodes[n].parent; a >= 0 && !under_decided; a = h.nodes[std::size_t(a)].parent)
+            under_decided = decided_whole(std::size_t(a));
+        if (under_decided) continue;
+        const glm::vec4 c = mark_colour(v.nodes[n]);
+        box_lines(out.faint, h.nodes[n].box, on_path[n] ? c : c * glm::vec4(1, 1, 1, 0.3f));
+    }
     if (v.current >= 0) box_lines(out.bold, h.nodes[std::size_t(v.current)].box, mark_colour(v.nodes[std::size_t(v.current)]));
     // occluders and the rays of their occlusion frusta
     for (std::size_t k = 0; k < v.occluders.size(); ++k) {

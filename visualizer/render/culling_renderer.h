@@ -1,6 +1,7 @@
 // The 3D view of a culling lesson, from above and behind the camera (a god's-eye view): the camera's frustum, the
 // primitives kept solid and those left out faint, the hierarchy's boxes coloured by what happened to them
-// (outside red, inside green, partly inside yellow, too small grey, occluded purple, visible blue), and the
+// (outside orange-red, inside bluish green, partly inside yellow, too small grey, occluded reddish purple, visible sky
+// blue: the Okabe–Ito colours, told apart by colour-blind eyes; the lessons name them so), and the
 // occluders with the rays of their occlusion frusta.
 #pragma once
 
