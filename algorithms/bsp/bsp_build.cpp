@@ -150,12 +150,18 @@ Steps<BspEvent, BspTree> build_machine(BspTree tree, BspOptions o) {
     auto root = build_node(&tree, std::move(all), 0, {}, o);
     for (const auto& e : root) co_yield e;
     tree.root = root.result();
-    co_yield BuildFinished{std::uint32_t(tree.nodes.size()), tree.depth, std::uint32_t(tree.polygons.size()),
+    co_yield BuildFinished{std::uint32_t(tree.nodes.size()), tree.depth, std::uint32_t(tree.held()),
                            tree.splits};
     co_return std::move(tree);
 }
 
 }  // namespace
+
+std::size_t BspTree::held() const {
+    std::size_t n = 0;
+    for (const BspNode& node : nodes) n += node.polygons.size();
+    return n;
+}
 
 std::vector<std::string> BspTree::labels() const {
     std::vector<std::string> out;

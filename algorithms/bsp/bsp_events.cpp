@@ -76,7 +76,7 @@ std::string describe(const BspEvent& event, const PolygonNamer& name) {
             },
             [&](const BuildFinished& e) {
                 return "built: " + std::to_string(e.nodes) + " nodes, depth " + std::to_string(e.depth) + ", " +
-                       std::to_string(e.polygons) + " polygons after " + std::to_string(e.splits) + " splits";
+                       std::to_string(e.polygons) + " polygons in its nodes after " + std::to_string(e.splits) + " splits";
             },
             [&](const EyeClassified& e) {
                 return "the eye is " + std::string(to_string(e.side)) + " of " + node(e.node) + "'s plane (distance " +

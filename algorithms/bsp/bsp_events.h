@@ -82,7 +82,7 @@ struct NodeFinished {
 };
 struct BuildFinished {
     static constexpr std::string_view kind = "BuildFinished";
-    std::uint32_t nodes, depth, polygons, splits;
+    std::uint32_t nodes, depth, polygons, splits;  // polygons: held by the nodes (drawn by a traversal)
     bool operator==(const BuildFinished&) const = default;
 };
 

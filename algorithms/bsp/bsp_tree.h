@@ -34,6 +34,9 @@ struct BspTree {
     std::uint32_t splits = 0, depth = 0;  // depth: of the deepest node, counting the root as 1
     bool bounded = false;                 // a bound stopped the build; the tree is still a valid BSP of what it has
     std::vector<std::string> labels() const;
+    // The polygons the nodes hold, the ones a traversal draws: the inputs less those split, plus the parts kept
+    // (a part split again counts as its parts). `polygons` holds the split ones too.
+    std::size_t held() const;
 };
 
 struct BspInput {

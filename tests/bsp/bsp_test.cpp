@@ -350,3 +350,15 @@ TEST_CASE("the painter's fill in BSP order gives the ray cast's id image through
     CHECK(compared > 4 * w * h / 2);
     CHECK(wrong == 0);
 }
+
+TEST_CASE("the count of polygons in the tree is what a traversal draws: one more for each split", "[bsp]") {
+    std::mt19937_64 rng(17);
+    for (int round = 0; round < 20; ++round) {
+        const auto in = random_triangles(rng, 12);
+        const BspTree tree = build_bsp(in, {}).run_to_end();
+        const auto order = traverse_bsp(&tree, Vec3(0, 0, 30)).run_to_end();
+        CHECK(tree.held() == order.size());
+        CHECK(tree.held() == in.size() + tree.splits);
+        if (tree.splits > 0) CHECK(tree.polygons.size() > tree.held());  // the split ones stay in the list
+    }
+}

@@ -92,7 +92,10 @@ TEST_CASE("occlusion culling: orthographic cameras and occluders reaching behind
     const auto renderers = test::cpu_renderers();
     const auto culled = std::find_if(renderers.begin(), renderers.end(), [](const auto& r) { return r.name.starts_with("culling"); });
     REQUIRE(culled != renderers.end());
-    for (const auto& [name, seed] : {std::pair{"orthographic", 4u}, std::pair{"behind-eye", 20u}}) {
+    for (const auto& [family_name, family_seed] : {std::pair{"orthographic", 4u}, std::pair{"behind-eye", 20u}}) {
+        // Copies, not the bindings themselves: clang 14 cannot capture a structured binding in a lambda.
+        const std::string name = family_name;
+        const unsigned seed = family_seed;
         INFO(name << " seed " << seed);
         const auto& families = test::scene_families();
         const auto family = std::find_if(families.begin(), families.end(), [&](const auto& f) { return f.name == name; });

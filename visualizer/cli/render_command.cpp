@@ -45,8 +45,8 @@ algo::Acceleration acceleration_named(const std::string& s) {
 
 algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
     analysis::BspPainting p = analysis::paint_bsp(scene, splitter_named(o.splitter), vp);
-    std::printf("bsp (%s): %zu polygons in, %zu after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
-                o.splitter.c_str(), scene.polygons.size(), p.tree.polygons.size(), p.tree.splits, p.tree.nodes.size(),
+    std::printf("bsp (%s): %zu polygons in, %zu in the tree after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
+                o.splitter.c_str(), scene.polygons.size(), p.tree.held(), p.tree.splits, p.tree.nodes.size(),
                 p.tree.depth, p.build_ms);
     if (p.tree.bounded) throw std::runtime_error("the BSP build stopped at its step bound (depth or polygons); no image written");
     return std::move(p.image);

@@ -16,7 +16,7 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, "BSP tree");
     const BspSession::Stats& st = s.stats();
     char stats[200];
-    std::snprintf(stats, sizeof stats, "%zu polygons in · %zu after %u splits · %zu nodes · depth %u · built in %.3f ms",
+    std::snprintf(stats, sizeof stats, "%zu polygons in · %zu in the tree after %u splits · %zu nodes · depth %u · built in %.3f ms",
                   st.polygons_in, st.polygons_after, st.splits, st.nodes, st.depth, st.build_ms);
     wrapped_text(stats, dim_text);
 
@@ -32,12 +32,20 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     };
     if (!v.nodes.empty()) place_node(0);
 
+    // Sizes follow the type (a projector's larger type gets a larger tree); each row has room for a node and, under
+    // it, the side of its plane the eye is on; the box asks for the rows the tree has.
+    const float f = ImGui::GetFontSize(), r = 0.62f * f;
+    int deepest = 0;
+    for (const BspNodeView& node : v.nodes) deepest = std::max(deepest, int(node.depth));
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float dx = std::min(48.f, (avail.x - 24) / float(std::max(1, column)));
-    const float dy = std::min(34.f, (avail.y - 20) / float(std::max(1, v.depth)));
+    // rows of 2.7 lines when the box has room (the eye's side under each node), down to 1.5 (beside it)
+    const float row = deepest == 0 ? 0 : std::clamp((avail.y - 2 * r - f - 6) / float(deepest), 1.5f * f, 2.7f * f);
+    const bool sides_below = row >= 2.5f * f;
+    const float dx = std::min(3.6f * f, (avail.x - 2 * r - 8) / float(std::max(1, column - 1)));
+    const bool short_sides = !sides_below || dx < 3.0f * f;  // no room for "eye B": "B"
     const auto at = [&](int n) {
-        return ImVec2(origin.x + 14 + dx * x[std::size_t(n)], origin.y + 12 + dy * float(v.nodes[std::size_t(n)].depth));
+        return ImVec2(origin.x + r + 4 + dx * x[std::size_t(n)], origin.y + r + 2 + row * float(v.nodes[std::size_t(n)].depth));
     };
     ImDrawList* d = ImGui::GetWindowDrawList();
     for (std::size_t n = 0; n < v.nodes.size(); ++n) {
@@ -51,16 +59,21 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     for (std::size_t n = 0; n < v.nodes.size(); ++n) {
         const BspNodeView& node = v.nodes[n];
         const bool current = int(n) == v.current_node;
-        d->AddCircleFilled(at(int(n)), 10, ImGui::GetColorU32(current ? highlight_bg : bit_clear));
-        d->AddCircle(at(int(n)), 10, ImGui::GetColorU32(current ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text), 0, 2);
+        const ImVec2 c = at(int(n));
+        d->AddCircleFilled(c, r, ImGui::GetColorU32(current ? highlight_bg : bit_clear));
+        d->AddCircle(c, r, ImGui::GetColorU32(current ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text), 0, 2);
         const std::string name = node.splitter >= 0 ? v.polygons[std::size_t(node.splitter)].label : "?";
-        d->AddText(ImVec2(at(int(n)).x - 4 * float(name.size()), at(int(n)).y - 8), IM_COL32_WHITE, name.c_str());
-        if (node.eye_side) {  // which side of this node's plane the eye is on
-            const char* side = *node.eye_side == algo::Side::front ? "eye F" : *node.eye_side == algo::Side::back ? "eye B" : "eye on";
-            d->AddText(ImVec2(at(int(n)).x + 11, at(int(n)).y - 2), ImGui::GetColorU32(ImVec4(0.94f, 0.89f, 0.26f, 1)), side);
+        const ImVec2 name_size = ImGui::CalcTextSize(name.c_str());
+        d->AddText(ImVec2(c.x - name_size.x / 2, c.y - name_size.y / 2), IM_COL32_WHITE, name.c_str());
+        if (node.eye_side) {  // which side of this node's plane the eye is on, under the node
+            const bool front = *node.eye_side == algo::Side::front, back = *node.eye_side == algo::Side::back;
+            const char* side = short_sides ? (front ? "F" : back ? "B" : "on") : (front ? "eye F" : back ? "eye B" : "eye on");
+            const float w = ImGui::CalcTextSize(side).x;
+            const ImVec2 where = sides_below ? ImVec2(c.x - w / 2, c.y + r + 1) : ImVec2(c.x + r + 2, c.y - f / 2);
+            d->AddText(where, ImGui::GetColorU32(ImVec4(0.94f, 0.89f, 0.26f, 1)), side);
         }
     }
-    ImGui::Dummy(avail);
+    ImGui::Dummy(ImVec2(avail.x, row * float(deepest) + 2 * r + (sides_below ? f : 0) + 6));
     end_column_box(l, Box::state);
 }
 

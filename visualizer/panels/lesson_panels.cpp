@@ -11,6 +11,8 @@
 
 #include <imgui.h>
 
+#include "state/label_placement.h"
+
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
 
@@ -181,14 +183,25 @@ void error_panel(const std::string& message, const PanelLayout& l, UiActions& ou
 
 void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x, float y, float w, float h) {
     ImDrawList* d = ImGui::GetBackgroundDrawList();
-    for (const Label& label : labels) {
-        const glm::vec4 c = vp * glm::vec4(label.world, 1.0f);
+    // on the screen, in the view; placed from the last given (the element under study is given last) so that
+    // no label covers another
+    std::vector<const Label*> shown;
+    std::vector<LabelBox> boxes;
+    for (auto it = labels.rbegin(); it != labels.rend(); ++it) {
+        const glm::vec4 c = vp * glm::vec4(it->world, 1.0f);
         if (c.w <= 1e-6f) continue;
         const float sx = x + (c.x / c.w * 0.5f + 0.5f) * w, sy = y + (0.5f - c.y / c.w * 0.5f) * h;
         if (sx < x || sx > x + w || sy < y || sy > y + h) continue;
+        const ImVec2 size = ImGui::CalcTextSize(it->text.c_str());
+        shown.push_back(&*it);
+        boxes.push_back({sx, sy, size.x, size.y});
+    }
+    const std::vector<Placed> at = place_labels(boxes);
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+        const Label& label = *shown[k];
         const ImU32 color = ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, label.color.w));
-        d->AddText(ImVec2(sx + 7, sy - 9), IM_COL32(0, 0, 0, 200), label.text.c_str());
-        d->AddText(ImVec2(sx + 6, sy - 10), color, label.text.c_str());
+        d->AddText(ImVec2(at[k].left + 1, at[k].top + 1), IM_COL32(0, 0, 0, 200), label.text.c_str());
+        d->AddText(ImVec2(at[k].left, at[k].top), color, label.text.c_str());
     }
 }
 

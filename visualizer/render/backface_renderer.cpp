@@ -26,9 +26,12 @@ void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBat
                                                                                    : scene_color(scene, f.id, 1);
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
+        // every face numbered as the table and the questions name it, just off its outer side
+        const Vec3 c = algo::centroid(vs);
+        labels.push_back({glm::vec3(c + f.plane.n * 0.04), std::to_string(f.id),
+                          current ? palette::current_edge : glm::vec4(0.85f, 0.86f, 0.9f, f.facing && !kept ? 0.55f : 1.0f)});
         if (!current) continue;
         // the test's vectors: the outward normal at the centroid, and the view vector from the eye to vertex 0
-        const Vec3 c = algo::centroid(vs);
         const double size = glm::length(vs[0] - c) + 0.2;
         out.bold.line(glm::vec3(c), glm::vec3(c + f.plane.n * size), palette::parameter);
         labels.push_back({glm::vec3(c + f.plane.n * size), "n", palette::parameter});

@@ -65,6 +65,7 @@ std::vector<Vec3> plane_quad(const algo::Plane& p, const Vec3& lo, const Vec3& h
 void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
     Vec3 lo, hi;
     bounds(v, lo, hi);
+    const double tick = 0.05 * glm::length(hi - lo) + 0.05;  // the length of a front-side tick
 
     // the splitting planes: in 2D every node's line in its region, in 3D the current node's plane
     if (v.two_d) {
@@ -87,6 +88,9 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         out.faint.triangle(glm::vec3(q[0]), glm::vec3(q[1]), glm::vec3(q[2]), palette::plane_fill);
         out.faint.triangle(glm::vec3(q[0]), glm::vec3(q[2]), glm::vec3(q[3]), palette::plane_fill);
         for (int i = 0; i < 4; ++i) out.faint.line(glm::vec3(q[std::size_t(i)]), glm::vec3(q[std::size_t((i + 1) % 4)]), palette::plane_edge);
+        const Vec3 c = (q[0] + q[2]) * 0.5, n = v.nodes[std::size_t(v.current_node)].plane.n;  // its front side
+        out.bold.line(glm::vec3(c), glm::vec3(c + n * (3 * tick)), palette::plane_edge);
+        labels.push_back({glm::vec3(c + n * (3 * tick)), "front", palette::plane_edge});
     }
 
     for (std::size_t i = 0; i < v.polygons.size(); ++i) {
@@ -103,6 +107,11 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
                 out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
             for (std::size_t k = 0; k < vs.size(); ++k)
                 (current ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
+        }
+        // the front side, where the plane's normal points: a tick from the middle (a wall in 2D, a face in 3D)
+        if (algo::Plane plane; algo::plane_of(vs, plane)) {
+            const Vec3 c = algo::centroid(vs);
+            (current ? out.bold : out.faint).line(glm::vec3(c), glm::vec3(c + plane.n * tick), edge);
         }
         std::string text = p.label;
         if (p.drawn > 0) text += "  #" + std::to_string(p.drawn);

@@ -73,7 +73,7 @@ void BspSession::measure() {
     const auto start = std::chrono::steady_clock::now();
     const BspTree tree = build_bsp(std::move(job.polygons), job.options).run_to_end();
     stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    stats_.polygons_after = tree.polygons.size();
+    stats_.polygons_after = tree.held();
     stats_.nodes = tree.nodes.size();
     stats_.depth = tree.depth;
     stats_.splits = tree.splits;

@@ -1,0 +1,42 @@
+// Labels of a view never cover one another while there is room around their points, and the first label given
+// keeps the spot a reader expects (to the upper right of its point).
+#include "catch.h"
+#include "state/label_placement.h"
+
+using namespace hsr::viz;
+
+namespace {
+
+bool overlap(const LabelBox& a, const Placed& pa, const LabelBox& b, const Placed& pb) {
+    return pa.left < pb.left + b.width && pb.left < pa.left + a.width && pa.top < pb.top + b.height &&
+           pb.top < pa.top + a.height;
+}
+
+}  // namespace
+
+TEST_CASE("a lone label sits to the upper right of its point", "[labels]") {
+    const auto p = place_labels({{100, 50, 30, 12}});
+    REQUIRE(p.size() == 1);
+    CHECK(p[0].left > 100);
+    CHECK(p[0].top + 12 <= 50);
+}
+
+TEST_CASE("labels of points close together do not overlap, and the first keeps its spot", "[labels]") {
+    // four face numbers whose points are a few pixels apart: the picture of lesson 06 seen edge-on
+    const std::vector<LabelBox> boxes{{200, 100, 24, 14}, {203, 102, 24, 14}, {198, 99, 24, 14}, {201, 104, 24, 14}};
+    const auto p = place_labels(boxes);
+    REQUIRE(p.size() == boxes.size());
+    CHECK(p[0].left == place_labels({boxes[0]})[0].left);
+    CHECK(p[0].top == place_labels({boxes[0]})[0].top);
+    for (size_t i = 0; i < boxes.size(); ++i)
+        for (size_t j = i + 1; j < boxes.size(); ++j) {
+            INFO("labels " << i << " and " << j);
+            CHECK_FALSE(overlap(boxes[i], p[i], boxes[j], p[j]));
+        }
+}
+
+TEST_CASE("labels far apart each keep the usual spot", "[labels]") {
+    const auto p = place_labels({{10, 100, 20, 12}, {300, 100, 20, 12}});
+    CHECK(p[0].left == p[1].left - 290);
+    CHECK(p[0].top == p[1].top);
+}
