@@ -44,8 +44,8 @@ void keys(const SDL_Event& e, UiActions& a) {
     const bool shift = (e.key.keysym.mod & KMOD_SHIFT) != 0;
     switch (e.key.keysym.sym) {
         case SDLK_SPACE: a.toggle_play = true; break;
-        case SDLK_RIGHT: (shift ? a.micro_step : a.step) = true; break;
-        case SDLK_LEFT: (shift ? a.micro_step_back : a.step_back) = true; break;
+        case SDLK_RIGHT: (shift ? a.micro_step : a.step) = true, a.left = -1; break;
+        case SDLK_LEFT: (shift ? a.micro_step_back : a.step_back) = true, a.left = +1; break;
         case SDLK_HOME: a.to_start = true; break;
         case SDLK_END: a.to_end = true; break;
         case SDLK_F5: a.reload = true; break;
@@ -68,8 +68,8 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
         case SDLK_m: a.toggle_menu = true; break;
-        case SDLK_UP: a.up_down = -1; break;
-        case SDLK_DOWN: a.up_down = +1; break;
+        case SDLK_UP: a.up_down = -1, a.forward = +1; break;
+        case SDLK_DOWN: a.up_down = +1, a.forward = -1; break;
         case SDLK_RETURN:
         case SDLK_KP_ENTER: a.enter = true; break;
         case SDLK_EQUALS:
@@ -327,8 +327,11 @@ int run_app(const AppOptions& o) {
                 if (gif) gif->add_frame(frame_pixels(width, height, o.gif_half));
                 if (!gif || !lp.session() || lp.session()->at_end() || lp.session()->cursor() >= o.gif_to) running = false;
             }
-            // the screenshot waits (a few frames at most) until the panel column has settled
-            if (o.screenshot && frame >= std::uint64_t(o.frames) && (!lp.column.moved() || frame >= std::uint64_t(o.frames) + 8)) {
+            // the screenshot waits for every scripted key to be pressed, then (a few frames at most) for the panel
+            // column to settle
+            const bool keys_pressed = next_key >= o.keys.size();  // the last one this frame: drawn already
+            const std::uint64_t ready = std::max<std::uint64_t>(std::uint64_t(o.frames), o.keys.size());
+            if (o.screenshot && keys_pressed && frame >= ready && (!lp.column.moved() || frame >= ready + 8)) {
                 if (const Session* s = lp.session())
                     std::printf("hsrviz: at step %zu of %zu%s, %s%s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
                                 lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "",

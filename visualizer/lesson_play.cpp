@@ -98,7 +98,17 @@ void Lessonplay::save_edited(const algo::Scene& scene) {
     tell((ok ? "saved the edited scene to " : "could not write ") + file);
 }
 
-void Lessonplay::update(const UiActions& a, double dt, const AppOptions& o) {
+void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) {
+    // In a screen's drive mode the arrows move the eye (and the machine's whole run is shown); else they step.
+    UiActions a = keyed;
+    bool drives = false;
+    if (session()) with_family_screen([&](auto& s, auto& screen) { drives = screen.drives(s, second_view); });
+    if (drives && !show_menu) {
+        a.step = a.step_back = a.micro_step = a.micro_step_back = false;
+        a.to_end = a.to_end || a.forward || a.left;
+    } else {
+        a.forward = a.left = 0;
+    }
     if (a.reload || watch.changed(dt)) {
         load(o);
         tell(error.empty() ? "reloaded " + path : "could not reload " + path + " (its error is shown)");

@@ -7,7 +7,9 @@
 
 #include <imgui.h>
 
+#include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "state/bsp_painting.h"
 #include "panels/wrapped_text.h"
 
 namespace hsr::viz {
@@ -75,6 +77,34 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     }
     ImGui::Dummy(ImVec2(avail.x, row * float(deepest) + 2 * r + (sides_below ? f : 0) + 6));
     end_column_box(l, Box::state);
+}
+
+float strip_height(float view_h) { return std::clamp(0.2f * view_h, 80.0f, 260.0f); }
+
+void bsp_painted_canvas(const BspSession& s, float view_w, float view_h, bool driving) {
+    const BspView& v = s.view();
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    ImVec2 size, at;
+    algo::Viewport pixels{};
+    if (v.two_d) {  // a strip across the view's foot, the eye's field of view from left to right
+        size = ImVec2(view_w - 32, strip_height(view_h) - line - 12);
+        at = ImVec2(16, view_h - size.y - 12);
+        pixels = {384, std::max(8, int(384 * size.y / size.x))};
+    } else {  // the camera's picture, 4 : 3, at the lower left
+        size.x = std::clamp(0.34f * view_w, 160.0f, 420.0f), size.y = size.x * 0.75f;
+        at = ImVec2(16, view_h - size.y - 16);
+        pixels = {240, 180};
+    }
+    ImDrawList* d = begin_canvas("##bsp painted", 0, 0, view_w, view_h);
+    int total = 0;
+    for (const auto& p : v.polygons) total += !p.replaced;
+    std::string caption = "seen from the eye: painted so far, far to near · " + std::to_string(v.drawn) + " of " + std::to_string(total);
+    if (v.two_d) caption += driving ? " · drive: ↑ ↓ walk, ← → turn · V: step again" : " · V: drive the eye";
+    const ImVec2 text(at.x, at.y - line - 2), extent = ImGui::CalcTextSize(caption.c_str());
+    d->AddRectFilled(ImVec2(text.x - 4, text.y - 2), ImVec2(text.x + extent.x + 4, text.y + extent.y + 2), IM_COL32(20, 21, 25, 220));
+    d->AddText(text, driving ? IM_COL32(240, 227, 66, 255) : IM_COL32(220, 220, 220, 255), caption.c_str());
+    draw_image(d, bsp_painted_so_far(v, s.edited_scene(), pixels), at, size);
+    ImGui::End();
 }
 
 }  // namespace hsr::viz

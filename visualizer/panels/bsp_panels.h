@@ -8,4 +8,11 @@ namespace hsr::viz {
 
 void bsp_state_panel(const BspSession& s, const PanelLayout& layout);
 
+// Over the view's lower part: what DisplayBSP has painted so far, seen from the eye (a 3D scene: the camera's
+// image at the lower left; a 2D plan: the first-person strip across the view's foot). Returns the height it takes
+// from the view's foot, for the framing to keep the plan above it.
+void bsp_painted_canvas(const BspSession& s, float view_w, float view_h, bool driving);
+// The height of the first-person strip of a 2D plan in a view `view_h` points tall (its caption included).
+float strip_height(float view_h);
+
 }  // namespace hsr::viz

@@ -121,31 +121,18 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
                        t.passed ? "5: projections apart" : "5: projections overlap");
 }
 
-// The image painted so far: the drawn polygons in their order, each "over" what is there.
-void painting(const algo::Image& image, ImDrawList* d, ImVec2 o, float size) {
-    d->AddText(ImVec2(o.x, o.y - 20), text_colour, "painted so far (over)");
-    const float cell = size / float(std::max(image.width, 1));
-    for (int y = 0; y < image.height; ++y)  // runs of one colour along a row, one rectangle each
-        for (int x0 = 0; x0 < image.width;) {
-            const auto px = [&](int x) { return &image.rgb[3 * (std::size_t(y) * std::size_t(image.width) + std::size_t(x))]; };
-            int x1 = x0 + 1;
-            while (x1 < image.width && std::equal(px(x1), px(x1) + 3, px(x0))) ++x1;
-            d->AddRectFilled(ImVec2(o.x + float(x0) * cell, o.y + float(y) * cell), ImVec2(o.x + float(x1) * cell, o.y + float(y + 1) * cell),
-                             IM_COL32(px(x0)[0], px(x0)[1], px(x0)[2], 255));
-            x0 = x1;
-        }
-    d->AddRect(o, ImVec2(o.x + size, o.y + size), IM_COL32(110, 114, 122, 255));
-}
-
 }  // namespace
 
 void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo::Image& painted, float x, float y, float w,
                        float h, bool animate) {
     ImDrawList* d = begin_canvas("##depth sort canvas", x, y, w, h);
     display_list(s, chips, d, ImVec2(x + 16, y + 10), w - 32, animate);
-    const float size = std::clamp(std::min(w * 0.26f, h * 0.28f), 110.0f, 240.0f);
+    // the two insets share the view's lower part: as large as leaves the canvas in the middle its room
+    const float size = std::clamp(std::min(w * 0.34f, h * 0.40f), 110.0f, 420.0f);
     screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
-    painting(painted, d, ImVec2(x + w - size - 16, y + h - size - 34), size);
+    const ImVec2 at(x + w - size - 16, y + h - size - 34);
+    d->AddText(ImVec2(at.x, at.y - 20), text_colour, "painted so far (over)");
+    draw_image(d, painted, at, ImVec2(size, size));
     ImGui::End();
 }
 

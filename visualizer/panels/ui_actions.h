@@ -60,6 +60,7 @@ struct UiActions {
     bool toggle_menu = false;                                      // M: the lesson menu
     std::optional<std::string> open_lesson;                        // a lesson chosen in the menu (its path)
     int up_down = 0;                                               // ↑ −1, ↓ +1 (the menu's highlight)
+    int forward = 0, left = 0;  // ↑ +1 ↓ −1, ← +1 → −1: a screen's drive mode (2D BSP) takes them instead of the steps
     bool enter = false;                                            // Enter (opens the highlighted lesson)
 };
 

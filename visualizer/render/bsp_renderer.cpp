@@ -1,11 +1,14 @@
 #include "render/bsp_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/bsp_painting.h"
 
 namespace hsr::viz {
 namespace {
@@ -119,6 +122,15 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
     }
     out.bold.point(glm::vec3(v.eye), palette::eye);
     labels.push_back({glm::vec3(v.eye), "eye", palette::eye});
+    if (v.two_d) {  // what the first-person strip shows: the eye's field of view in the plan
+        const algo::Camera c = strip_camera(scene.camera, 1);
+        const Vec3 ahead = glm::normalize(c.target - c.eye);
+        const double half = glm::radians(std::clamp(scene.camera.fov_y, 10.0, 150.0)) / 2, reach = 0.3 * glm::length(hi - lo);
+        for (const double a : {-half, half}) {
+            const Vec3 ray(std::cos(a) * ahead.x - std::sin(a) * ahead.y, std::sin(a) * ahead.x + std::cos(a) * ahead.y, 0);
+            out.faint.line(glm::vec3(v.eye), glm::vec3(v.eye + reach * ray), palette::eye);
+        }
+    }
 }
 
 void bsp_view_bounds(const BspView& v, glm::vec3& centre, float& radius) {

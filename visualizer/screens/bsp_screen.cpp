@@ -49,6 +49,8 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
     const glm::dvec3 from = s.lesson().scene.camera.eye - glm::dvec3(centre);
     if (s.view().two_d) {
         camera.yaw = 0, camera.pitch = 0;  // face the plane z = 0
+        // the plan sits above the first-person strip: framed as if it reached a third further down
+        centre.y -= 0.3f * radius, radius *= 1.3f;
     } else if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
         const glm::dvec3 d = glm::normalize(from);
         camera.yaw = float(std::atan2(d.x, d.z));
@@ -59,7 +61,7 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
 
 void Screen<BspSession>::draw_scene(const BspSession& s, SceneFrame& f) const {
     draw_bsp_view(s.view(), s.edited_scene(), f.batches, f.labels);  // edits add segments: their colours
-    f.detail = "splitter: " + std::string(algo::to_string(s.stats().rule)) + " · ε = 1e-9 × the polygons' size" + (s.view().two_d ? " · 2D" : "");
+    f.detail = std::string(f.second_view && s.view().two_d ? "drive mode · " : "") + "splitter: " + std::string(algo::to_string(s.stats().rule)) + " · ε = 1e-9 × the polygons' size" + (s.view().two_d ? " · 2D" : "");
 }
 
 bool Screen<BspSession>::pointer(const BspSession& s, const Pointer& p, const ViewGeometry& g, UiActions& out) {
@@ -96,6 +98,7 @@ bool Screen<BspSession>::apply(BspSession& s, const UiActions& a) {
     if (a.undo) edited |= s.undo();
     if (a.redo) edited |= s.redo();
     if (a.move_eye) s.move_eye(*a.move_eye), edited = true;
+    if (a.forward || a.left) s.drive(a.forward, a.left), edited = true;
     return edited;
 }
 

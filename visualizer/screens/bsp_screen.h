@@ -15,7 +15,12 @@ class Screen<BspSession> : public ScreenDefaults {
 public:
     void frame(const BspSession& s, OrbitCamera& camera);
     void draw_scene(const BspSession& s, SceneFrame& f) const;
-    void draw_panels(const BspSession& s, PanelFrame& f) const { bsp_state_panel(s, f.layout); }
+    void draw_panels(const BspSession& s, PanelFrame& f) const {
+        bsp_painted_canvas(s, f.view_w, f.view_h, drives(s, f.second_view));
+        bsp_state_panel(s, f.layout);
+    }
+    // V in a 2D plan: drive mode, the arrows walk and turn the eye
+    bool drives(const BspSession& s, bool second_view) const { return second_view && s.view().two_d; }
     bool pointer(const BspSession& s, const Pointer& p, const ViewGeometry& g, UiActions& out);
     bool apply(BspSession& s, const UiActions& a);
     std::optional<algo::Scene> edited_scene(const BspSession& s) const { return s.edited_scene(); }

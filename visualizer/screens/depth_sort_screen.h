@@ -23,7 +23,7 @@ public:
     }
     void draw_panels(const DepthSortSession& s, PanelFrame& f) {
         if (painted_for_ != s.view().drawn) {  // repainted only when the drawn list changes (a step, a seek, a reload)
-            painted_ = painted_so_far(s.view(), {96, 96});
+            painted_ = painted_so_far(s.view(), {128, 128});
             painted_for_ = s.view().drawn;
         }
         depth_sort_canvas(s, chips_, painted_, 0, 0, f.view_w, f.view_h, f.animate);

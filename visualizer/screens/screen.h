@@ -91,6 +91,11 @@ struct ScreenDefaults {
         return g.to_window({p, 0.0});  // scripted gestures name points of the plane z = 0
     }
     template <class S>
+    bool drives(const S&, bool second_view) const {
+        (void)second_view;
+        return false;  // true: the arrow keys move the eye (UiActions::forward, left) instead of stepping
+    }
+    template <class S>
     bool two_d(const S&) const {
         return false;  // a 2D lesson (its random scenes are 2D too)
     }

@@ -1,6 +1,12 @@
 #include "state/bsp_session.h"
 
 #include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "state/bsp_painting.h"
 
 namespace hsr::viz {
 namespace {
@@ -8,7 +14,6 @@ namespace {
 using namespace hsr::algo;
 
 // The lecture's BuildBSP ("BSP Algorithm (2)"); Left is the front of P_i, Right its back.
-// The lecture's BuildBSP.
 const Pseudocode<BspEvent> build_lines = {
     {"BuildBSP(BSPnode, polygonDB);", {step<BuildStarted>(), step<BspBoundReached>()}},
     {"{", {}},
@@ -54,7 +59,8 @@ BspSession::BspSession(Lesson lesson, PlayerOptions options)
     : PlayerSession(lesson, machine(lesson), options),
       kind_(machine_of<algo::BspMachine>(lesson)),
       job_(bsp_job(lesson.scene, lesson.splitter)),
-      options_(options) {
+      options_(options),
+      heading_(lesson.scene.camera.target - lesson.scene.camera.eye) {
     measure();
     if (kind_ == algo::BspMachine::traversal)  // the traversal lesson starts with the tree built
         player().step_forward_until([](const BspEvent& e) { return std::holds_alternative<BuildFinished>(e); });
@@ -63,6 +69,18 @@ BspSession::BspSession(Lesson lesson, PlayerOptions options)
 void BspSession::move_eye(Vec3 eye) {
     if (view().two_d) eye.z = 0;
     job_.eye = eye;
+    rerun();
+}
+
+void BspSession::drive(int forward, int left) {
+    if (!view().two_d || (forward == 0 && left == 0)) return;
+    heading_.z = 0;
+    if (glm::length(heading_) < 1e-12) heading_ = {0, 1, 0};
+    const double turn = glm::radians(5.0 * left), c = std::cos(turn), s = std::sin(turn);
+    heading_ = glm::normalize(Vec3(c * heading_.x - s * heading_.y, s * heading_.x + c * heading_.y, 0));
+    Vec3 eye = job_.eye.at + double(forward) * plan_size(view()) / 50 * heading_;
+    eye.z = 0;
+    job_.eye.at = eye;
     rerun();
 }
 
@@ -142,6 +160,7 @@ bool BspSession::redo() {
 algo::Scene BspSession::scene_of_job() const {
     algo::Scene s = lesson().scene;
     s.camera.eye = job_.eye.at;
+    if (view().two_d) s.camera.target = job_.eye.at + heading_;  // the eye looks where it looked, wherever it is dragged
     // Inputs as the edits left them: moved, added (new ids, colours in turn from the palette) or deleted.
     static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
     std::vector<algo::SceneSegment> segments;

@@ -31,6 +31,9 @@ public:
     // Moves the eye and reruns the machine (the build is the same; the traversal follows the new eye), keeping
     // the cursor at the same step. In a 2D scene the eye stays in the plane z = 0.
     void move_eye(algo::Vec3 eye);
+    // Drive mode of a 2D plan: the eye walks `forward` steps (a fiftieth of the plan's size each) along its heading
+    // and turns `left` steps of 5° counter-clockwise, and the machine reruns at once.
+    void drive(int forward, int left);
     // Scene editing (2D lessons): move one end of an input segment, and undo / redo such edits. Each reruns the
     // machine from the edited input, keeping the cursor at the same step where that step still exists.
     void move_vertex(std::size_t input, std::size_t vertex, algo::Vec3 to);
@@ -54,6 +57,7 @@ private:
     PlayerOptions options_;
     EditHistory<algo::BspJob> history_;  // earlier and undone inputs
     std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // the vertex the last edit moved
+    algo::Vec3 heading_;  // where the eye looks in a 2D plan (in z = 0); the eye's drags keep it
     void rerun();
     void measure();                  // stats_ of the tree of job_, and edited_
     algo::Scene edited_;
