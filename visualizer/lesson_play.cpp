@@ -12,6 +12,7 @@ namespace hsr::viz {
 
 void Lessonplay::load(const AppOptions& o) {
     const std::size_t keep = session() ? session()->cursor() : 0;  // a reload stays at its step where it still exists
+    const bool fresh = !session();
     if (path.empty()) home = path = o.lesson_path, algorithm = o.algorithm;
     watch.watch({path});
     try {
@@ -27,7 +28,15 @@ void Lessonplay::load(const AppOptions& o) {
         error.clear();
         frame_bounds(camera, glm::vec3(0), 1);
         with_family_screen([&](auto& s, auto& screen) { screen.frame(s, camera); });
-        session()->seek(std::min(keep, session()->known()));
+        std::size_t start = keep;
+        if (fresh)  // a lesson opened anew starts where its opening chapter does, if it has one
+            if (const LessonScript* script = classroom.script())
+                for (std::size_t k = 0; k < lesson.chapters.size() && k < script->places().size(); ++k)
+                    if (lesson.chapters[k].opens && script->places()[k].starts) {
+                        start = *script->places()[k].starts;
+                        break;
+                    }
+        session()->seek(std::min(start, session()->known()));
     } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
         family.reset();
         error = e.what();

@@ -95,6 +95,16 @@ std::int64_t TomlReader::integer(const toml::table& t, std::string_view key, con
     fail(n, join(field, key), "expected an integer");
 }
 
+bool TomlReader::boolean(const toml::table& t, std::string_view key, const std::string& field, std::optional<bool> fallback) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (fallback) return *fallback;
+        fail(&t, join(field, key), "missing; expected true or false");
+    }
+    if (auto v = n->value_exact<bool>()) return *v;
+    fail(n, join(field, key), "expected true or false");
+}
+
 glm::dvec4 TomlReader::vector(const toml::node& n, const std::string& field, std::size_t min_size,
                               std::size_t max_size) const {
     const auto expected = "expected an array of " +

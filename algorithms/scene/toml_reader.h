@@ -42,6 +42,7 @@ public:
                   std::optional<double> fallback = std::nullopt) const;
     std::int64_t integer(const toml::table& t, std::string_view key, const std::string& field,
                          std::optional<std::int64_t> fallback = std::nullopt) const;
+    bool boolean(const toml::table& t, std::string_view key, const std::string& field, std::optional<bool> fallback = std::nullopt) const;
     // A vector of `size` finite numbers (3 or 4); a 3-vector gets w = 1.
     glm::dvec4 vector(const toml::node& n, const std::string& field, std::size_t min_size, std::size_t max_size) const;
     const toml::array* array(const toml::table& t, std::string_view key, const std::string& field,

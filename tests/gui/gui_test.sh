@@ -132,6 +132,11 @@ case "$case" in
     grep -q '"kind":"CellEntered"' 09_ray_casting_grid.jsonl
     grep -q '"kind":"EdgeCrossed"' 10_scan_line.jsonl
     grep -q '"kind":"PixelMerged"' 12_z_merge.jsonl ;;
+  opens)  # a lesson with an opening chapter opens there (lesson 09: at its first ray that hits); Home goes back
+    "$hsrviz" "$src/lessons/09_ray_casting_grid.toml" --screenshot o.png --frames 2 --keys Escape > o.txt
+    grep -q "at step 547 of" o.txt
+    "$hsrviz" "$src/lessons/09_ray_casting_grid.toml" --screenshot h.png --frames 2 --keys Home > h.txt
+    grep -q "at step 0 of" h.txt ;;
   questions)  # a question holds: neither steps, play, End nor the scrub bar pass the event that answers it
     lesson="$src/lessons/01_cohen_sutherland.toml"
     run() { "$hsrviz" "$lesson" --screenshot q.png --frames "$1" --keys "$2" | grep '^hsrviz: at step'; }

@@ -131,6 +131,18 @@ TEST_CASE("a chapter naming an event the machine never tells is a problem with f
     CHECK_THAT(bad_key.problems[0], Catch::Contains("typo.toml:7") && Catch::Contains("narrative"));
 }
 
+TEST_CASE("a chapter's pause and opens are true or false, and anything else is an error naming the field", "[lesson][errors]") {
+    const std::string head = "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" HSR_SOURCE_DIR "/assets/scenes/cs_segments.toml\"\n";
+    const Lesson ok = load_lesson_text(HSR_SOURCE_DIR "/lessons/b.toml", head + "[[chapters]]\nstep = 2\nopens = true\nnarration = \"x\"\n");
+    REQUIRE(ok.chapters.size() == 1);
+    CHECK(ok.chapters[0].opens);
+    CHECK_FALSE(ok.chapters[0].pause);
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/b.toml", head + "[[chapters]]\nstep = 2\nopens = \"yes\"\n"),
+                      Catch::Contains("b.toml:6") && Catch::Contains("chapters[0].opens") && Catch::Contains("true or false"));
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/b.toml", head + "[[chapters]]\nstep = 2\npause = 1\n"),
+                      Catch::Contains("chapters[0].pause"));
+}
+
 TEST_CASE("a file edited on disk is noticed once, and not before half a second", "[lesson][watch]") {
     const auto file = std::filesystem::temp_directory_path() / "hsrviz_watch_test.toml";
     std::ofstream(file) << "title = \"a\"\n";

@@ -52,12 +52,13 @@ std::vector<Chapter> read_chapters(const algo::TomlReader& r, const toml::table&
         const std::string f = algo::index("chapters", i);
         const toml::table* t = chapters->get(i)->as_table();
         if (!t) r.fail(chapters->get(i), f, "expected a table");
-        r.only_keys(*t, f, {"title", "when", "match", "step", "pause", "narration", "question"});
+        r.only_keys(*t, f, {"title", "when", "match", "step", "pause", "opens", "narration", "question"});
         Chapter c;
         c.line = int(t->source().begin.line);
         c.title = r.text(*t, "title", f, "");
         c.narration = read_texts(r, t->get("narration"), algo::join(f, "narration"), languages);
-        c.pause = t->get("pause") && t->get("pause")->value<bool>().value_or(false);
+        c.pause = r.boolean(*t, "pause", f, false);
+        c.opens = r.boolean(*t, "opens", f, false);
         if (t->contains("when")) c.when = read_pattern(r, *t, "when", f);
         if (t->contains("step")) {
             const auto s = r.integer(*t, "step", f);

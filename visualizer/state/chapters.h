@@ -7,6 +7,8 @@
 //   when = "OutcodeComputed"                 # an event kind; or step = 12
 //   match = { endpoint = "p2" }              # optional: fields the event must have (as its trace writes them)
 //   pause = true
+//   opens = true                             # optional: the lesson opens where this chapter starts (Home and
+//                                            # PgUp still go back to the steps before it)
 //   narration = { en = "…", de = "…" }
 //   [chapters.question]
 //   ask = { en = "Predict the outcode of p2.", de = "…" }
@@ -53,6 +55,7 @@ struct Chapter {
     std::optional<EventPattern> when;     // the first event like this starts the chapter …
     std::optional<std::size_t> step;      // … or this step
     bool pause = false;
+    bool opens = false;                   // the lesson opens here
     std::optional<Question> question;
     int line = 0;                         // in the lesson file
 };
