@@ -9,31 +9,70 @@
 
 namespace hsr::viz {
 
+namespace {
+
+// A depth code as a grey: the nearest code drawn in either part white, the farthest a dark grey; a pixel no
+// polygon covers (its code the cleared far code) the background's colour.
+struct DepthShade {
+    std::uint32_t lo = ~0u, hi = 0;
+    bool smaller_is_nearer = true;
+    ImU32 operator()(std::uint32_t code, bool covered) const {
+        if (!covered) return rgb({40, 43, 50});
+        float t = hi > lo ? float(code - lo) / float(hi - lo) : 0.0f;
+        if (smaller_is_nearer) t = 1 - t;
+        const auto g = std::uint8_t(70 + 185 * std::clamp(t, 0.0f, 1.0f));
+        return rgb({g, g, g});
+    }
+    std::uint32_t nearer(std::uint32_t a, std::uint32_t b) const { return smaller_is_nearer ? std::min(a, b) : std::max(a, b); }
+};
+
+}  // namespace
+
+// Six fat-pixel panels: A, B and the merge, each as its colours and as its depth buffer. Laid out 3 × 2 or 2 × 3,
+// whichever gives the larger pixels in this view.
 void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
     const ZMergeView& v = s.view();
     ImDrawList* d = begin_canvas("##zmerge canvas", x, y, w, h);
-    const float margin = 20;
-    const float cell = std::max(2.0f, std::min((w - 4 * margin) / (3.0f * float(v.viewport.width)), (h - 2 * margin - 40) / float(v.viewport.height)));
-    const float step = cell * float(v.viewport.width) + margin;
+    const float margin = 20, title = ImGui::GetTextLineHeightWithSpacing() + 4;
+    const float W = float(v.viewport.width), H = float(v.viewport.height);
+    const auto cell_for = [&](float columns, float rows) {
+        return std::min((w - (columns + 1) * margin) / (columns * W), (h - (rows + 1) * margin - rows * title) / (rows * H));
+    };
+    const bool wide = cell_for(3, 2) >= cell_for(2, 3);  // columns A, B, merged; rows colour, depth (or transposed)
+    const float cell = std::max(2.0f, wide ? cell_for(3, 2) : cell_for(2, 3));
     const auto colour = [&](std::int32_t k) { return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50}); };
     const auto at = [&](int px, int py) { return std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px); };
-    const char* titles[3] = {"part A (first half)", "part B (the rest)", "merged: the nearer of A and B"};
-    for (int panel = 0; panel < 3; ++panel) {
-        const ImVec2 o(x + margin + float(panel) * step, y + margin + 24);
-        d->AddText(ImVec2(o.x, y + margin), IM_COL32(220, 220, 220, 255), titles[panel]);
-        pixel_grid(d, o, cell, v.viewport, [&](int px, int py) {
-            const std::size_t k = at(px, py);
-            if (panel == 0) return colour(v.a->polygon[k]);
-            if (panel == 1) return colour(v.b->polygon[k] < 0 ? -1 : v.b->polygon[k] + std::int32_t(v.b_offset));
-            return v.merged[k] == -2 ? rgb({24, 26, 30}) : colour(v.merged[k]);
-        });
-        if (v.x >= 0) {
-            const bool chosen = panel == 2 || (panel == 0) == v.from_a;
-            d->AddRect(ImVec2(o.x + float(v.x) * cell - 2, o.y + float(v.y) * cell - 2),
-                       ImVec2(o.x + float(v.x + 1) * cell + 1, o.y + float(v.y + 1) * cell + 1),
-                       chosen ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255), 0, 0, 3);
+    DepthShade shade{.smaller_is_nearer = algo::smaller_is_nearer(s.lesson().depth_format)};
+    for (const auto* part : {v.a.get(), v.b.get()})
+        for (std::size_t k = 0; k < part->depth.size(); ++k)
+            if (part->polygon[k] >= 0) shade.lo = std::min(shade.lo, part->depth[k]), shade.hi = std::max(shade.hi, part->depth[k]);
+    const char* titles[3][2] = {{"part A: colours (first half)", "part A: depth buffer (white: near)"},
+                                {"part B: colours (the rest)", "part B: depth buffer"},
+                                {"merged: the nearer of A and B", "merged: the nearer depth"}};
+    for (int part = 0; part < 3; ++part)
+        for (int kind = 0; kind < 2; ++kind) {
+            const int column = wide ? part : kind, row = wide ? kind : part;
+            const ImVec2 o(x + margin + float(column) * (cell * W + margin), y + margin + title + float(row) * (cell * H + margin + title));
+            d->AddText(ImVec2(o.x, o.y - title), IM_COL32(220, 220, 220, 255), titles[part][kind]);
+            pixel_grid(d, o, cell, v.viewport, [&](int px, int py) {
+                const std::size_t k = at(px, py);
+                const bool unmerged = v.merged[k] == -2;
+                if (kind == 0) {
+                    if (part == 0) return colour(v.a->polygon[k]);
+                    if (part == 1) return colour(v.b->polygon[k] < 0 ? -1 : v.b->polygon[k] + std::int32_t(v.b_offset));
+                    return unmerged ? rgb({24, 26, 30}) : colour(v.merged[k]);
+                }
+                if (part == 0) return shade(v.a->depth[k], v.a->polygon[k] >= 0);
+                if (part == 1) return shade(v.b->depth[k], v.b->polygon[k] >= 0);
+                return unmerged ? rgb({24, 26, 30}) : shade(shade.nearer(v.a->depth[k], v.b->depth[k]), v.merged[k] >= 0);
+            });
+            if (v.x >= 0) {  // the pixel merged last: green where its value came from, red where it lost
+                const bool chosen = part == 2 || (part == 0) == v.from_a;
+                d->AddRect(ImVec2(o.x + float(v.x) * cell - 2, o.y + float(v.y) * cell - 2),
+                           ImVec2(o.x + float(v.x + 1) * cell + 1, o.y + float(v.y + 1) * cell + 1),
+                           chosen ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255), 0, 0, 3);
+            }
         }
-    }
     ImGui::End();
 }
 
