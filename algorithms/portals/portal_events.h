@@ -27,7 +27,7 @@ struct SightlineTested {
     std::vector<std::uint32_t> portals;  // the sequence, out of `source` first
     bool found;                          // some line passes through every portal of the sequence, each its way
     double line_space_area;              // of the set of such lines (0: none, or only a grazing one)
-    glm::dvec2 point{0}, direction{0};   // found: one such sightline in the plan, for drawing
+    glm::dvec2 point{0}, direction{0};   // found or blocked_in_3d: a line of the plan through them all, for drawing
     bool blocked_in_3d = false;          // the plan has sightlines, but they pass above or below an opening
     bool operator==(const SightlineTested&) const = default;
 };

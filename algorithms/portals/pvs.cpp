@@ -45,7 +45,7 @@ Steps<PvsEvent, bool> stab(Build* b, Sightlines lines, SolidSightlines solid, st
     {
         SightlineTested t{b->source, b->portals, found, lines.area()};
         t.blocked_in_3d = blocked_in_3d;
-        if (found) std::tie(t.point, t.direction) = lines.example();
+        if (found || blocked_in_3d) std::tie(t.point, t.direction) = lines.example();  // a plan line through them all
         const PvsEvent tested = std::move(t);
         co_yield tested;
     }

@@ -12,6 +12,7 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "state/elevation.h"
 
 namespace hsr::viz {
 namespace {
@@ -92,7 +93,9 @@ void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
         const auto& p = m.portals[k];
         d->AddLine(f(p.left), f(p.right), v.found ? found_colour : blocked_colour, 5);
     }
-    if (v.found && !v.sequence.empty()) long_line(d, f, v.sight_point, v.sight_direction, found_colour, 1.5f, true);
+    // a plan line through the run (orange-red when it passes in the plan only: in 3D above or below an opening)
+    if ((v.found || v.blocked_in_3d) && !v.sequence.empty())
+        long_line(d, f, v.sight_point, v.sight_direction, v.found ? found_colour : blocked_colour, 1.5f, true);
 }
 
 void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) {
@@ -151,13 +154,14 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
 
 namespace {
 
-// The canvas's window and background, and the fit of the plan into it; end_plan_canvas writes the caption.
-PlanFit begin_plan_canvas(const algo::CellModel& m, float x, float y, float w, float h) {
+// The canvas's window and background, and the fit of the plan into its top `fit_h` points (all of it when 0);
+// end_plan_canvas writes the caption.
+PlanFit begin_plan_canvas(const algo::CellModel& m, float x, float y, float w, float h, float fit_h = 0) {
     place(x, y, w, h);
     ImGui::Begin("##floor plan", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                               ImGuiWindowFlags_NoBringToFrontOnFocus);
     ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), background);
-    return fit(m, x, y, w, h);
+    return fit(m, x, y, w, fit_h > 0 ? fit_h : h);
 }
 
 void end_plan_canvas(float x, float y, const char* caption) {
@@ -167,9 +171,81 @@ void end_plan_canvas(float x, float y, const char* caption) {
 
 }  // namespace
 
+namespace {
+
+// Does any opening stop short of the floor or the ceiling? Then heights matter, and the PVS lesson draws the
+// elevation of the run of openings being tested under the plan.
+bool openings_have_heights(const algo::CellModel& m) {
+    for (const auto& p : m.portals)
+        for (const auto& v : p.opening)
+            if (v.y > m.tol.epsilon && v.y < m.height - m.tol.epsilon) return true;
+    return false;
+}
+
+// The elevation along the plan line of the last sightline test: walls at the openings' distances with their gaps,
+// and the steepest and shallowest lines through the gaps they pass (green through all of them; orange-red when they
+// pass above or below the next one).
+void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w, float h) {
+    const ImU32 text = IM_COL32(200, 203, 210, 255), dim = IM_COL32(150, 153, 160, 255);
+    d->AddText(ImVec2(x + 16, y), dim, "elevation above the plan's line through the openings: height against distance along the line");
+    const auto e = v.sequence.empty() || !(v.found || v.blocked_in_3d) ? std::nullopt
+                                                                       : elevation_of(v.world->model, v.sequence, v.sight_point, v.sight_direction);
+    if (!e) {
+        d->AddText(ImVec2(x + 16, y + ImGui::GetTextLineHeightWithSpacing()), dim, "(no run of openings with a line through it in the plan yet)");
+        return;
+    }
+    double s0 = e->gaps.front().s, s1 = s0;
+    for (const auto& g : e->gaps) s0 = std::min(s0, g.s), s1 = std::max(s1, g.s);
+    const double pad = std::max(0.35 * (s1 - s0), 0.5);
+    s0 -= pad, s1 += pad;
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float top = y + line + 10, bottom = y + h - line - 10, left = x + 40, right = x + w - 16 - ImGui::CalcTextSize("ceiling").x;
+    const double scale = std::min(double(right - left) / (s1 - s0), double(bottom - top) / e->height);
+    const float r = left + float((s1 - s0) * scale);
+    const auto at = [&](double s, double height) { return ImVec2(left + float((s - s0) * scale), bottom - float(height * scale)); };
+    d->AddLine(at(s0, 0), at(s1, 0), wall_colour, 2);  // floor and ceiling
+    d->AddLine(at(s0, e->height), at(s1, e->height), wall_colour, 2);
+    d->AddText(ImVec2(r + 4, at(s1, e->height).y - 8), dim, "ceiling");
+    d->AddText(ImVec2(r + 4, at(s1, 0).y - 8), dim, "floor");
+    for (std::size_t k = 0; k < e->gaps.size(); ++k) {
+        const ElevationGap& g = e->gaps[k];
+        const bool missed = k == e->reached;
+        d->AddLine(at(g.s, 0), at(g.s, g.bottom), wall_colour, 3);
+        d->AddLine(at(g.s, g.top), at(g.s, e->height), wall_colour, 3);
+        d->AddLine(at(g.s, g.bottom), at(g.s, g.top), missed ? blocked_colour : opening_colour, 5);
+        char label[48];
+        std::snprintf(label, sizeof label, "%.2g–%.2g", g.bottom, g.top);
+        d->AddText(ImVec2(at(g.s, g.top).x + 6, at(g.s, (g.bottom + g.top) / 2).y - 8), text, label);
+    }
+    const ImU32 lines = e->passes() ? found_colour : blocked_colour;
+    for (const glm::dvec2& l : e->extremes) {
+        // clipped to the rooms' height, so that a line leaving through the ceiling visibly does
+        double a = s0, b = s1;
+        const auto hgt = [&](double s) { return l.x + l.y * s; };
+        if (std::abs(l.y) > 1e-12)
+            for (const double limit : {0.0, e->height}) {
+                const double s = (limit - l.x) / l.y;
+                if (l.y > 0 ? limit == e->height : limit == 0.0) b = std::min(b, s);
+                else a = std::max(a, s);
+            }
+        if (a < b) d->AddLine(at(a, hgt(a)), at(b, hgt(b)), lines, 2);
+    }
+    const std::string verdict = e->passes() ? "a line passes through every opening: the last cell is reached"
+                                            : e->reached >= 2 ? "lines through the first " + std::to_string(e->reached) + " openings pass above or below the next"
+                                                              : "no line passes the first two openings";
+    d->AddText(ImVec2(x + 16, bottom + 4), lines, verdict.c_str());
+}
+
+}  // namespace
+
 void portal_plan_canvas(const PvsSession& s, float x, float y, float w, float h) {
-    const PlanFit f = begin_plan_canvas(s.view().world->model, x, y, w, h);
-    pvs_plan(s, ImGui::GetWindowDrawList(), f);
+    const auto& m = s.view().world->model;
+    const bool heights = openings_have_heights(m);
+    const float plan_h = heights ? h * 0.55f : h;  // with heights: the elevation under the plan
+    const PlanFit f = begin_plan_canvas(m, x, y, w, h, plan_h);
+    ImDrawList* d = ImGui::GetWindowDrawList();
+    pvs_plan(s, d, f);
+    if (heights) elevation_canvas(s.view(), d, x, y + plan_h, w, h - plan_h);
     end_plan_canvas(x, y, "floor plan · green: in the PVS of the yellow cell");
 }
 

@@ -64,7 +64,7 @@ void reduce(PvsView& v, const PvsEvent& event) {
                        v.matrix[std::size_t(e.cell) * v.world->pvs.cells + e.cell] = 1;
                    },
                    [&](const SightlineTested& e) {
-                       v.sequence = e.portals, v.found = e.found, ++v.tests;
+                       v.sequence = e.portals, v.found = e.found, v.blocked_in_3d = e.blocked_in_3d, ++v.tests;
                        v.sight_point = e.point, v.sight_direction = e.direction;
                    },
                    [&](const CellReached& e) {

@@ -26,8 +26,8 @@ struct PvsView {
     std::int32_t source = -1;              // whose stab tree is being built
     std::vector<algo::StabNode> tree;      // that tree so far
     std::vector<std::uint32_t> sequence;   // the portals last tested
-    bool found = false;
-    algo::Vec2 sight_point{0}, sight_direction{0};
+    bool found = false, blocked_in_3d = false;
+    algo::Vec2 sight_point{0}, sight_direction{0};  // a plan line through the sequence (found or blocked_in_3d)
     std::uint64_t tests = 0;
     bool done = false, bounded = false;
 };
