@@ -158,7 +158,8 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     else chapter_lesson_panel(s, lp.classroom, scene.detail, layout);
     pseudocode_panel(s, layout);
     question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
-    if (lp.show_report) report_panel(lp.report, layout);
+    if (lp.show_report)
+        report_panel(lp.report, lp.measuring.running() ? std::optional(lp.measuring.fraction()) : std::nullopt, layout, actions);
     if (lp.show_keys) keys_panel(layout);
     if (lp.show_presets)
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
@@ -261,7 +262,8 @@ int run_app(const AppOptions& o) {
             // instead of drawing the same frame again; it draws on for a moment after any input, for tweens to end
             // (and while a note shows, so that it fades and goes)
             const bool note_showing = lp.toasts.until() > seconds_now();
-            if (interactive(o) && !lp.playback.playing && !note_showing && SDL_GetTicks64() > awake_until) SDL_WaitEventTimeout(nullptr, 500);
+            if (interactive(o) && !lp.playback.playing && !note_showing && !lp.measuring.running() && SDL_GetTicks64() > awake_until)
+                SDL_WaitEventTimeout(nullptr, 500);
             SDL_Event e;
             while (SDL_PollEvent(&e)) {
                 awake_until = SDL_GetTicks64() + 1000;
@@ -327,9 +329,9 @@ int run_app(const AppOptions& o) {
                 if (gif) gif->add_frame(frame_pixels(width, height, o.gif_half));
                 if (!gif || !lp.session() || lp.session()->at_end() || lp.session()->cursor() >= o.gif_to) running = false;
             }
-            // the screenshot waits for every scripted key to be pressed, then (a few frames at most) for the panel
-            // column to settle
-            const bool keys_pressed = next_key >= o.keys.size();  // the last one this frame: drawn already
+            // the screenshot waits for every scripted key to be pressed and for R's measurement to be in, then (a few
+            // frames at most) for the panel column to settle
+            const bool keys_pressed = next_key >= o.keys.size() && !lp.measuring.running();  // the last one drawn already
             const std::uint64_t ready = std::max<std::uint64_t>(std::uint64_t(o.frames), o.keys.size());
             if (o.screenshot && keys_pressed && frame >= ready && (!lp.column.moved() || frame >= ready + 8)) {
                 if (const Session* s = lp.session())

@@ -1,7 +1,9 @@
 #include "lesson_play.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 
@@ -18,7 +20,8 @@ void Lessonplay::load(const AppOptions& o) {
     try {
         const Lesson lesson = load_lesson(path, algorithm);
         presets = extreme_presets(lesson.algorithm, data_dir() + "/assets/scenes/extreme");
-        if (session() && session()->lesson().algorithm.machine.index() != lesson.algorithm.machine.index()) report.clear();
+        if (session() && session()->lesson().algorithm.machine.index() != lesson.algorithm.machine.index())
+            cancel_report(), report.clear();
         std::error_code ec;
         if (lesson.scene.source != path && std::filesystem::is_regular_file(lesson.scene.source, ec))
             watch.watch({path, lesson.scene.source});
@@ -81,6 +84,7 @@ void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     home = path = lesson, algorithm.reset();
     family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
     classroom = Classroom{};
+    cancel_report();
     report.clear();
     show_presets = show_report = show_menu = false;
     playback.playing = false;
@@ -94,6 +98,32 @@ const CourseLesson* Lessonplay::next_in_course() const {
     for (std::size_t k = 0; k + 1 < course.size(); ++k)
         if (course[k].file == now) return &course[k + 1];
     return nullptr;
+}
+
+void Lessonplay::toggle_report(const std::string& scenes_dir) {
+    show_report = !show_report;
+    if (!show_report) return cancel_report();
+    if (!session() || !report.empty() || measuring.running()) return;
+    const algo::AlgorithmInfo playing = session()->lesson().algorithm;
+    measuring.start([playing, scenes_dir](analysis::Progress& p) { return family_report(playing, scenes_dir, &p); });
+}
+
+void Lessonplay::collect_report() {
+    std::optional<BackgroundMeasurement::Outcome> done = measuring.take();
+    if (!done) return;
+    if (!done->error.empty()) return tell(done->cancelled ? "measurement cancelled" : "could not measure: " + done->error);
+    report = std::move(done->rows);
+    tell("measured " + std::to_string(report.size()) + " rows of error against run time" +
+         (session() ? " for " + std::string(session()->lesson().algorithm.id) : std::string()));
+}
+
+void Lessonplay::cancel_report() {
+    if (!measuring.running()) return;
+    measuring.cancel();
+    while (measuring.running()) {  // a cancel is seen before the next timed run: a moment at most
+        collect_report();
+        if (measuring.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
 }
 
 void Lessonplay::tell(const std::string& text) {
@@ -138,14 +168,9 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         return;
     }
     if (a.toggle_presets) show_presets = !show_presets;
-    if (a.toggle_report) {
-        show_report = !show_report;
-        if (show_report && session() && report.empty()) {
-            report = family_report(session()->lesson().algorithm, data_dir() + "/assets/scenes");
-            tell("measured " + std::to_string(report.size()) + " rows of error against run time for " +
-                 std::string(session()->lesson().algorithm.id));
-        }
-    }
+    if (a.toggle_report) toggle_report(data_dir() + "/assets/scenes");
+    if (a.cancel_measurement) cancel_report();
+    collect_report();
     if (show_presets) {  // the presets take the number keys while they show: 1 … 9 a case, 0 a random scene
         UiActions pick = a;
         if (a.digit && *a.digit >= 1) pick.preset = *a.digit - 1;
@@ -176,7 +201,10 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
     if (a.scale_step) scale = std::clamp(scale * (a.scale_step > 0 ? 1.1f : 1 / 1.1f), 0.5f, 4.0f);
     if (a.scale_reset) scale = first_scale;
     if (a.export_all) export_pending = true;
-    if (a.close_overlays) show_keys = show_presets = show_report = show_menu = false;
+    if (a.close_overlays) {
+        if (show_report) cancel_report();
+        show_keys = show_presets = show_report = show_menu = false;
+    }
     if (a.toggle_3d) second_view = !second_view;
     // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
     // machine reruns, and the classroom follows the new events

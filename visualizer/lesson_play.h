@@ -17,6 +17,7 @@
 #include "state/toasts.h"
 #include "state/file_watch.h"
 #include "state/presets.h"
+#include "state/background_measurement.h"
 
 namespace hsr::viz {
 
@@ -46,6 +47,7 @@ struct Lessonplay {
     float scale = 1, first_scale = 1;     // of type and panels (Ctrl+= / Ctrl+−), and as the window started
     bool show_report = false;             // R: error against run time for the algorithm's family
     std::vector<analysis::Measurement> report;  // measured when R first opens it
+    BackgroundMeasurement measuring;      // R's measurement while it runs (a progress bar; closing R cancels it)
     std::vector<Preset> presets;          // of the lesson's algorithm
     std::uint32_t next_seed = 1;          // of the next random scene
 
@@ -70,6 +72,12 @@ struct Lessonplay {
     void save_edited(const algo::Scene& scene);
     // Says what happened: on the terminal ("hsrviz: …") and for a few seconds in the window.
     void tell(const std::string& text);
+    // R: opens the report (measuring it off this thread the first time) or closes it (cancelling a measurement).
+    void toggle_report(const std::string& scenes_dir);
+    // The report's rows, once a measurement started by R is in (said in the window).
+    void collect_report();
+    // Stops R's measurement, if one runs, saying so.
+    void cancel_report();
     // One frame's actions and dt seconds of playing.
     void update(const UiActions& a, double dt, const AppOptions& o);
 };

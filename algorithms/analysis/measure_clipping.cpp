@@ -85,6 +85,7 @@ Measurement row(std::string method, std::string setting, double ms, const ErrorT
 }  // namespace
 
 std::vector<Measurement> measure_clipping(const ReportOptions& o) {
+    plan_runs(o, 2 + 4 + 3);  // the segment machines, the segments' straight lines, Sutherland–Hodgman's three
     std::mt19937 rng(2026);
     const std::size_t segments = o.quick ? 2000 : 20000, polygons = o.quick ? 300 : 3000;
     std::vector<std::pair<Vec4, Vec4>> segs(segments);
@@ -111,7 +112,7 @@ std::vector<Measurement> measure_clipping(const ReportOptions& o) {
         }
     };
     const auto machine_row = [&](const char* name, auto machine) {
-        const double ms = median_ms(o.repeats, [&] { run_machine(machine); });
+        const double ms = median_ms(o, [&] { run_machine(machine); });
         rows.push_back(row(std::string(name) + " machine (double)", seg_setting, ms, segment_errors(segs, exact, got), "wrong accept/reject"));
     };
     machine_row("cohen_sutherland", [](auto s, auto op) { return algo::cohen_sutherland(s, op); });
@@ -119,7 +120,7 @@ std::vector<Measurement> measure_clipping(const ReportOptions& o) {
 
     // The straight-line formulas in double and in float (float input: what a float clipper is given).
     const auto plain_row = [&]<class T>(const char* name, auto clip, T) {
-        const double ms = median_ms(o.repeats, [&] {
+        const double ms = median_ms(o, [&] {
             for (std::size_t k = 0; k < segs.size(); ++k) {
                 const PlainSegment<T> c = clip(in_precision<T>(segs[k].first), in_precision<T>(segs[k].second));
                 got[k] = c ? SegmentAnswer{true, Vec4(c->first), Vec4(c->second)} : SegmentAnswer{};
@@ -151,13 +152,13 @@ std::vector<Measurement> measure_clipping(const ReportOptions& o) {
         }
         return t;
     };
-    double ms = median_ms(o.repeats, [&] {
+    double ms = median_ms(o, [&] {
         for (std::size_t k = 0; k < polys.size(); ++k)
             out[k] = algo::sutherland_hodgman(algo::ClipPolygon{algo::PrimitiveId(k), polys[k]}).run_to_end().vertices;
     });
     rows.push_back(row("sutherland_hodgman machine (double)", poly_setting, ms, polygon_tally(), "wrong empty/non-empty"));
     const auto plain_polygons = [&]<class T>(T) {
-        const double t = median_ms(o.repeats, [&] {
+        const double t = median_ms(o, [&] {
             for (std::size_t k = 0; k < polys.size(); ++k) {
                 std::vector<Vec4Of<T>> p;
                 for (const Vec4& v : polys[k]) p.push_back(in_precision<T>(v));

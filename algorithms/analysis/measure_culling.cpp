@@ -13,6 +13,7 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{96, 72} : algo::Viewport{320, 240};
     using S = algo::Stage;
     std::vector<Measurement> rows;
+    plan_runs(o, 3 * 3);  // scenes × (no culling, conservative stages, with detail)
     for (const auto& kind_and_scene : {std::pair{"city", algo::city_scene({.triangles = n})},
                                        std::pair{"field", algo::field_scene({.triangles = n})},
                                        std::pair{"spheres", algo::spheres_scene({.triangles = n})}}) {
@@ -20,12 +21,12 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
         const algo::Scene& scene = kind_and_scene.second;
         const std::string setting = std::string(kind) + ", " + std::to_string(scene.polygons.size()) + " triangles";
         algo::PipelineResult all;
-        const double all_ms = median_ms(o.repeats, [&] { all = algo::run_pipeline(scene, {.stages = {}, .viewport = vp}); });
+        const double all_ms = median_ms(o, [&] { all = algo::run_pipeline(scene, {.stages = {}, .viewport = vp}); });
         rows.push_back({.family = "culling", .method = "no culling (the reference)", .setting = setting, .median_ms = all_ms,
                         .error = 0, .error_name = "share of pixels lost", .wrong_name = "front-face pixels lost"});
         const auto run = [&](const char* name, std::vector<S> stages, bool conservative) {
             algo::PipelineResult r;
-            const double ms = median_ms(o.repeats, [&] { r = algo::run_pipeline(scene, {.stages = stages, .viewport = vp}); });
+            const double ms = median_ms(o, [&] { r = algo::run_pipeline(scene, {.stages = stages, .viewport = vp}); });
             const std::uint64_t lost = lost_front_pixels(scene, r.frame, all.frame);
             std::string extra = "left out:";
             for (const algo::StageReport& s : r.stages)

@@ -19,11 +19,12 @@ std::vector<Measurement> measure_portals(const ReportOptions& o) {
     scenes.emplace_back("maze " + std::to_string(side) + "×" + std::to_string(side), algo::cell_maze({.rows = side, .cols = side}));
 
     std::vector<Measurement> rows;
+    plan_runs(o, int(scenes.size()) * 3);  // the PVS, then portal_render with exact and with bounding-box frusta
     for (const auto& [name, scene] : scenes) {
         const algo::CellModel model = algo::cell_model(scene);
         const algo::CellBsp bsp = algo::build_cell_bsp(model);
         algo::Pvs pvs;
-        const double pvs_ms = median_ms(o.repeats, [&] { pvs = algo::build_pvs(&model).run_to_end(); });
+        const double pvs_ms = median_ms(o, [&] { pvs = algo::build_pvs(&model).run_to_end(); });
         const PvsSampling sampled = sample_pvs(model, pvs, o.quick ? 200 : 1000, 7);
         rows.push_back({.family = "portals", .method = "PVS (stab trees)", .setting = name, .median_ms = pvs_ms,
                         .error = sampled.pairs ? double(sampled.slack) / double(sampled.pairs) : 0,
@@ -33,7 +34,7 @@ std::vector<Measurement> measure_portals(const ReportOptions& o) {
         const algo::Viewport vp = o.quick ? algo::Viewport{48, 36} : algo::Viewport{128, 96};
         for (const bool box : {false, true}) {
             algo::PortalRenderResult r;
-            const double ms = median_ms(o.repeats, [&] {
+            const double ms = median_ms(o, [&] {
                 r = algo::portal_render(&model, &bsp, &pvs, model.camera, {.bounding_box_frusta = box}).run_to_end();
             });
             const Coverage c = portal_coverage(model, r, vp);

@@ -1,5 +1,6 @@
 // Hidden surfaces against the double-precision ray cast: the z-buffer per depth format and near/far ratio, the BSP
 // per splitter rule, and depth sort. The error is the share of pixels whose visible primitive differs.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -39,6 +40,7 @@ std::string ratio_text(double r) {
 std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
     std::vector<Measurement> rows;
+    plan_runs(o, 4 * 5);  // near planes × depth formats
     // The same triangles (depths 6 to 14 from the eye) with the near plane pulled towards the eye: the ratio
     // far/near grows, and the fixed-point formats lose their resolution at the back.
     for (const double near : {1.0, 1e-2, 1e-4, 1e-6}) {
@@ -48,7 +50,7 @@ std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
         using F = algo::DepthFormat;
         for (const F format : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed}) {
             algo::FrameDepth f{algo::Image(0, 0), {}, {}};
-            const double ms = median_ms(o.repeats, [&] {
+            const double ms = median_ms(o, [&] {
                 f = algo::zbuffer_fill(screen, algo::zbuffer_options(s, vp, format, algo::EventDetail::polygon)).run_to_end();
             });
             rows.push_back({.family = "zbuffer", .method = std::string(algo::format_id(format)),
@@ -65,6 +67,7 @@ std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
 std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
     std::vector<Measurement> rows;
+    plan_runs(o, 4 + 1 + 1);  // the BSP's splitter rules, depth sort, the ray cast
     const algo::Scene s = algo::random_triangles({.count = o.quick ? 60u : 120u, .seed = 5, .size = 2.5});
     const algo::Image ref = reference(s, vp);
     const std::string setting = std::to_string(s.polygons.size()) + " random triangles, some piercing";
@@ -74,35 +77,54 @@ std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
         const R rule = rule_and_name.first;  // (a lambda may not capture a structured binding in clang 14)
         const char* name = rule_and_name.second;
         BspPainting p{};
-        const double ms = median_ms(o.repeats, [&] { p = paint_bsp(s, rule, vp); });
+        const double ms = median_ms(o, [&] { p = paint_bsp(s, rule, vp); });
         rows.push_back({.family = "hsr", .method = std::string("bsp ") + name, .setting = setting, .median_ms = ms,
                         .error = share_differing(p.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
                         .wrong = count_differing(p.image.ids, ref.ids), .wrong_name = "pixels differing",
                         .extra = std::to_string(p.tree.splits) + " splits, " + std::to_string(p.tree.nodes.size()) + " nodes"});
     }
     DepthSortPainting d{};
-    const double ms = median_ms(o.repeats, [&] { d = paint_depth_sort(s, vp); });
+    const double ms = median_ms(o, [&] { d = paint_depth_sort(s, vp); });
     rows.push_back({.family = "hsr", .method = "depth sort", .setting = setting, .median_ms = ms,
                     .error = share_differing(d.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
                     .wrong = count_differing(d.image.ids, ref.ids), .wrong_name = "pixels differing",
                     .extra = std::to_string(d.sorted.splits) + " splits, " + std::to_string(d.sorted.moves) + " moves" +
                              (d.sorted.bounded ? ", stopped at a bound" : "")});
     algo::Image r{0, 0};
-    const double ray_ms = median_ms(o.repeats, [&] { r = reference(s, vp); });
+    const double ray_ms = median_ms(o, [&] { r = reference(s, vp); });
     rows.push_back({.family = "hsr", .method = "ray cast (grid, the reference)", .setting = setting, .median_ms = ray_ms,
                     .error = 0, .error_name = "share of pixels differing from the ray cast", .wrong_name = "pixels differing"});
     return rows;
 }
 
-double median_ms(int repeats, const std::function<void()>& f) {
+namespace {
+
+double timed_median(int repeats, const std::function<void()>& f, Progress* progress) {
     std::vector<double> times;
     for (int k = 0; k < std::max(1, repeats); ++k) {
+        if (progress && progress->cancel) throw MeasurementCancelled();
         const auto start = std::chrono::steady_clock::now();
         f();
         times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (progress) ++progress->done;
     }
     std::sort(times.begin(), times.end());
     return times[times.size() / 2];
+}
+
+}  // namespace
+
+double median_ms(int repeats, const std::function<void()>& f) { return timed_median(repeats, f, nullptr); }
+
+double median_ms(const ReportOptions& o, const std::function<void()>& f) { return timed_median(o.repeats, f, o.progress); }
+
+void plan_runs(const ReportOptions& o, int timed_calls) {
+    if (o.progress) o.progress->planned += timed_calls * std::max(1, o.repeats);
+}
+
+float Progress::fraction() const {
+    const int p = planned, d = done;
+    return p <= 0 ? 0.f : std::clamp(float(d) / float(p), 0.f, 1.f);
 }
 
 }  // namespace hsr::analysis

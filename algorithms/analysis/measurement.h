@@ -4,9 +4,11 @@
 // PVS, the unculled z-buffer for culling), never against the algorithm itself.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,26 @@ struct Measurement {
     std::string extra;        // what else the row says: splits, slack, primitives left out per stage
 };
 
+// How far a measurement has come, and a request to stop it: the window runs R's measurement on a thread of its own
+// and draws a progress bar with a Cancel button. Counted in timed runs: a family plans its runs when it starts
+// (plan_runs), each repeat inside median_ms is one done, and a cancel is seen before the next repeat starts.
+struct Progress {
+    std::atomic<int> planned{0};
+    std::atomic<int> done{0};
+    std::atomic<bool> cancel{false};
+    float fraction() const;  // done / planned, in [0, 1]
+};
+
+// Thrown out of a measurement whose Progress was cancelled.
+struct MeasurementCancelled : std::runtime_error {
+    MeasurementCancelled() : std::runtime_error("the measurement was cancelled") {}
+};
+
 struct ReportOptions {
     bool quick = false;  // small scenes and few repeats (the test suite's setting)
     int repeats = 5;
     std::string scenes_dir;  // assets/scenes: the shipped scenes some families run on
+    Progress* progress = nullptr;  // told of each run, and asked whether to go on (none: the command line's report)
 };
 
 std::vector<Measurement> measure_clipping(const ReportOptions& o);
@@ -40,5 +58,9 @@ std::vector<Measurement> measure_all(const ReportOptions& o);
 
 // The median wall time of `repeats` calls of f, in milliseconds.
 double median_ms(int repeats, const std::function<void()>& f);
+// The same with the report's repeats, each run told to its Progress (MeasurementCancelled when it was cancelled).
+double median_ms(const ReportOptions& o, const std::function<void()>& f);
+// A family's measurement makes `timed_calls` calls of median_ms(o, …): its Progress plans that many times the repeats.
+void plan_runs(const ReportOptions& o, int timed_calls);
 
 }  // namespace hsr::analysis

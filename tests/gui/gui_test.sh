@@ -286,7 +286,12 @@ case "$case" in
     # R: error against run time for the lesson's family, measured in the window
     "$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot report.png --frames 3 --keys R > report.txt
     grep -q "measured 12 rows of error against run time for portal_pvs" report.txt
-    "$png_check" report.png 1280 800 ;;
+    "$png_check" report.png 1280 800
+    # it is measured off the window's thread: Esc (or R, or Cancel) stops it, says so, and the window goes on
+    "$hsrviz" "$src/lessons/22_culling_frustum.toml" --screenshot cancelled.png --frames 3 --keys "R,Escape,Right" > cancelled.txt
+    grep -q "measurement cancelled" cancelled.txt
+    ! grep -q "measured .* rows" cancelled.txt
+    grep -q "at step 1 of" cancelled.txt ;;
   settings)  # the panel column's width ([ and ]) and the language are remembered between runs; a broken file is named
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot wide.png --frames 5 --keys "],],L"
     grep -q '^side = 580$' window.toml

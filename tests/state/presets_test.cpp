@@ -78,8 +78,21 @@ TEST_CASE("the window's report measures the family of the algorithm being played
                                      std::pair{"depth_sort", "hsr"}, std::pair{"portal_render", "portals"},
                                      std::pair{"backface_view_vector", "culling"}}) {
         INFO(id);
-        const auto rows = family_report(*hsr::algo::find_algorithm(id), scenes);
+        hsr::analysis::Progress progress;
+        const auto rows = family_report(*hsr::algo::find_algorithm(id), scenes, &progress);
         REQUIRE_FALSE(rows.empty());
         for (const auto& r : rows) CHECK(r.family == family);
+        // the progress bar ends full, not short of it nor past it: each family plans the timed runs it makes
+        CHECK(progress.planned > 0);
+        CHECK(progress.done == progress.planned);
+        CHECK(progress.fraction() == 1.f);
     }
+}
+
+TEST_CASE("a cancelled report stops before its next timed run", "[state][report]") {
+    hsr::analysis::Progress progress;
+    progress.cancel = true;
+    CHECK_THROWS_AS(family_report(*hsr::algo::find_algorithm("depth_sort"), data_dir() + "/assets/scenes", &progress),
+                    hsr::analysis::MeasurementCancelled);
+    CHECK(progress.done == 0);
 }

@@ -54,6 +54,7 @@ struct UiActions {
     int scale_step = 0;                                            // Ctrl+= +1, Ctrl+− −1; Ctrl+0: back to the start
     bool scale_reset = false;
     bool toggle_report = false;                                    // R
+    bool cancel_measurement = false;                               // the report's Cancel button
     std::optional<int> preset;                                     // an extreme case chosen (its index)
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
     int next_lesson = 0;                                           // N: +1, Shift+N: −1 (the course's order)

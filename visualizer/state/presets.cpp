@@ -85,8 +85,9 @@ std::optional<std::string> random_scene_toml(const algo::AlgorithmInfo& algorith
     return algo::scene_toml(*s);
 }
 
-std::vector<analysis::Measurement> family_report(const algo::AlgorithmInfo& algorithm, const std::string& scenes_dir) {
-    return facts_of(algorithm).measure({.quick = true, .repeats = 3, .scenes_dir = scenes_dir});
+std::vector<analysis::Measurement> family_report(const algo::AlgorithmInfo& algorithm, const std::string& scenes_dir,
+                                                 analysis::Progress* progress) {
+    return facts_of(algorithm).measure({.quick = true, .repeats = 3, .scenes_dir = scenes_dir, .progress = progress});
 }
 
 }  // namespace hsr::viz

@@ -31,6 +31,8 @@ std::optional<std::string> random_scene_toml(const algo::AlgorithmInfo& algorith
 
 // The report for the algorithm being played (R in the window): its family's rows of `hsrviz report`, measured now
 // with the quick settings (small scenes, three repeats), so a student sees error against run time beside the steps.
-std::vector<analysis::Measurement> family_report(const algo::AlgorithmInfo& algorithm, const std::string& scenes_dir);
+// Each run is told to `progress` (the window's progress bar), which can cancel it (analysis::MeasurementCancelled).
+std::vector<analysis::Measurement> family_report(const algo::AlgorithmInfo& algorithm, const std::string& scenes_dir,
+                                                 analysis::Progress* progress = nullptr);
 
 }  // namespace hsr::viz
