@@ -1,6 +1,8 @@
 #include "window.h"
 
 #include <imgui.h>
+
+#include "panels/panel_style.h"
 #include <imgui_impl_opengl3.h>
 #include <imgui_impl_sdl.h>
 
@@ -108,6 +110,7 @@ void apply_scale(float scale) {
     style.ScaleAllSizes(scale);
     io.Fonts->Clear();
     load_fonts(io, scale);
+    type_scale() = scale;
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
 }

@@ -56,14 +56,14 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
             d->AddLine(at(node.parent), at(int(n)),
                        ImGui::GetColorU32(node.side_of_parent == algo::Side::front ? ImVec4(0.35f, 0.75f, 0.55f, 1)
                                                                                     : ImVec4(0.85f, 0.5f, 0.3f, 1)),
-                       2);
+                       canvas_px(2));
     }
     for (std::size_t n = 0; n < v.nodes.size(); ++n) {
         const BspNodeView& node = v.nodes[n];
         const bool current = int(n) == v.current_node;
         const ImVec2 c = at(int(n));
         d->AddCircleFilled(c, r, ImGui::GetColorU32(current ? highlight_bg : bit_clear));
-        d->AddCircle(c, r, ImGui::GetColorU32(current ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text), 0, 2);
+        d->AddCircle(c, r, ImGui::GetColorU32(current ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text), 0, canvas_px(2));
         const std::string name = node.splitter >= 0 ? v.polygons[std::size_t(node.splitter)].label : "?";
         const ImVec2 name_size = ImGui::CalcTextSize(name.c_str());
         d->AddText(ImVec2(c.x - name_size.x / 2, c.y - name_size.y / 2), IM_COL32_WHITE, name.c_str());

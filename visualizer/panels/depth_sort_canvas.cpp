@@ -54,9 +54,9 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
         const ImVec2 a(x, y + lift), b(x + chip, y + lift + 28);
         d->AddRectFilled(a, b, rgb(p.color, drawn ? 0.35f + 0.65f * float(p.opacity) : 0.3f), 3);
         ImU32 edge = IM_COL32(90, 94, 102, 255);
-        float thickness = 1;
-        if (int(i) == v.r) edge = r_colour, thickness = 3;
-        if (int(i) == v.q) edge = q_colour, thickness = 3;
+        float thickness = canvas_px(1);
+        if (int(i) == v.r) edge = r_colour, thickness = canvas_px(3);
+        if (int(i) == v.q) edge = q_colour, thickness = canvas_px(3);
         d->AddRect(a, b, edge, 3, 0, thickness);
         if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_colour, ("#" + std::to_string(i)).c_str());
         const char* note = int(i) == v.moved ? "moved" : int(i) == v.cycle ? "cycle" : int(i) == v.r ? "R" : int(i) == v.q ? "Q" : nullptr;
@@ -93,10 +93,10 @@ void extent_bar(ImDrawList* d, const Screen& screen, const SortPolygon& p, bool 
     for (const auto& v : p.vertices) lo = std::min(lo, along_x ? v.x : v.y), hi = std::max(hi, along_x ? v.x : v.y);
     if (along_x) {
         const float y = screen.o.y + screen.size + offset;
-        d->AddLine(ImVec2(screen(lo, 0).x, y), ImVec2(screen(hi, 0).x, y), colour, 4);
+        d->AddLine(ImVec2(screen(lo, 0).x, y), ImVec2(screen(hi, 0).x, y), colour, canvas_px(4));
     } else {
         const float x = screen.o.x - offset;
-        d->AddLine(ImVec2(x, screen(0, lo).y), ImVec2(x, screen(0, hi).y), colour, 4);
+        d->AddLine(ImVec2(x, screen(0, lo).y), ImVec2(x, screen(0, hi).y), colour, canvas_px(4));
     }
 }
 

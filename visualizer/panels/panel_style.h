@@ -17,6 +17,15 @@ inline const ImVec4 bit_set(0.84f, 0.37f, 0.0f, 1.0f);  // vermillion: outside t
 inline const ImVec4 bit_clear(0.18f, 0.20f, 0.24f, 1.0f);
 inline const ImVec4 dim_text(0.62f, 0.64f, 0.68f, 1.0f);
 
+// The type's scale (--projector, --scale, Ctrl+=; set where the fonts are built). The canvases draw their lines and
+// marks canvas_px(n) wide, n pixels at scale 1, so that they grow with the type as the views' lines do and the back
+// row sees a wall as well as it reads its label.
+inline float& type_scale() {
+    static float scale = 1;
+    return scale;
+}
+inline float canvas_px(float n) { return n * type_scale(); }
+
 // The second font loaded by the app, if any: monospace, for pseudocode.
 inline ImFont* monospace_font() {
     ImFontAtlas* atlas = ImGui::GetIO().Fonts;

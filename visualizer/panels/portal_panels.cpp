@@ -59,11 +59,11 @@ void draw_plan(ImDrawList* d, const PlanFit& f, const algo::CellModel& m, Fill f
         d->AddConvexPolyFilled(pts.data(), int(pts.size()), fill(c));
     }
     for (const auto& c : m.cells)
-        for (std::size_t i = 0; i < c.outline.size(); ++i) d->AddLine(f(c.outline[i]), f(c.outline[(i + 1) % c.outline.size()]), wall_colour, 2);
+        for (std::size_t i = 0; i < c.outline.size(); ++i) d->AddLine(f(c.outline[i]), f(c.outline[(i + 1) % c.outline.size()]), wall_colour, canvas_px(2));
     for (std::size_t k = 0; k < m.portals.size(); k += 2) {  // each opening once
         const auto& p = m.portals[k];
-        d->AddLine(f(p.left), f(p.right), background, 4);
-        d->AddLine(f(p.left), f(p.right), opening_colour, 1.5f);
+        d->AddLine(f(p.left), f(p.right), background, canvas_px(4));
+        d->AddLine(f(p.left), f(p.right), opening_colour, canvas_px(1.5f));
     }
     if (m.cells.size() <= 64)
         for (const auto& c : m.cells) {
@@ -91,11 +91,11 @@ void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
     });
     for (std::uint32_t k : v.sequence) {
         const auto& p = m.portals[k];
-        d->AddLine(f(p.left), f(p.right), v.found ? found_colour : blocked_colour, 5);
+        d->AddLine(f(p.left), f(p.right), v.found ? found_colour : blocked_colour, canvas_px(5));
     }
     // a plan line through the run (orange-red when it passes in the plan only: in 3D above or below an opening)
     if ((v.found || v.blocked_in_3d) && !v.sequence.empty())
-        long_line(d, f, v.sight_point, v.sight_direction, v.found ? found_colour : blocked_colour, 1.5f, true);
+        long_line(d, f, v.sight_point, v.sight_direction, v.found ? found_colour : blocked_colour, canvas_px(1.5f), true);
 }
 
 void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) {
@@ -122,14 +122,14 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
             if (t > hi) hi = t, b = pq;
         }
         const bool drawn = v.fate[k] == PolygonFate::drawn;
-        d->AddLine(f(a), f(b), drawn ? rgb(p.color) : IM_COL32(90, 60, 50, 255), drawn ? 4.0f : 2.0f);
+        d->AddLine(f(a), f(b), drawn ? rgb(p.color) : IM_COL32(90, 60, 50, 255), canvas_px(drawn ? 4.0f : 2.0f));
     }
     // the frusta: the eye's, and each narrowing on the way to the cell being visited
     const Vec2 eye = algo::plan_point(v.camera.eye), look = glm::normalize(algo::plan_point(v.camera.target) - eye);
     const double half = std::atan(std::tan(v.camera.fov_y * M_PI / 360) * v.camera.aspect);
     for (double side : {-half, half})
         long_line(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
-                  IM_COL32(240, 228, 66, 120), 1, false);
+                  IM_COL32(240, 228, 66, 120), canvas_px(1), false);
     const ImU32 wedge_colours[] = {IM_COL32(0, 200, 140, 200), IM_COL32(86, 180, 233, 200), IM_COL32(204, 121, 167, 200)};
     for (std::size_t i = 0; i < v.passed.size(); ++i) {
         double a0 = 1e300, a1 = -1e300;
@@ -140,14 +140,14 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
             if (a < a0) a0 = a, d0 = dir;
             if (a > a1) a1 = a, d1 = dir;
         }
-        for (const Vec2& dir : {d0, d1}) long_line(d, f, eye, dir, wedge_colours[i % 3], 2, false);
+        for (const Vec2& dir : {d0, d1}) long_line(d, f, eye, dir, wedge_colours[i % 3], canvas_px(2), false);
     }
     if (v.portal >= 0) {
         const auto& p = m.portals[std::size_t(v.portal)];
-        d->AddLine(f(p.left), f(p.right), v.verdict == algo::PortalVerdict::passed ? found_colour : blocked_colour, 5);
+        d->AddLine(f(p.left), f(p.right), v.verdict == algo::PortalVerdict::passed ? found_colour : blocked_colour, canvas_px(5));
     }
-    d->AddCircleFilled(f(eye), 7, eye_colour);
-    d->AddLine(f(eye), f(eye + look * (24 / f.scale)), eye_colour, 3);
+    d->AddCircleFilled(f(eye), canvas_px(7), eye_colour);
+    d->AddLine(f(eye), f(eye + look * (24 / f.scale)), eye_colour, canvas_px(3));
 }
 
 }  // namespace
@@ -175,11 +175,17 @@ namespace {
 
 // Does any opening stop short of the floor or the ceiling? Then heights matter, and the PVS lesson draws the
 // elevation of the run of openings being tested under the plan.
+// Whether heights matter: the openings share no band of heights (low windows and high ones), so a level line may not
+// pass where the plan's lines do. Doors that all reach from the floor to a height share one: the plan says it all,
+// and the plan keeps the whole canvas.
 bool openings_have_heights(const algo::CellModel& m) {
-    for (const auto& p : m.portals)
-        for (const auto& v : p.opening)
-            if (v.y > m.tol.epsilon && v.y < m.height - m.tol.epsilon) return true;
-    return false;
+    double highest_bottom = -1e300, lowest_top = 1e300;
+    for (const auto& p : m.portals) {
+        double bottom = 1e300, top = -1e300;
+        for (const auto& v : p.opening) bottom = std::min(bottom, v.y), top = std::max(top, v.y);
+        highest_bottom = std::max(highest_bottom, bottom), lowest_top = std::min(lowest_top, top);
+    }
+    return !m.portals.empty() && highest_bottom >= lowest_top - m.tol.epsilon;
 }
 
 // The elevation along the plan line of the last sightline test: walls at the openings' distances with their gaps,
@@ -203,16 +209,16 @@ void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w
     const double scale = std::min(double(right - left) / (s1 - s0), double(bottom - top) / e->height);
     const float r = left + float((s1 - s0) * scale);
     const auto at = [&](double s, double height) { return ImVec2(left + float((s - s0) * scale), bottom - float(height * scale)); };
-    d->AddLine(at(s0, 0), at(s1, 0), wall_colour, 2);  // floor and ceiling
-    d->AddLine(at(s0, e->height), at(s1, e->height), wall_colour, 2);
+    d->AddLine(at(s0, 0), at(s1, 0), wall_colour, canvas_px(2));  // floor and ceiling
+    d->AddLine(at(s0, e->height), at(s1, e->height), wall_colour, canvas_px(2));
     d->AddText(ImVec2(r + 4, at(s1, e->height).y - 8), dim, "ceiling");
     d->AddText(ImVec2(r + 4, at(s1, 0).y - 8), dim, "floor");
     for (std::size_t k = 0; k < e->gaps.size(); ++k) {
         const ElevationGap& g = e->gaps[k];
         const bool missed = k == e->reached;
-        d->AddLine(at(g.s, 0), at(g.s, g.bottom), wall_colour, 3);
-        d->AddLine(at(g.s, g.top), at(g.s, e->height), wall_colour, 3);
-        d->AddLine(at(g.s, g.bottom), at(g.s, g.top), missed ? blocked_colour : opening_colour, 5);
+        d->AddLine(at(g.s, 0), at(g.s, g.bottom), wall_colour, canvas_px(3));
+        d->AddLine(at(g.s, g.top), at(g.s, e->height), wall_colour, canvas_px(3));
+        d->AddLine(at(g.s, g.bottom), at(g.s, g.top), missed ? blocked_colour : opening_colour, canvas_px(5));
         char label[48];
         std::snprintf(label, sizeof label, "%.2g–%.2g", g.bottom, g.top);
         d->AddText(ImVec2(at(g.s, g.top).x + 6, at(g.s, (g.bottom + g.top) / 2).y - 8), text, label);
@@ -228,7 +234,7 @@ void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w
                 if (l.y > 0 ? limit == e->height : limit == 0.0) b = std::min(b, s);
                 else a = std::max(a, s);
             }
-        if (a < b) d->AddLine(at(a, hgt(a)), at(b, hgt(b)), lines, 2);
+        if (a < b) d->AddLine(at(a, hgt(a)), at(b, hgt(b)), lines, canvas_px(2));
     }
     const std::string verdict = e->passes() ? "a line passes through every opening: the last cell is reached"
                                             : e->reached >= 2 ? "lines through the first " + std::to_string(e->reached) + " openings pass above or below the next"

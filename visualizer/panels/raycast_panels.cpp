@@ -34,7 +34,7 @@ void raycast_image(const RayCastSession& s, float x, float y, float w, float h) 
         }
     if (v.ray_x >= 0)
         d->AddRect(ImVec2(o.x + float(v.ray_x) * cell - 1, o.y + float(v.ray_y) * cell - 1),
-                   ImVec2(o.x + float(v.ray_x + 1) * cell + 1, o.y + float(v.ray_y + 1) * cell + 1), IM_COL32(255, 230, 90, 255), 0, 0, 2);
+                   ImVec2(o.x + float(v.ray_x + 1) * cell + 1, o.y + float(v.ray_y + 1) * cell + 1), IM_COL32(255, 230, 90, 255), 0, 0, canvas_px(2));
     ImGui::Dummy(ImVec2(iw, ih));
     ImGui::End();
 }

@@ -24,11 +24,11 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
     for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
-        d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), 3);
+        d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), canvas_px(3));
     }
     if (v.line >= 0) {
         const float ly = o.y + (float(v.line) + 0.5f) * cell;
-        d->AddLine(ImVec2(o.x - 8, ly), ImVec2(o.x + cell * float(v.viewport.width) + 8, ly), IM_COL32(255, 230, 90, 255), 2);
+        d->AddLine(ImVec2(o.x - 8, ly), ImVec2(o.x + cell * float(v.viewport.width) + 8, ly), IM_COL32(255, 230, 90, 255), canvas_px(2));
         for (const Crossing& c : v.crossings) {
             const float cx = o.x + float(c.x) * cell;
             const ImU32 colour = c.entering ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255);

@@ -42,13 +42,13 @@ void under_way(ImDrawList* d, ImVec2 origin, float cell, const ZView& v) {
     if (v.polygon >= 0) outline(d, origin, cell, (*v.polygons)[std::size_t(v.polygon)], IM_COL32(255, 255, 255, 255), 2.5f);
     if (v.span_y >= 0)
         d->AddRect(ImVec2(origin.x + float(v.span_begin) * cell - 1, origin.y + float(v.span_y) * cell - 1),
-                   ImVec2(origin.x + float(v.span_end) * cell, origin.y + float(v.span_y + 1) * cell), IM_COL32(255, 230, 90, 255), 0, 0, 2);
+                   ImVec2(origin.x + float(v.span_end) * cell, origin.y + float(v.span_y + 1) * cell), IM_COL32(255, 230, 90, 255), 0, 0, canvas_px(2));
     if (v.pixel_x >= 0) {
         const ImU32 c = v.outcome == PixelOutcome::written  ? IM_COL32(90, 220, 130, 255)
                         : v.outcome == PixelOutcome::failed ? IM_COL32(240, 80, 60, 255)
                                                             : IM_COL32(255, 230, 90, 255);
         d->AddRect(ImVec2(origin.x + float(v.pixel_x) * cell - 2, origin.y + float(v.pixel_y) * cell - 2),
-                   ImVec2(origin.x + float(v.pixel_x + 1) * cell + 1, origin.y + float(v.pixel_y + 1) * cell + 1), c, 0, 0, 3);
+                   ImVec2(origin.x + float(v.pixel_x + 1) * cell + 1, origin.y + float(v.pixel_y + 1) * cell + 1), c, 0, 0, canvas_px(3));
     }
 }
 
@@ -57,13 +57,13 @@ void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
     const algo::DepthRange r = v.range;
     const float x0 = at.x + 10, x1 = at.x + width - 10, y = at.y + 26;
     const auto x_of = [&](double z) { return x0 + float((z - r.near) / (r.far - r.near)) * (x1 - x0); };
-    d->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(200, 200, 200, 255), 1.5f);
+    d->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(200, 200, 200, 255), canvas_px(1.5f));
     const std::uint64_t c0 = algo::code(v.format, r.near, r), c1 = algo::code(v.format, r.far, r);
     constexpr int ticks = 64;
     for (int i = 0; i <= ticks; ++i) {
         const std::uint64_t c = c0 + (c1 - c0) * std::uint64_t(i) / ticks;
         const float x = x_of(distance_of_code(v.format, c, r));
-        d->AddLine(ImVec2(x, y - 8), ImVec2(x, y + 8), IM_COL32(120, 190, 255, 255), 1);
+        d->AddLine(ImVec2(x, y - 8), ImVec2(x, y + 8), IM_COL32(120, 190, 255, 255), canvas_px(1));
     }
     d->AddText(ImVec2(x0, y + 10), IM_COL32(200, 200, 200, 255), ("near " + algo::format_number(r.near)).c_str());
     const std::string far_text = "far " + algo::format_number(r.far);

@@ -70,7 +70,7 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
                 const bool chosen = part == 2 || (part == 0) == v.from_a;
                 d->AddRect(ImVec2(o.x + float(v.x) * cell - 2, o.y + float(v.y) * cell - 2),
                            ImVec2(o.x + float(v.x + 1) * cell + 1, o.y + float(v.y + 1) * cell + 1),
-                           chosen ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255), 0, 0, 3);
+                           chosen ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255), 0, 0, canvas_px(3));
             }
         }
     ImGui::End();
