@@ -63,7 +63,9 @@ case "$case" in
     test "$(echo "$a" | sed 's/.*hash \([0-9a-f]*\).*/\1/')" != "$(echo "$c" | sed 's/.*hash \([0-9a-f]*\).*/\1/')"
     test "$(wc -l < a.jsonl)" -eq "$(echo "$a" | cut -d' ' -f1)" ;;
   keys)  # the keys a student expects: → and ← step, Shift for one event, Home/End, Space plays
-    lesson="$src/lessons/02_liang_barsky.toml"   # no questions: nothing holds the player (the questions case)
+    # a lesson without chapters, so that no question holds the player (the questions case tests holding)
+    printf 'title = "keys"\nalgorithm = "liang_barsky"\nscene = "%s"\n' "$src/assets/scenes/lb_segments.toml" > keys.toml
+    lesson=keys.toml
     at() { "$hsrviz" "$lesson" --screenshot k.png --frames "$1" --keys "$2" | sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p'; }
     micro5=$(at 8 Shift+Right,Shift+Right,Shift+Right,Shift+Right,Shift+Right)
     test "$micro5" -eq 5
@@ -201,8 +203,8 @@ case "$case" in
     "$hsrviz" "$src/lessons/00_tour.toml" --screenshot m.png --frames 5 --keys M,Up,Return > m.txt   # no lesson before the first
     grep -q "lesson .*/lessons/00_tour.toml" m.txt
     # the end card: at the last step of a lesson, and its Next lesson is N
-    "$hsrviz" "$src/lessons/02_liang_barsky.toml" --screenshot e.png --frames 4 --keys End > e.txt
-    grep -q "^hsrviz: at step 42 of 42, paused, end of the lesson$" e.txt
+    "$hsrviz" "$src/lessons/03_sutherland_hodgman.toml" --screenshot e.png --frames 4 --keys End > e.txt   # no questions hold End
+    grep -q "^hsrviz: at step 147 of 147, paused, end of the lesson$" e.txt
     "$png_check" e.png 1280 800
     "$hsrviz" --lesson-list > list.txt
     test "$(wc -l < list.txt)" -eq "$(ls "$src"/lessons/*.toml | wc -l)"
@@ -227,7 +229,9 @@ case "$case" in
     "$hsrviz" trace --help | grep -q -- "--out"
     if "$hsrviz" trace /nonexistent.toml --out x.jsonl 2>/dev/null; then exit 1; fi ;;
   drive)  # V in a 2D BSP plan: the arrows walk and turn the eye (not step), the traversal reruns at once, S saves
-    "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot drive.png --frames 2 \
+    # the lesson's scene and algorithm without its chapters (a question would hold the traversal back)
+    printf 'title = "drive"\nalgorithm = "bsp_build"\nsplitter = "first"\nscene = "%s"\n' "$src/assets/scenes/bsp_2d_segments.toml" > 04_bsp_build.toml
+    "$hsrviz" 04_bsp_build.toml --screenshot drive.png --frames 2 \
       --keys "V,Up,Up,Up,Up,Up,Left,Left,Left,Left,Left,Left,S" > drive.txt
     cat drive.txt
     "$png_check" drive.png 1280 800
@@ -240,7 +244,7 @@ case "$case" in
             wx = 0.5 + 0.8 * hx; wy = -0.5 + 0.8 * hy; vx = wx + c * hx - s * hy; vy = wy + s * hx + c * hy
             d = (ex - wx) ^ 2 + (ey - wy) ^ 2 + (tx - vx) ^ 2 + (ty - vy) ^ 2
             if (d > 1e-12) { print "eye", ex, ey, "target", tx, ty, "expected", wx, wy, vx, vy; exit 1 } }' "$saved"
-    "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot back.png --frames 2 --keys "V,V,Right,Right" > back.txt
+    "$hsrviz" 04_bsp_build.toml --screenshot back.png --frames 2 --keys "V,V,Right,Right" > back.txt
     grep -q "at step 2 of 41" back.txt ;;         # V again: the arrows step again
   edit)  # mouse gestures on a 2D scene: drag an end, draw a segment, delete one; the machine reruns; S saves
     "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot before.png --frames 3 --keys Right > before.txt
