@@ -1,5 +1,6 @@
 #include "panels/chapter_panels.h"
 
+#include <cctype>
 #include <string>
 
 #include <imgui.h>
@@ -76,7 +77,9 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
             const std::string number = std::to_string(i + 1);
             const std::string& choice = q->choices[i];
             const bool numbered = choice.rfind(number + ".", 0) == 0;
-            const std::string label = numbered ? choice : number + "  " + choice;
+            // a choice that is itself a number ("0", "4") gets its key in brackets, so that "1  0" does not read as 10
+            const bool number_choice = !choice.empty() && (std::isdigit(static_cast<unsigned char>(choice[0])) || choice[0] == '-');
+            const std::string label = numbered ? choice : number_choice ? "[" + number + "]  " + choice : number + "  " + choice;
             const float button_width = ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
             if (i > 0) {
                 ImGui::SameLine();
