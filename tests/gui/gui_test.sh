@@ -294,7 +294,7 @@ case "$case" in
     grep -q "measured 12 rows of error against run time for portal_pvs" report.txt
     "$png_check" report.png 1280 800
     # it is measured off the window's thread: Esc (or R, or Cancel) stops it, says so, and the window goes on
-    "$hsrviz" "$src/lessons/25_culling_hiz.toml" --screenshot cancelled.png --frames 3 --keys "R,Escape,Right" > cancelled.txt
+    "$hsrviz" "$src/lessons/23_culling_detail.toml" --screenshot cancelled.png --frames 3 --keys "R,Escape,Right" > cancelled.txt
     grep -q "measurement cancelled" cancelled.txt
     ! grep -q "measured .* rows" cancelled.txt
     grep -q "at step 1 of" cancelled.txt ;;
