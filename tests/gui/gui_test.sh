@@ -270,7 +270,7 @@ case "$case" in
     test "$(grep -o 'of [0-9]*' before.txt)" != "$(grep -o 'of [0-9]*' after.txt)"
     # the z-buffer's fat pixels (grid coordinates): draw a triangle, drag its corner, right-click polygon 3 away, save
     "$hsrviz" "$src/lessons/07_zbuffer_fill.toml" --screenshot zb.png --frames 12 \
-      --keys "ShiftDrag:2:2:12:10,Drag:2:2:5:7,End,1,End,RightClick:16:21,S" > zb.txt
+      --keys "ShiftDrag:2:2:12:10,Drag:2:2:5:7,End,1,End,1,End,RightClick:16:21,S" > zb.txt   # (End stops at each question)
     zsaved=hsrviz-export/07_zbuffer_fill-edited.toml
     test "$(grep -c '^\[\[polygons\]\]' "$zsaved")" -eq 3   # 3 triangles, one added, one deleted
     grep -q '^id = 4$' "$zsaved"
