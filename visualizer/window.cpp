@@ -1,29 +1,35 @@
 #include "window.h"
 
 #include <imgui.h>
-
-#include "panels/panel_style.h"
 #include <imgui_impl_opengl3.h>
 #include <imgui_impl_sdl.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <vector>
+
+#include "panels/panel_style.h"
+#include "state/glyphs.h"
 
 namespace hsr::viz {
 namespace {
 
 void load_fonts(ImGuiIO& io, float scale) {
-    // Latin, Greek (ε), punctuation, arrows and maths (≤ ≥ → −): the characters our sentences use.
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2000, 0x206F, 0x2190, 0x21FF,
-                                     0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+    // The characters lessons may use (state/glyphs.h: `hsrviz check` warns about any other), as ImGui's ranges
+    static const std::vector<ImWchar> ranges = [] {
+        std::vector<ImWchar> r;
+        for (const GlyphRange& g : font_glyphs) r.push_back(ImWchar(g.first)), r.push_back(ImWchar(g.last));
+        r.push_back(0);
+        return r;
+    }();
     const char* sans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     const char* mono = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
     if (!std::filesystem::exists(sans) || !std::filesystem::exists(mono)) {
         io.Fonts->AddFontDefault();  // ASCII only: ≤, → and ε will show as '?'
         return;
     }
-    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges);
-    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges);  // pseudocode
+    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges.data());
+    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges.data());  // pseudocode
 }
 
 // The style before scaling (ScaleAllSizes multiplies, so each scale starts from this).

@@ -66,6 +66,7 @@ int run_check(std::vector<std::string> files, const std::string& root) {
     int bad = 0;
     for (const std::string& f : files) {
         const CheckResult r = check_file(f);
+        for (const std::string& w : r.warnings) std::printf("warn  %s\n", w.c_str());
         if (r.problems.empty()) {
             std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", f.c_str(), r.events, r.chapters, r.questions);
             continue;

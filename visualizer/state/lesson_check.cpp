@@ -2,9 +2,28 @@
 
 #include "analysis/expect_check.h"
 #include "state/families.h"
+#include "state/glyphs.h"
 #include "state/lesson_script.h"
 
 namespace hsr::viz {
+namespace {
+
+// Every text the window shows of a lesson, with the field it comes from.
+std::vector<std::pair<std::string, std::string>> lesson_texts(const Lesson& l) {
+    std::vector<std::pair<std::string, std::string>> texts{{"title", l.title}, {"summary", l.summary}};
+    for (std::size_t k = 0; k < l.chapters.size(); ++k) {
+        const Chapter& c = l.chapters[k];
+        const std::string at = "chapters[" + std::to_string(k) + "]";
+        texts.emplace_back(at + ".title", c.title);
+        for (const auto& [language, text] : c.narration) texts.emplace_back(at + ".narration." + language, text);
+        if (!c.question) continue;
+        for (const auto& [language, text] : c.question->ask) texts.emplace_back(at + ".question.ask." + language, text);
+        for (const std::string& choice : c.question->choices) texts.emplace_back(at + ".question.choices", choice);
+    }
+    return texts;
+}
+
+}  // namespace
 
 CheckResult check_file(const std::string& path) {
     CheckResult r;
@@ -16,6 +35,9 @@ CheckResult check_file(const std::string& path) {
         if (!session->complete()) r.problems.push_back(path + ": the machine did not finish within " + std::to_string(prefetch_events) + " events");
         const LessonScript script(*session);
         r.chapters = lesson.chapters.size();
+        for (const auto& [field, text] : lesson_texts(lesson))
+            for (const char32_t c : glyphs_missing(text))
+                r.warnings.push_back(path + ": " + field + ": " + glyph_name(c) + " is not in the window's font (it shows as '?')");
         for (const Chapter& c : lesson.chapters) r.questions += c.question.has_value();
         for (std::string& p : script.problems(lesson, event_kinds(lesson))) r.problems.push_back(std::move(p));
         // A scene's own [expect] tables, against the machines (a teacher's scene states what it should show)

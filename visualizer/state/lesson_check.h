@@ -10,6 +10,7 @@ namespace hsr::viz {
 
 struct CheckResult {
     std::vector<std::string> problems;  // empty: the file is good
+    std::vector<std::string> warnings;  // what plays but shows wrongly: characters the window's font lacks
     std::size_t chapters = 0, questions = 0, events = 0;
 };
 CheckResult check_file(const std::string& path);
