@@ -36,8 +36,8 @@ TEST_CASE("hsrviz check warns about characters the font lacks, naming the field,
     const hsr::viz::CheckResult r = hsr::viz::check_file(path);
     CHECK(r.problems.empty());
     REQUIRE(r.warnings.size() == 2);
-    CHECK(r.warnings[0] == path + ": title: U+4E2D 中 is not in the window's font (it shows as '?')");
-    CHECK(r.warnings[1] == path + ": chapters[0].narration.ru: U+2713 ✓ is not in the window's font (it shows as '?')");
+    CHECK(r.warnings[0] == path + ": title: U+4E2D 中 is not in the window's font (the window draws � instead)");
+    CHECK(r.warnings[1] == path + ": chapters[0].narration.ru: U+2713 ✓ is not in the window's font (the window draws � instead)");
 }
 
 TEST_CASE("no shipped lesson uses a character the font lacks", "[glyphs][lesson]") {

@@ -1,7 +1,7 @@
 // The characters the window's font is built with: Latin (with Latin Extended-A and -B, for the languages of Europe
 // written in Latin letters), Greek (ε, the lecture's symbols), Cyrillic, punctuation, super- and subscripts, arrows,
 // mathematical operators and geometric shapes. DejaVu, the font the window loads, has all of them. A lesson that
-// uses a character outside these shows it as '?', so `hsrviz check` warns about it (glyphs_missing).
+// uses a character outside these shows it as the replacement mark �, so `hsrviz check` warns about it (glyphs_missing).
 #pragma once
 
 #include <array>

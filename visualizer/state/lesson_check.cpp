@@ -37,7 +37,7 @@ CheckResult check_file(const std::string& path) {
         r.chapters = lesson.chapters.size();
         for (const auto& [field, text] : lesson_texts(lesson))
             for (const char32_t c : glyphs_missing(text))
-                r.warnings.push_back(path + ": " + field + ": " + glyph_name(c) + " is not in the window's font (it shows as '?')");
+                r.warnings.push_back(path + ": " + field + ": " + glyph_name(c) + " is not in the window's font (the window draws � instead)");
         for (const Chapter& c : lesson.chapters) r.questions += c.question.has_value();
         for (std::string& p : script.problems(lesson, event_kinds(lesson))) r.problems.push_back(std::move(p));
         // A scene's own [expect] tables, against the machines (a teacher's scene states what it should show)
