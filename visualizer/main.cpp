@@ -63,7 +63,13 @@ int main(int argc, char** argv) {
     report_cmd->add_option("--out", report.out, "Folder to write report.md, report.csv and one chart per family into");
     report_cmd->add_flag("--quick", report.quick, "Small scenes and three repeats (about a minute)");
     report_cmd->add_option("--repeats", report.repeats, "Runs per measurement; the median is reported")->check(CLI::PositiveNumber);
-    CLI11_PARSE(cli, argc, argv);
+    cli.set_version_flag("--version", "hsrviz " HSR_VERSION);
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {  // --help and --version end here too, with 0; a usage error exits 2
+        const int code = cli.exit(e);
+        return code == 0 ? 0 : 2;
+    }
 
     if (*trace_cmd) return hsr::viz::run_trace(trace);
     if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());

@@ -231,6 +231,13 @@ case "$case" in
     "$hsrviz" --help | grep -q -- "--screenshot"
     "$hsrviz" --help | grep -q "trace"
     "$hsrviz" trace --help | grep -q -- "--out"
+    "$hsrviz" --version | grep -qx "hsrviz [0-9]*\.[0-9]*\.[0-9]*"
+    # a usage error says why and exits 2 (not CLI11's 105 or 109)
+    set +e; "$hsrviz" --bogus 2> usage.txt; code=$?; set -e
+    test "$code" -eq 2
+    grep -q -- "--bogus" usage.txt
+    set +e; "$hsrviz" trace 2> usage.txt; code=$?; set -e
+    test "$code" -eq 2
     if "$hsrviz" trace /nonexistent.toml --out x.jsonl 2>/dev/null; then exit 1; fi ;;
   drive)  # V in a 2D BSP plan: the arrows walk and turn the eye (not step), the traversal reruns at once, S saves
     # the lesson's scene and algorithm without its chapters (a question would hold the traversal back)

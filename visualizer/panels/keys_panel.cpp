@@ -30,6 +30,7 @@ void keys_panel(const PanelLayout& l) {
         }
         ImGui::EndTable();
     }
+    ImGui::TextDisabled("hsrviz %s", HSR_VERSION);
     ImGui::End();
 }
 
