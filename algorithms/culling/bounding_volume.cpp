@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <glm/geometric.hpp>
 
@@ -122,8 +123,34 @@ double enclosed_volume(std::span<const std::vector<Vec3>> polygons) {
     return six / 6;
 }
 
-double void_fraction(double bounding_volume, double object_volume) {
-    return bounding_volume > 0 ? 1 - object_volume / bounding_volume : 0;
+std::optional<double> void_fraction(double bounding_volume, double object_volume) {
+    // a little slack above the bounding volume: a sphere's or box's volume rounded against a mesh's
+    if (!(object_volume > 0) || !(bounding_volume > 0) || object_volume > bounding_volume * (1 + 1e-9)) return std::nullopt;
+    return std::max(0.0, 1 - object_volume / bounding_volume);
+}
+
+std::vector<std::vector<std::size_t>> connected_objects(std::span<const std::vector<Vec3>> polygons) {
+    // union–find over the polygons, joined by any vertex they share
+    std::vector<std::size_t> parent(polygons.size());
+    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+    const auto root = [&](std::size_t k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    std::map<std::array<double, 3>, std::size_t> first_with;  // a vertex → the first polygon that has it
+    for (std::size_t k = 0; k < polygons.size(); ++k)
+        for (const Vec3& v : polygons[k]) {
+            const auto [at, fresh] = first_with.emplace(std::array<double, 3>{v.x, v.y, v.z}, k);
+            if (!fresh) parent[root(k)] = root(at->second);
+        }
+    std::map<std::size_t, std::size_t> object_of_root;
+    std::vector<std::vector<std::size_t>> objects;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        const auto [at, fresh] = object_of_root.emplace(root(k), objects.size());
+        if (fresh) objects.emplace_back();
+        objects[at->second].push_back(k);
+    }
+    return objects;
 }
 
 }  // namespace hsr::algo

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -50,7 +51,13 @@ Obb obb_of(std::span<const Vec3> points);
 // sum of signed tetrahedra from the origin). 0 for an open surface is not guaranteed: call it only on closed meshes.
 double enclosed_volume(std::span<const std::vector<Vec3>> polygons);
 
-// The share of a bounding volume the object does not fill: 1 − object volume / bounding volume.
-double void_fraction(double bounding_volume, double object_volume);
+// The share of a bounding volume the object does not fill: 1 − object volume / bounding volume; nullopt when the
+// object is not a closed solid inside it (no positive volume, or more than the bounding volume: an open surface or
+// one wound inwards), where a share would be a number without a meaning.
+std::optional<double> void_fraction(double bounding_volume, double object_volume);
+
+// The objects of a polygon soup: sets of polygons joined through shared vertices (exactly equal coordinates), each
+// listed by the polygons' indices in ascending order, the objects in the order of their first polygon.
+std::vector<std::vector<std::size_t>> connected_objects(std::span<const std::vector<Vec3>> polygons);
 
 }  // namespace hsr::algo

@@ -40,6 +40,37 @@ bool inside_frustum_somewhere(const Scene& s, const ScenePolygon& p) {
 
 }  // namespace
 
+TEST_CASE("void space has a meaning only for a closed solid inside its bounding volume", "[culling][bounds]") {
+    CHECK(void_fraction(10, 4).value() == Approx(0.6));
+    CHECK_FALSE(void_fraction(10, 0));        // an open surface encloses nothing
+    CHECK_FALSE(void_fraction(10, -3));       // wound inwards
+    CHECK_FALSE(void_fraction(10, 11));       // more than its bounding volume: not a closed solid inside it
+    CHECK_FALSE(void_fraction(0, 0));         // a flat bounding volume
+    CHECK(void_fraction(10, 10 * (1 + 1e-12)).value() == 0);  // rounding at a tight fit is no void
+}
+
+TEST_CASE("the objects of a polygon soup are its polygons joined through shared vertices", "[culling][bounds]") {
+    const auto rod = box_mesh({4, 0.25, 0.25}, 0.6);
+    std::vector<std::vector<Vec3>> soup = rod;
+    for (auto p : box_mesh({1, 1, 1}, 0)) {  // a second box, apart from the rod
+        for (Vec3& v : p) v += Vec3(20, 0, 0);
+        soup.push_back(p);
+    }
+    soup.push_back({Vec3(50, 0, 0), Vec3(51, 0, 0), Vec3(50, 1, 0)});  // a loose triangle
+    // and one triangle that touches the rod at one of its corners: it belongs to the rod's object
+    soup.push_back({rod[0][0], Vec3(-9, -9, -9), Vec3(-9, -8, -9)});
+    const auto objects = connected_objects(soup);
+    REQUIRE(objects.size() == 3);
+    CHECK(objects[0].size() == rod.size() + 1);
+    CHECK(objects[0].back() == soup.size() - 1);
+    CHECK(objects[1].size() == 6);  // the second box, whole
+    CHECK(objects[1].front() == rod.size());
+    CHECK(objects[2] == std::vector<std::size_t>{soup.size() - 2});
+    std::vector<std::vector<Vec3>> second;
+    for (std::size_t k : objects[1]) second.push_back(soup[k]);
+    CHECK(enclosed_volume(second) == Approx(8));  // a closed box of half-extents 1
+}
+
 TEST_CASE("bounding volumes enclose their points, and a long rotated rod shows their void space", "[culling][bounds]") {
     const auto rod = box_mesh({4, 0.25, 0.25}, 0.6);  // a thin bar, turned 34° about z
     const std::vector<Vec3> pts = points_of(rod);
@@ -53,9 +84,9 @@ TEST_CASE("bounding volumes enclose their points, and a long rotated rod shows t
         for (int k = 0; k < 3; ++k) CHECK(std::abs(glm::dot(p - o.centre, o.axes[std::size_t(k)])) <= o.half[k] * (1 + 1e-9) + 1e-12);
     }
     // the OBB finds the rod's own axes: no void; the box and sphere are mostly empty
-    CHECK(void_fraction(o.volume(), volume) == Approx(0).margin(1e-9));
-    CHECK(void_fraction(a.volume(), volume) > 0.8);
-    CHECK(void_fraction(s.volume(), volume) > 0.9);
+    CHECK(void_fraction(o.volume(), volume).value() == Approx(0).margin(1e-9));
+    CHECK(void_fraction(a.volume(), volume).value() > 0.8);
+    CHECK(void_fraction(s.volume(), volume).value() > 0.9);
     CHECK(o.volume() < a.volume());
     CHECK(a.volume() < s.volume());
 }

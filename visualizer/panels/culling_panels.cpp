@@ -43,31 +43,39 @@ void pipeline_table(const CullingView& v) {
     ImGui::EndTable();
 }
 
-// Per object (scene ids grouped by hundreds): the share of each bounding volume the object does not fill.
+// Per object (polygons joined through shared vertices): the share of each bounding volume the object does not fill;
+// "open" for a group that is not a closed solid (void space means nothing there).
 void void_table(const CullingView& v) {
-    std::map<int, std::vector<std::vector<algo::Vec3>>> objects;
+    std::vector<std::vector<algo::Vec3>> polygons;
     for (const auto& p : v.world->scene.polygons) {
         std::vector<algo::Vec3> w;
         for (const auto& q : p.vertices) w.emplace_back(q);
-        objects[p.id / 100].push_back(std::move(w));
+        polygons.push_back(std::move(w));
     }
+    const auto objects = polygons.size() <= 20000 ? algo::connected_objects(polygons) : std::vector<std::vector<std::size_t>>(13);
     if (objects.size() > 12) {
         ImGui::TextColored(dim_text, "(void space is shown for scenes of a few objects)");
         return;
     }
     if (!ImGui::BeginTable("void", 4, ImGuiTableFlags_BordersInnerH)) return;
-    for (const char* c : {"object", "AABB void", "sphere void", "OBB void"}) ImGui::TableSetupColumn(c);
+    for (const char* c : {"object (ids)", "AABB void", "sphere void", "OBB void"}) ImGui::TableSetupColumn(c);
     ImGui::TableHeadersRow();
-    for (const auto& [group, polys] : objects) {
+    for (const std::vector<std::size_t>& object : objects) {
+        std::vector<std::vector<algo::Vec3>> polys;
         std::vector<algo::Vec3> points;
-        for (const auto& p : polys) points.insert(points.end(), p.begin(), p.end());
+        for (std::size_t k : object) {
+            polys.push_back(polygons[k]);
+            points.insert(points.end(), polygons[k].begin(), polygons[k].end());
+        }
         const double volume = algo::enclosed_volume(polys);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::Text("%dxx", group);
+        const auto& scene = v.world->scene.polygons;
+        ImGui::Text("%d–%d", int(scene[object.front()].id), int(scene[object.back()].id));
         for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points).volume()}) {
             ImGui::TableNextColumn();
-            ImGui::Text("%.0f %%", 100 * algo::void_fraction(bv, volume));
+            if (const auto share = algo::void_fraction(bv, volume)) ImGui::Text("%.0f %%", 100 * *share);
+            else ImGui::TextColored(dim_text, "open");
         }
     }
     ImGui::EndTable();
