@@ -1,9 +1,7 @@
 #include "lesson_play.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <thread>
 #include <filesystem>
 #include <fstream>
 
@@ -119,11 +117,8 @@ void Lessonplay::collect_report() {
 
 void Lessonplay::cancel_report() {
     if (!measuring.running()) return;
-    measuring.cancel();
-    while (measuring.running()) {  // a cancel is seen before the next timed run: a moment at most
-        collect_report();
-        if (measuring.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
+    measuring.stop();  // a cancel is seen before the next timed run: a moment at most
+    collect_report();
 }
 
 void Lessonplay::tell(const std::string& text) {

@@ -52,8 +52,9 @@ void void_table(const CullingView& v) {
         for (const auto& q : p.vertices) w.emplace_back(q);
         polygons.push_back(std::move(w));
     }
-    const auto objects = polygons.size() <= 20000 ? algo::connected_objects(polygons) : std::vector<std::vector<std::size_t>>(13);
-    if (objects.size() > 12) {
+    const bool large = polygons.size() > 20000;  // not worth joining: a scene of many objects
+    const auto objects = large ? std::vector<std::vector<std::size_t>>{} : algo::connected_objects(polygons);
+    if (large || objects.size() > 12) {
         ImGui::TextColored(dim_text, "(void space is shown for scenes of a few objects)");
         return;
     }

@@ -12,14 +12,15 @@ struct BackgroundMeasurement::Shared {
     bool taken = false;
 };
 
-BackgroundMeasurement::~BackgroundMeasurement() {
+BackgroundMeasurement::~BackgroundMeasurement() { stop(); }
+
+void BackgroundMeasurement::stop() {
     cancel();
     wait();
 }
 
 void BackgroundMeasurement::start(Measure measure) {
-    cancel();
-    wait();
+    stop();
     shared_ = std::make_shared<Shared>();
     thread_ = std::thread([shared = shared_, measure = std::move(measure)] {
         Outcome outcome;

@@ -27,6 +27,8 @@ public:
     void start(Measure measure);
     // Asks the running measurement to stop; it ends before its next timed run.
     void cancel();
+    // Cancels and waits for the thread to end (a moment: the next timed run does not start); take() then has it.
+    void stop();
     bool running() const;        // started and its answer not yet taken
     float fraction() const;      // of the planned runs done, 0 … 1
 
