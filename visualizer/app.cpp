@@ -28,6 +28,7 @@
 #include "panels/layout_audit.h"
 #include "panels/lesson_menu.h"
 #include "panels/toast_panel.h"
+#include "scene/input_file.h"
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "render/gl.h"
@@ -347,6 +348,7 @@ int run_app(const AppOptions& o) {
                     std::fprintf(stderr, "hsrviz: cannot write %s\n", o.screenshot->c_str());
                     exit_code = 1;
                 }
+                if (!lp.session()) exit_code = 1;  // the picture shows the error; the exit says the lesson did not load
                 running = false;
             }
             SDL_GL_SwapWindow(w.window);
@@ -393,8 +395,9 @@ int run_app(const AppOptions& o) {
                 keep.x = x, keep.y = y;
             }
         }
-        if (keep != settings && !write_window_settings(settings_path, keep))
-            std::fprintf(stderr, "hsrviz: cannot write %s\n", settings_path.c_str());
+        if (keep != settings)
+            if (const std::string why = write_window_settings(settings_path, keep); !why.empty())
+                std::fprintf(stderr, "hsrviz: the window's settings were not saved: %s\n", algo::printable(why).c_str());
     }
 
     // Cleanup

@@ -5,15 +5,20 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene/input_file.h"
+#include "scene/toml_reader.h"
 #include "cli/commands.h"
 #include "scene/save_scene.h"
+#include "state/trace.h"
 
 namespace hsr::viz {
 
 void Lessonplay::load(const AppOptions& o) {
-    const std::size_t keep = session() ? session()->cursor() : 0;  // a reload stays at its step where it still exists
-    const bool fresh = !session();
+    // A reload stays at its step where it still exists, also through a failed reload (a file saved half-written).
+    const std::size_t keep = session() ? session()->cursor() : place_before_error.value_or(0);
+    const bool fresh = !session() && !place_before_error;
     if (path.empty()) home = path = o.lesson_path, algorithm = o.algorithm;
+    const std::vector<std::string> watched = watch.files();
     watch.watch({path});
     try {
         const Lesson lesson = load_lesson(path, algorithm);
@@ -27,6 +32,10 @@ void Lessonplay::load(const AppOptions& o) {
         session()->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
         classroom.attach(*session());
         error.clear();
+        // A lesson that plays but whose chapters cannot work as written (a typo in an event's name, a question
+        // nothing answers) says so, as `hsrviz check` would: the teacher sees it before the class does.
+        if (const LessonScript* script = classroom.script())
+            for (const std::string& problem : script->problems(lesson, event_kinds(lesson))) tell(problem);
         frame_bounds(camera, glm::vec3(0), 1);
         with_family_screen([&](auto& s, auto& screen) { screen.frame(s, camera); });
         std::size_t start = keep;
@@ -38,11 +47,24 @@ void Lessonplay::load(const AppOptions& o) {
                         break;
                     }
         session()->seek(std::min(start, session()->known()));
-    } catch (const std::exception& e) {  // a bad file shows its error instead of the scene
-        family.reset();
-        error = e.what();
-        std::fprintf(stderr, "hsrviz: %s\n", e.what());
+        place_before_error.reset();
+    } catch (const algo::LoadError& e) {  // a bad file shows its error instead of the scene
+        failed_to_load(e.what(), watched, e.file);
+    } catch (const std::exception& e) {
+        failed_to_load(e.what(), watched, path);
     }
+}
+
+void Lessonplay::failed_to_load(const std::string& why, std::vector<std::string> watched, const std::string& at_fault) {
+    if (session()) place_before_error = session()->cursor();
+    family.reset();
+    error = algo::printable(why, 2000);
+    // Still watched: the files watched before (the scene of a lesson that loaded) and the file at fault, so fixing
+    // either reloads by itself.
+    watched.push_back(path);
+    watched.push_back(at_fault);
+    watch.watch(watched);
+    std::fprintf(stderr, "hsrviz: %s\n", error.c_str());
 }
 
 void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
@@ -63,6 +85,7 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
         return;
     }
     show_presets = false;
+    place_before_error.reset();
     family.reset();  // a new scene starts at its first step
     load(o);
     tell("playing " + path + " with " + algorithm.value_or("the lesson's algorithm"));
@@ -80,6 +103,7 @@ void Lessonplay::switch_lesson(int step, const AppOptions& o) {
 
 void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     home = path = lesson, algorithm.reset();
+    place_before_error.reset();
     family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
     classroom = Classroom{};
     cancel_report();
@@ -122,8 +146,8 @@ void Lessonplay::cancel_report() {
 }
 
 void Lessonplay::tell(const std::string& text) {
-    std::printf("hsrviz: %s\n", text.c_str());
-    toasts.say(text, seconds_now());
+    std::printf("hsrviz: %s\n", algo::printable(text, 2000).c_str());
+    toasts.say(algo::printable(text, 2000), seconds_now());
 }
 
 void Lessonplay::save_edited(const algo::Scene& scene) {

@@ -25,6 +25,7 @@ struct Lessonplay {
     std::optional<FamilySession> family;  // the lesson being played, as its family's type
     Screens screens;                      // one per family
     std::string error;                    // why the lesson could not be loaded ("" when it could)
+    std::optional<std::size_t> place_before_error;  // the step a failed reload left: the fixed file opens there again
     PlaybackState playback;
     OrbitCamera camera;
     bool animate = true;                  // off for screenshots and recordings: they show each step as it ends
@@ -60,6 +61,8 @@ struct Lessonplay {
 
     // (Re)loads `path` (the options' lesson at first), at the same step where it still exists.
     void load(const AppOptions& o);
+    // The error shown instead of the scene; the place and the watched files kept for the reload that fixes it.
+    void failed_to_load(const std::string& why, std::vector<std::string> watched, const std::string& at_fault);
     // P: play another scene with the lesson's algorithm (an extreme case, a random scene), or go back to the lesson.
     void choose_preset(const UiActions& a, const AppOptions& o);
     // N / Shift+N: the next or previous shipped lesson, from its start (a teacher switching lessons in class).

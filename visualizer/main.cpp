@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <tuple>
 
 #include "app.h"
 #include "cli/commands.h"
 #include "cli/render_command.h"
 #include "cli/report_command.h"
+#include "state/arguments.h"
 #include "state/lesson.h"
 #include "state/trace.h"
 
@@ -18,7 +20,7 @@ int main(int argc, char** argv) {
     std::string size = "1280x800";
     cli.add_option("lesson", app.lesson_path, "Lesson or scene file to play (default: the Cohen–Sutherland lesson)");
     cli.add_option("--screenshot", app.screenshot, "Take one Step per frame, write a PNG of the window after --frames, exit");
-    cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(CLI::PositiveNumber);
+    cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(CLI::Range(1, 1000000));
     cli.add_option("--gif", app.gif, "Write an animated GIF of the window for steps --from to --to (one frame a step), then exit");
     cli.add_option("--from", app.gif_from, "First step of the GIF (default 0)");
     cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
@@ -26,7 +28,7 @@ int main(int argc, char** argv) {
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
     cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
     CLI::Option* size_option = cli.add_option("--size", size, "Window size WxH (default: as the last run left it, else 1280x800)")->check(CLI::Validator(
-        [](std::string& s) { return std::sscanf(s.c_str(), "%*dx%*d") == 0 && s.find('x') != std::string::npos ? "" : "expected WxH"; }, "WxH"));
+        [](std::string& s) { return hsr::viz::parse_size(s, 16384) ? "" : "expected WxH, each from 1 to 16384"; }, "WxH"));
     cli.add_flag("--play", app.autoplay, "Start playing at once");
     bool lesson_list = false;
     cli.add_flag("--lesson-list", lesson_list, "Print the shipped lessons in the course's order (file, difficulty, algorithm, title), then exit");
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
 
     hsr::viz::TraceOptions trace;
     CLI::App* trace_cmd = cli.add_subcommand("trace", "Run a lesson's machine headless to completion and write its trace");
-    trace_cmd->add_option("input", trace.input, "Lesson or scene file")->required()->check(CLI::ExistingFile);
+    trace_cmd->add_option("input", trace.input, "Lesson or scene file")->required();  // a missing file: the loader says why
     trace_cmd->add_option("--out", trace.out, "JSON Lines file to write (one event per line)")->required();
     trace_cmd->add_option("--algorithm", trace.algorithm, "Override the lesson's algorithm");
     std::vector<std::string> check_files;
@@ -71,6 +73,10 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     }
 
+    if (app.gif && app.gif_from > app.gif_to) {
+        std::fprintf(stderr, "hsrviz: --from %zu is after --to %zu; the GIF would have no steps\n", app.gif_from, app.gif_to);
+        return 2;
+    }
     if (*trace_cmd) return hsr::viz::run_trace(trace);
     if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());
     if (*render_cmd) return hsr::viz::run_render(render);
@@ -78,7 +84,7 @@ int main(int argc, char** argv) {
 
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
-    std::sscanf(size.c_str(), "%dx%d", &app.width, &app.height);
+    std::tie(app.width, app.height) = *hsr::viz::parse_size(size, 16384);
     app.size_given = size_option->count() > 0;
     if (lesson_list) return hsr::viz::print_lesson_list();
     for (std::size_t at = 0; !keys.empty() && at <= keys.size();) {

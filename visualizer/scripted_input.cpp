@@ -1,5 +1,6 @@
 #include "scripted_input.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -9,14 +10,15 @@
 namespace hsr::viz {
 namespace {
 
-// "X1:Y1:X2:Y2" → numbers; false unless exactly `count` numbers, each read whole.
+// "X1:Y1:X2:Y2" → numbers; false unless exactly `count` numbers, each read whole and a place a window can have
+// (window points within ±100000: never NaN, inf or a point no mouse reaches).
 bool numbers(const std::string& text, std::size_t count, std::vector<double>& out) {
     std::stringstream in(text);
     std::string part;
     while (std::getline(in, part, ':')) {
         char* end = nullptr;
         const double v = std::strtod(part.c_str(), &end);
-        if (part.empty() || *end != '\0') return false;
+        if (part.empty() || *end != '\0' || !(std::abs(v) <= 1e5)) return false;
         out.push_back(v);
     }
     return out.size() == count;

@@ -88,12 +88,36 @@ void require_convex(std::span<const Vec3> v, SceneId id) {
                                " is not convex; the hidden-surface algorithms here take convex polygons "
                                "(split it into triangles in the scene)");
     }
+    // Every turn the same way is not enough: a pentagram turns left at each corner too, but goes round twice
+    // (its turns add up to 4π, a convex polygon's to 2π).
+    double turned = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Vec3 &a = v[i], &b = v[(i + 1) % v.size()], &c = v[(i + 2) % v.size()];
+        turned += std::atan2(glm::dot(glm::cross(b - a, c - b), n), glm::dot(b - a, c - b));
+    }
+    if (std::abs(turned) > 3 * M_PI)
+        throw InvalidInput("polygon " + std::to_string(id) + " crosses itself (its edges go round " +
+                           std::to_string(int(std::lround(std::abs(turned) / (2 * M_PI)))) +
+                           " times, like a star); the hidden-surface algorithms here take convex polygons");
 }
 
 void require_convex(const ScenePolygon& p) {
     std::vector<Vec3> v;
     for (const auto& q : p.vertices) v.emplace_back(q);
     require_convex(v, p.id);
+}
+
+std::vector<std::string> polygons_not_convex(const Scene& scene) {
+    std::vector<std::string> out;
+    if (scene.coordinates != Coordinates::world) return out;
+    for (const ScenePolygon& p : scene.polygons) {
+        try {
+            require_convex(p);
+        } catch (const InvalidInput& e) {
+            out.push_back(scene.source + ":" + std::to_string(p.line) + ": " + e.what());
+        }
+    }
+    return out;
 }
 
 

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "scene/scene.h"
@@ -67,6 +68,9 @@ std::vector<ScreenPolygon> project_polygons(const Scene& scene, Viewport viewpor
 // Throws InvalidInput naming the polygon unless it is convex (world space; a polygon with no area passes).
 void require_convex(const ScenePolygon& p);
 void require_convex(std::span<const glm::dvec3> polygon, SceneId id);
+// Every polygon of a world scene that the hidden-surface algorithms refuse (not convex, or crossing itself), as
+// "FILE:LINE: polygon N is not convex; …": what `check` warns of and `render` refuses before it starts.
+std::vector<std::string> polygons_not_convex(const Scene& scene);
 
 // One polygon given in clip space (x, y, z, w), as above.
 ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec4> clip_vertices, Viewport viewport);

@@ -9,9 +9,20 @@
 namespace hsr::algo {
 namespace {
 
+// Do the edges go round once? A star (a pentagram) turns the same way at every corner too, but goes round twice.
+bool winds_once(const std::vector<glm::dvec2>& p) {
+    double turned = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
+        const glm::dvec2 u = b - a, w = c - b;
+        turned += std::atan2(u.x * w.y - u.y * w.x, u.x * w.x + u.y * w.y);
+    }
+    return std::abs(turned) < 3 * M_PI;
+}
+
 // Points in order round a convex polygon with area (either way round; no three in a row).
 bool convex_with_area(const std::vector<glm::dvec2>& p, double eps) {
-    if (p.size() < 3) return false;
+    if (p.size() < 3 || !winds_once(p)) return false;
     double sign = 0, area = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
@@ -93,6 +104,8 @@ SceneCell read_cell(const TomlReader& r, const toml::table& t, const std::string
             if (cross(a1 - a0, a2 - a1) <= 0)
                 r.fail(t.get("outline"), join(f, "outline"), "the cell is not convex (or has a straight angle) at corner " + std::to_string((i + 1) % c.outline.size()));
         }
+        if (!winds_once(c.outline))
+            r.fail(t.get("outline"), join(f, "outline"), "the cell's outline crosses itself (it goes round more than once, like a star)");
     }
     return c;
 }

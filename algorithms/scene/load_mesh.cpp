@@ -1,14 +1,57 @@
 #include "scene/load_mesh.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include <tiny_obj_loader.h>
 
 #include "core/plane.h"
+#include "scene/input_file.h"
 #include "scene/load_scene.h"
 
 namespace hsr::algo {
+namespace {
+
+bool meshes_anywhere() {
+    const char* v = std::getenv("HSRVIZ_MESHES_ANYWHERE");
+    return v && std::string(v) == "1";
+}
+
+// "" when the path may be read, else why not.
+std::string refused_mesh_path(const std::string& file) {
+    const std::filesystem::path p = std::filesystem::path(file).lexically_normal();
+    std::string ext = p.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".obj") return "a mesh is an OBJ file (its name ends in .obj)";
+    if (meshes_anywhere()) return "";
+    if (p.is_absolute() || (!p.empty() && *p.begin() == ".."))
+        return "a mesh must lie in the scene's folder or below it (set HSRVIZ_MESHES_ANYWHERE=1 to allow any path)";
+    return "";
+}
+
+// tinyobjloader reads "nan", "inf" or "1e999" as a number it chose (0, or inf): every vertex line is read here first,
+// so a coordinate that is not a finite number is refused with its line.
+std::string bad_vertex_line(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+        std::istringstream words(line.substr(2));
+        std::string word;
+        for (int k = 0; k < 3 && words >> word; ++k) {
+            char* end = nullptr;
+            const double x = std::strtod(word.c_str(), &end);
+            if (end == word.c_str() || *end != '\0' || !std::isfinite(x))
+                return "line " + std::to_string(number) + ": vertex coordinate '" + printable(word, 40) +
+                       "' is not a finite number";
+        }
+    }
+    return "";
+}
+
+}  // namespace
 
 void read_meshes(const TomlReader& r, Scene& scene) {
     const toml::array* meshes = r.array(r.root(), "meshes", "", false);
@@ -19,11 +62,20 @@ void read_meshes(const TomlReader& r, Scene& scene) {
         if (!t) r.fail(meshes->get(m), f, "expected a table");
         r.only_keys(*t, f, {"file", "id", "color", "translate", "scale", "turn"});
         const std::string file = r.text(*t, "file", f);
+        if (const std::string why = refused_mesh_path(file); !why.empty()) r.fail(t->get("file"), join(f, "file"), why);
         const auto path = (std::filesystem::path(r.path()).parent_path() / file).lexically_normal();
+        std::string text;
+        try {
+            text = read_input_file(path.string());
+        } catch (const LoadError& e) {
+            r.fail(t->get("file"), join(f, "file"), path.string() + ": " + e.message);
+        }
+        if (const std::string why = bad_vertex_line(text); !why.empty())
+            r.fail(t->get("file"), join(f, "file"), path.filename().string() + ": " + why);
         tinyobj::ObjReader obj;
         tinyobj::ObjReaderConfig config;
         config.triangulate = false;  // keep quads and n-gons as the file has them
-        if (!obj.ParseFromFile(path.string(), config)) r.fail(t->get("file"), join(f, "file"), "cannot read " + path.string() + ": " + obj.Error());
+        if (!obj.ParseFromString(text, "", config)) r.fail(t->get("file"), join(f, "file"), "cannot read " + path.string() + ": " + obj.Error());
         std::int64_t id = r.integer(*t, "id", f, 1);
         const double scale = r.number(*t, "scale", f, 1.0), turn = r.number(*t, "turn", f, 0.0) * M_PI / 180;
         if (!(scale > 0)) r.fail(t->get("scale"), join(f, "scale"), "expected a scale > 0");
@@ -42,6 +94,7 @@ void read_meshes(const TomlReader& r, Scene& scene) {
             std::size_t at = 0;
             for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
                 ScenePolygon p{SceneId(id), color, {}};
+                p.line = int(t->source().begin.line);
                 if (id < 1 || id > 65535) r.fail(t->get("id"), join(f, "id"), "the mesh's faces need ids from 1 to 65535");
                 ++id;
                 const std::string face_name = path.filename().string() + ": face " + std::to_string(face + 1);
@@ -52,14 +105,18 @@ void read_meshes(const TomlReader& r, Scene& scene) {
                     const int index = shape.mesh.indices[at++].vertex_index;
                     if (index < 0 || 3 * std::size_t(index) + 2 >= v.size())
                         r.fail(t->get("file"), join(f, "file"),
-                               face_name + " names vertex " + std::to_string(std::int64_t(index) + 1) + ", but the file has " +
-                                   std::to_string(v.size() / 3) + " vertices");
+                               face_name + (index < 0 ? " names a vertex before the first (a negative index counts back from the last)"
+                                                      : " names vertex " + std::to_string(std::int64_t(index) + 1)) +
+                                   ", but the file has " + std::to_string(v.size() / 3) + " vertices");
                     const auto vi = std::size_t(index);
                     const glm::dvec3 q = glm::dvec3(v[3 * vi], v[3 * vi + 1], v[3 * vi + 2]) * scale;
                     p.vertices.emplace_back(q.x * std::cos(turn) + q.z * std::sin(turn) + move.x, q.y + move.y,
                                             -q.x * std::sin(turn) + q.z * std::cos(turn) + move.z, 1.0);
+                    if (!(glm::length(glm::dvec3(p.vertices.back())) <= max_world_coordinate))
+                        r.fail(t->get("file"), join(f, "file"), face_name + ": a vertex lies beyond ±1e100 (after scale and translate)");
                 }
                 if (!has_area(p.vertices)) r.fail(t->get("file"), join(f, "file"), face_name + " has no area");
+                if (bend(p.vertices) > max_bend) r.fail(t->get("file"), join(f, "file"), face_name + ": " + not_planar(bend(p.vertices)));
                 scene.polygons.push_back(std::move(p));
             }
         }

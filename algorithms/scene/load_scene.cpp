@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <set>
 
 #include "bsp/bsp_events.h"
+#include "core/events.h"
 #include "core/numeric.h"
 #include "core/plane.h"
 #include "scene/load_floor_plan.h"
@@ -66,6 +69,13 @@ Camera read_camera(const TomlReader& r, const toml::table* t) {
     if (c.projection == Projection::perspective && !(c.near > 0))
         r.fail(t->get("near"), join(f, "near"), "expected near > 0 for a perspective camera");
     if (!(c.far > c.near)) r.fail(t->get("far"), join(f, "far"), "expected far > near");
+    // Beyond 10^15 the perspective depth of everything rounds to the far plane's in every format, and the
+    // projection's terms leave the doubles' range: the renderers would draw nothing while the painters draw all.
+    if (c.projection == Projection::perspective && c.far / c.near > 1e15)
+        r.fail(t->get("far"), join(f, "far"), "far / near is " + format_number(c.far / c.near) + "; at most 1e15");
+    for (const auto& [key, p] : {std::pair{"eye", c.eye}, std::pair{"target", c.target}})
+        if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > max_world_coordinate)
+            r.fail(t->get(key), join(f, key), "world coordinates must lie within ±1e100");
     return c;
 }
 
@@ -193,15 +203,41 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
 
 // Newell's normal is zero for a polygon with no area; "zero" relative to the polygon's size, so that collinear
 // vertices given with rounding still count.
-bool has_area(const std::vector<glm::dvec4>& vertices) {
+namespace {
+// The polygon moved and scaled into a unit box (its size, the box's diagonal, returned): tests of shape then hold
+// at any magnitude, where squares of coordinates near 1e154 would overflow.
+std::vector<Vec3> unit_sized(const std::vector<glm::dvec4>& vertices, double& size) {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const auto& x : vertices) lo = glm::min(lo, glm::dvec3(x)), hi = glm::max(hi, glm::dvec3(x));
+    const glm::dvec3 extent = hi - lo;
+    const double largest = std::max({extent.x, extent.y, extent.z});
+    size = largest > 0 && std::isfinite(largest) ? glm::length(extent / largest) : 0;  // a diagonal of 1 … √3
     std::vector<Vec3> v;
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (const auto& x : vertices) {
-        v.emplace_back(x);
-        lo = glm::min(lo, glm::dvec3(x)), hi = glm::max(hi, glm::dvec3(x));
-    }
-    const double size = glm::length(hi - lo);
+    for (const auto& x : vertices) v.push_back(largest > 0 ? (glm::dvec3(x) - lo) / largest : glm::dvec3(0));
+    return v;
+}
+}  // namespace
+
+std::string not_planar(double b) {
+    char s[160];
+    std::snprintf(s, sizeof s, "the polygon is not planar: a vertex lies %.2g of its size off its plane (at most %.0e; split it into triangles)", b, max_bend);
+    return s;
+}
+
+bool has_area(const std::vector<glm::dvec4>& vertices) {
+    double size = 0;
+    const std::vector<Vec3> v = unit_sized(vertices, size);
     return size > 0 && measure(v) > 1e-12 * size * size;
+}
+
+double bend(const std::vector<glm::dvec4>& vertices) {
+    double size = 0;
+    const std::vector<Vec3> v = unit_sized(vertices, size);
+    Plane plane;
+    if (size == 0 || !plane_of(v, plane)) return 0;
+    double farthest = 0;
+    for (const Vec3& p : v) farthest = std::max(farthest, std::abs(plane.distance(p)));
+    return farthest / size;
 }
 
 Scene read_scene(const TomlReader& r) {
@@ -231,6 +267,8 @@ Scene read_scene(const TomlReader& r) {
         const glm::dvec4 v = r.vector(n, field, dims, dims);
         if (s.coordinates == Coordinates::clip && !clippable(v))
             r.fail(&n, field, "clip-space coordinates must lie within ±1e307 (beyond it w − x can overflow)");
+        if (s.coordinates == Coordinates::world && std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > max_world_coordinate)
+            r.fail(&n, field, "world coordinates must lie within ±1e100 (beyond it plane tests can overflow)");
         return v;
     };
     auto vertex = [&](const toml::table& t, std::string_view key, const std::string& f) {
@@ -250,6 +288,7 @@ Scene read_scene(const TomlReader& r) {
         r.only_keys(t, f, {"id", "color", "opacity", "vertices"});
         ScenePolygon p{read_id(t, f), read_color(r, t, f), {}};
         p.opacity = r.number(t, "opacity", f, 1.0);
+        p.line = int(t.source().begin.line);
         if (!(p.opacity >= 0 && p.opacity <= 1)) r.fail(t.get("opacity"), join(f, "opacity"), "expected an opacity from 0 to 1");
         const toml::array* v = r.array(t, "vertices", f, true);
         for (std::size_t i = 0; i < v->size(); ++i)
@@ -259,6 +298,8 @@ Scene read_scene(const TomlReader& r) {
         if (s.coordinates == Coordinates::world && !has_area(p.vertices))
             r.fail(t.get("vertices"), join(f, "vertices"),
                    "the polygon has no area (its vertices are on one line or at one point)");
+        if (s.coordinates == Coordinates::world && bend(p.vertices) > max_bend)
+            r.fail(t.get("vertices"), join(f, "vertices"), not_planar(bend(p.vertices)));
         s.polygons.push_back(std::move(p));
     });
     read_meshes(r, s);
@@ -277,6 +318,9 @@ Scene read_scene(const TomlReader& r) {
         if (!ids.contains(x.id))
             throw LoadError(r.path(), x.line, 1, "expect.clip.id",
                             "no primitive has id " + std::to_string(x.id));
+    if (s.points.empty() && s.segments.empty() && s.polygons.empty() && s.floor_plan.cells.empty())
+        r.fail(nullptr, "", "the scene has nothing in it (no points, segments, polygons, meshes or floor plan): "
+                            "an empty file, or one saved half-written?");
     return s;
 }
 

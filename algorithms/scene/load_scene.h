@@ -29,6 +29,14 @@ Scene load_scene(const std::string& path);                          // throws Lo
 Scene load_scene_text(const std::string& path, std::string_view text);  // throws LoadError
 Scene read_scene(const TomlReader& toml);
 // Does a polygon (3 or more vertices) have area, relative to its size? (Collinear vertices with rounding do not.)
+// Measured on the polygon scaled to unit size, so it holds at any magnitude a scene allows.
 bool has_area(const std::vector<glm::dvec4>& vertices);
+// How far the polygon's farthest vertex lies off its (Newell) plane, as a share of the polygon's size: 0 for a
+// planar polygon, about 1e-16 for one given with rounding. A scene refuses more than max_bend.
+double bend(const std::vector<glm::dvec4>& vertices);
+inline constexpr double max_bend = 1e-4;
+std::string not_planar(double bend);  // the message for a polygon bent more than max_bend
+// World coordinates beyond this are refused: products of three coordinates (plane tests, Newell's normal) stay finite.
+inline constexpr double max_world_coordinate = 1e100;
 
 }  // namespace hsr::algo

@@ -51,6 +51,7 @@ struct ScenePolygon {
     Color color;
     std::vector<glm::dvec4> vertices;
     double opacity = 1;  // 0 … 1: drawn with "over" by the painter's algorithms; the z-buffer draws it opaque
+    int line = 0;        // where the scene file writes it (its [[polygons]] or [[meshes]] table); 0: generated
 };
 
 // A cells-and-portals scene in the lecture's simplest form: a floor plan of convex cells joined by portals

@@ -5,12 +5,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/input_file.h"
+
 namespace hsr::algo {
 namespace {
 
 std::string where(const std::string& file, int line, int column, const std::string& field, const std::string& msg) {
-    std::string out = file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
-    if (!field.empty()) out += "field '" + field + "': ";
+    std::string out = printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+    if (!field.empty()) out += "field '" + printable(field) + "': ";
     return out + msg;
 }
 
@@ -23,12 +25,32 @@ toml::table parse(const std::string& path, std::string_view text) {
     }
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw LoadError(path, 0, 0, "", "cannot open the file");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+// Keys and texts far longer than any lesson's are refused before anything quotes or draws them: a 17,000-character
+// name or a 1 MB key would otherwise reach the window's text drawing (16-bit vertex indices) or an error message.
+void bound_texts(const std::string& path, const toml::node& n) {
+    const auto refuse = [&](const toml::node& at, const std::string& what) {
+        throw LoadError(path, int(at.source().begin.line), int(at.source().begin.column), "", what);
+    };
+    if (const toml::table* t = n.as_table()) {
+        for (const auto& [key, value] : *t) {
+            if (key.str().size() > max_key_length)
+                refuse(value, "a key of " + std::to_string(key.str().size()) + " characters; keys are at most " +
+                                  std::to_string(max_key_length));
+            bound_texts(path, value);
+        }
+    } else if (const toml::array* a = n.as_array()) {
+        for (const toml::node& value : *a) bound_texts(path, value);
+    } else if (const auto* s = n.as_string()) {
+        if (s->get().size() > max_text_length)
+            refuse(n, "a text of " + std::to_string(s->get().size()) + " characters; texts are at most " +
+                          std::to_string(max_text_length) + " (a lesson's longest summary is about 700)");
+    }
+}
+
+toml::table parse_bounded(const std::string& path, std::string_view text) {
+    toml::table t = parse(path, text);
+    bound_texts(path, t);
+    return t;
 }
 
 }  // namespace
@@ -42,8 +64,8 @@ std::string join(const std::string& field, std::string_view key) {
 }
 std::string index(const std::string& field, std::size_t i) { return field + "[" + std::to_string(i) + "]"; }
 
-TomlReader::TomlReader(std::string path) : path_(std::move(path)), root_(parse(path_, read_file(path_))) {}
-TomlReader::TomlReader(std::string path, std::string_view text) : path_(std::move(path)), root_(parse(path_, text)) {}
+TomlReader::TomlReader(std::string path) : path_(std::move(path)), root_(parse_bounded(path_, read_input_file(path_))) {}
+TomlReader::TomlReader(std::string path, std::string_view text) : path_(std::move(path)), root_(parse_bounded(path_, text)) {}
 
 void TomlReader::fail(const toml::node* at, const std::string& field, const std::string& message) const {
     const auto& src = at ? at->source() : root_.source();

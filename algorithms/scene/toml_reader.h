@@ -21,9 +21,13 @@ public:
     const int line, column;
 };
 
+// Far above any real lesson (its longest text is about 700 characters), far below what the window cannot draw.
+inline constexpr std::size_t max_text_length = 4000, max_key_length = 100;
+
 class TomlReader {
 public:
-    // Parses the file; a syntax error or a missing file is a LoadError.
+    // Parses the file; a syntax error, a file that is not a regular file of text or a text beyond the bounds
+    // above is a LoadError.
     explicit TomlReader(std::string path);
     // Parses text as if it came from `path` (for tests and editors).
     TomlReader(std::string path, std::string_view text);

@@ -141,9 +141,9 @@ TEST_CASE("OBJ meshes load as closed polygons, placed and numbered, and back-fac
 }
 
 TEST_CASE("a mesh that cannot be read names the scene file, line and field", "[culling][meshes][errors]") {
-    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"../meshes/none.obj\"\n"),
+    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"meshes/none.obj\"\n"),
                       Catch::Contains("x.toml:2") && Catch::Contains("meshes[0].file") && Catch::Contains("none.obj"));
-    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"../meshes/cube.obj\"\nid = 65533\n"),
+    CHECK_THROWS_WITH(load_scene_text(HSR_SOURCE_DIR "/assets/scenes/x.toml", "[[meshes]]\nfile = \"meshes/cube.obj\"\nid = 65533\n"),
                       Catch::Contains("ids from 1 to 65535"));
 }
 

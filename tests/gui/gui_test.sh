@@ -40,7 +40,8 @@ case "$case" in
     ! cmp -s a.png b.png ;;
   bad-lesson)  # a typo in a lesson: the window opens, shows the error, and exits cleanly
     printf 'title = "typo"\nalgorithm = "cohen_sutherlnd"\nscene = "x.toml"\n' > typo.toml
-    "$hsrviz" typo.toml --screenshot typo.png --frames 3 2> err.txt
+    rc=0; "$hsrviz" typo.toml --screenshot typo.png --frames 3 2> err.txt || rc=$?
+    test "$rc" -eq 1   # the picture shows the error; the exit says the lesson did not load
     grep -q "typo.toml:2:" err.txt
     grep -q "unknown algorithm" err.txt
     "$png_check" typo.png 1280 800 || true   # an error panel only: the 3D view is empty on purpose

@@ -158,6 +158,6 @@ TEST_CASE("a file edited on disk is noticed once, and not before half a second",
 }
 
 TEST_CASE("a lesson naming a scene too long for the file system is an error, not a crash (found by fuzz_lesson)", "[lesson][errors]") {
-    const std::string text = "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" + std::string(5000, 'x') + "\"\n";
-    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/long.toml", text), Catch::Contains("long.toml:3") && Catch::Contains("no such file"));
+    const std::string text = "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" + std::string(3000, 'x') + "\"\n";
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/long.toml", text), Catch::Contains("long.toml:3") && Catch::Contains("File name too long"));
 }

@@ -2,6 +2,8 @@
 // named (file and line) and the rest still used.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sys/stat.h>
 
 #include "catch.h"
 #include "state/window_settings.h"
@@ -17,7 +19,7 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(warning.empty());
 
     const WindowSettings s{.width = 1600, .height = 900, .x = 40, .y = -20, .maximized = true, .side = 620, .language = "de"};
-    REQUIRE(write_window_settings(path, s));
+    REQUIRE(write_window_settings(path, s).empty());
     CHECK(read_window_settings(path, warning) == s);
     CHECK(warning.empty());
 
@@ -31,6 +33,26 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     std::ofstream(path) << "width = [1\n";
     CHECK(read_window_settings(path, warning) == WindowSettings{});
     CHECK(warning.find("window.toml:") != std::string::npos);
+    CHECK(warning.find("kept as") != std::string::npos);  // the broken file is kept aside, not replaced unseen
+    CHECK(std::filesystem::exists(path + ".bak"));
+    CHECK_FALSE(std::filesystem::exists(path));
+
+    // HSRVIZ_CONFIG pointed at a lesson: read as nothing, and never overwritten
+    const std::string lesson = dir + "/lesson.toml", text = "title = \"Mine\"\nalgorithm = \"zbuffer_fill\"\n";
+    std::ofstream(lesson) << text;
+    CHECK(read_window_settings(lesson, warning) == WindowSettings{});
+    CHECK(warning.find("is not an hsrviz settings file (it has 'algorithm')") != std::string::npos);
+    CHECK_FALSE(write_window_settings(lesson, s).empty());
+    std::ifstream in(lesson);
+    CHECK(std::string(std::istreambuf_iterator<char>(in), {}) == text);
+    // A FIFO or a folder at the path: neither read (no hang) nor replaced
+    const std::string fifo = dir + "/fifo.toml";
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK(read_window_settings(fifo, warning) == WindowSettings{});
+    CHECK(warning.find("FIFO") != std::string::npos);
+    CHECK_FALSE(write_window_settings(fifo, s).empty());
+    CHECK(std::filesystem::is_fifo(fifo));
+    CHECK_FALSE(write_window_settings(dir + "/sub", s).empty());
 
     CHECK(clamp_side(100, 1280) == 320);
     CHECK(clamp_side(2000, 1280) == 960);

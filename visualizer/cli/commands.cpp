@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene/input_file.h"
 #include "state/course.h"
 #include "state/lesson.h"
 #include "state/lesson_check.h"
@@ -31,7 +32,7 @@ int run_trace(const TraceOptions& o) {
                     hex(t.hash).c_str(), o.out.c_str());
         return 0;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "hsrviz: %s\n", e.what());
+        std::fprintf(stderr, "hsrviz: %s\n", algo::printable(e.what(), 2000).c_str());
         return 1;
     }
 }
@@ -66,14 +67,14 @@ int run_check(std::vector<std::string> files, const std::string& root) {
     int bad = 0;
     for (const std::string& f : files) {
         const CheckResult r = check_file(f);
-        for (const std::string& w : r.warnings) std::printf("warn  %s\n", w.c_str());
+        for (const std::string& w : r.warnings) std::printf("warn  %s\n", algo::printable(w, 2000).c_str());
         if (r.problems.empty()) {
-            std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", f.c_str(), r.events, r.chapters, r.questions);
+            std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", algo::printable(f).c_str(), r.events, r.chapters, r.questions);
             continue;
         }
         ++bad;
-        std::printf("FAIL  %s\n", f.c_str());
-        for (const std::string& p : r.problems) std::printf("      %s\n", p.c_str());
+        std::printf("FAIL  %s\n", algo::printable(f).c_str());
+        for (const std::string& p : r.problems) std::printf("      %s\n", algo::printable(p, 2000).c_str());
     }
     std::printf("%zu files checked, %d with problems\n", files.size(), bad);
     return bad == 0 ? 0 : 1;

@@ -7,11 +7,14 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/input_file.h"
 #include "analysis/painters.h"
 #include "cli/png_io.h"
+#include "state/arguments.h"
 #include "raster/image.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
+#include "raster/screen_polygon.h"
 #include "raycast/ray_cast.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
@@ -78,6 +81,10 @@ algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, alg
             .run_to_end();
     std::printf("zbuffer (%s): %zu polygons, %llu depth tests, %llu writes in %.3f ms\n", std::string(to_string(format)).c_str(),
                 scene.polygons.size(), (unsigned long long)f.tested, (unsigned long long)f.written, ms_since(start));
+    if (f.tested > 0 && f.written == 0)  // a blank picture that is right for the format, said so it is not taken for a bug
+        std::fprintf(stderr, "hsrviz: no pixel passed the depth test: in %s every depth rounds to the far plane's code "
+                             "(near %g, far %g); try --format float32-reversed or a larger near\n",
+                     std::string(to_string(format)).c_str(), scene.camera.near, scene.camera.far);
     return std::move(f.image);
 }
 
@@ -126,17 +133,21 @@ algo::Scene generated_or_loaded(const std::string& name) {
 int run_render(const RenderOptions& o) {
     try {
         algo::Scene scene = generated_or_loaded(o.scene);
+        if (const auto refused = algo::polygons_not_convex(scene); !refused.empty())
+            throw std::runtime_error(refused.front() + (refused.size() > 1 ? " (and " + std::to_string(refused.size() - 1) + " more)" : ""));
         if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
         if (scene.coordinates != algo::Coordinates::world)
             throw std::runtime_error(o.scene + ": render needs world coordinates");
-        int w = 0, h = 0;
-        if (std::sscanf(o.size.c_str(), "%dx%d", &w, &h) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-            throw std::runtime_error("--size: expected WxH from 1x1 to 16384x16384, got " + o.size);
+        const auto size = parse_size(o.size);
+        if (!size) throw std::runtime_error("--size: expected WxH from 1x1 to 16384x16384, got " + algo::printable(o.size, 60));
+        const auto [w, h] = *size;
         if (o.eye) {
-            glm::dvec3 e;
-            if (std::sscanf(o.eye->c_str(), "%lf,%lf,%lf", &e.x, &e.y, &e.z) != 3)
-                throw std::runtime_error("--eye: expected X,Y,Z, got " + *o.eye);
-            scene.camera.eye = e;
+            const auto e = parse_point(*o.eye);
+            if (!e) throw std::runtime_error("--eye: expected X,Y,Z (finite numbers within ±1e100), got " + algo::printable(*o.eye, 60));
+            if (glm::length(scene.camera.target - *e) == 0) throw std::runtime_error("--eye: the eye is at the camera's target; it must look at it from somewhere");
+            if (glm::length(glm::cross(scene.camera.target - *e, scene.camera.up)) == 0)
+                throw std::runtime_error("--eye: from there the camera looks along its up direction; move the eye sideways");
+            scene.camera.eye = *e;
         }
         scene.camera.aspect = double(w) / double(h);
         if (o.ids)
@@ -157,7 +168,7 @@ int run_render(const RenderOptions& o) {
         std::printf("wrote %s%s%s\n", o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
         return 0;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "hsrviz: %s\n", e.what());
+        std::fprintf(stderr, "hsrviz: %s\n", algo::printable(e.what(), 2000).c_str());
         return 1;
     }
 }

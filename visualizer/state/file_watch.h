@@ -16,6 +16,12 @@ public:
         files_.clear();
         for (const std::string& f : files) files_.push_back({f, stamp(f)});
     }
+    // The files watched now, by name.
+    std::vector<std::string> files() const {
+        std::vector<std::string> out;
+        for (const auto& [file, time] : files_) out.push_back(file);
+        return out;
+    }
     // True once per change (after the files settled at their new times).
     bool changed(double dt) {
         since_ += dt;

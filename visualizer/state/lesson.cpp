@@ -1,13 +1,13 @@
 #include "state/lesson.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
 #include "core/numeric.h"
 #include "culling/pipeline.h"
+#include "scene/input_file.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 #include "scene/toml_reader.h"
@@ -75,7 +75,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
                    algo::DepthFormat::float32_reversed, algo::DepthFormat::linear24})
         if (format == algo::format_id(f)) lesson.depth_format = f, known_format = true;
     if (!known_format)
-        r.fail(root.get("format"), "format", "expected int16, int24, int32, float32, float32-reversed or linear24");
+        r.fail(root.get("format"), "format", "expected int16, int24, int32, float32, float32-reversed or linear24, got \"" + algo::printable(format, 60) + "\"");
     if (root.contains("grid")) {
         const glm::dvec4 g = r.vector(*root.get("grid"), "grid", 2, 2);
         if (g.x < 1 || g.y < 1 || g.x > 256 || g.y > 256 || g.x != std::floor(g.x) || g.y != std::floor(g.y))
@@ -91,11 +91,14 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     } catch (const algo::InvalidInput& e) {
         r.fail(root.get("scene"), "scene", e.what());
     }
-    const auto scene_path = std::filesystem::path(path).parent_path() / scene;
-    std::error_code ec;  // a name too long for the file system is an error to report, not an exception to crash on
-    if (!std::filesystem::is_regular_file(scene_path, ec))
-        r.fail(root.get("scene"), "scene", "no such file: " + scene_path.string() + (ec ? " (" + ec.message() + ")" : ""));
-    lesson.scene = algo::load_scene(scene_path.lexically_normal().string());
+    const auto scene_path = (std::filesystem::path(path).parent_path() / scene).lexically_normal();
+    try {
+        lesson.scene = algo::load_scene(scene_path.string());
+    } catch (const algo::LoadError& e) {
+        // The scene file itself cannot be read (missing, a folder, a FIFO, too long a name): the lesson's line names it.
+        if (e.line == 0) r.fail(root.get("scene"), "scene", algo::printable(scene_path.string()) + ": " + e.message);
+        throw;  // an error inside the scene names the scene's own line
+    }
     return lesson;
 }
 

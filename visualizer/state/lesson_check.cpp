@@ -1,6 +1,7 @@
 #include "state/lesson_check.h"
 
 #include "analysis/expect_check.h"
+#include "raster/screen_polygon.h"
 #include "state/families.h"
 #include "state/glyphs.h"
 #include "state/lesson_script.h"
@@ -39,6 +40,8 @@ CheckResult check_file(const std::string& path) {
             for (const char32_t c : glyphs_missing(text))
                 r.warnings.push_back(path + ": " + field + ": " + glyph_name(c) + " is not in the window's font (the window draws � instead)");
         for (const Chapter& c : lesson.chapters) r.questions += c.question.has_value();
+        for (const std::string& p : algo::polygons_not_convex(lesson.scene))
+            r.warnings.push_back(p + " (the clippers take it; the hidden-surface algorithms and `render` refuse it)");
         for (std::string& p : script.problems(lesson, event_kinds(lesson))) r.problems.push_back(std::move(p));
         // A scene's own [expect] tables, against the machines (a teacher's scene states what it should show)
         for (const analysis::ExpectOutcome& o : analysis::check_expectations(lesson.scene))

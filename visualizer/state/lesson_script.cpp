@@ -27,6 +27,9 @@ LessonScript::LessonScript(const Session& s) {
             if (fits(event(k), ch.question->answer_event)) {
                 p.answered = k + 1;
                 p.answer = event(k).contains(ch.question->field) ? value_text(event(k)[ch.question->field]) : "";
+                if (!event(k).contains(ch.question->field))
+                    for (const auto& [key, value] : event(k).items())
+                        if (key != "kind" && key != "text") p.fields.push_back(key);
                 p.because = event(k).value("text", "");
                 p.held = k;
                 break;
@@ -81,7 +84,12 @@ std::vector<std::string> LessonScript::problems(const Lesson& lesson, const std:
             out.push_back(q + ".reveals: the machine never tells \"" + *ch.question->reveals + "\"");
         else if (places_[c].starts && !places_[c].answered)
             out.push_back(q + ": no event after the chapter starts answers it");
-        else if (places_[c].answered && !ch.question->choices.empty() &&
+        else if (places_[c].answered && !places_[c].fields.empty()) {
+            std::string fields;
+            for (const std::string& f : places_[c].fields) fields += (fields.empty() ? "" : ", ") + f;
+            out.push_back(q + ".field: the event \"" + ch.question->answer_event.kind + "\" has no field \"" + ch.question->field +
+                          "\"; it has " + fields);
+        } else if (places_[c].answered && !ch.question->choices.empty() &&
                  std::find(ch.question->choices.begin(), ch.question->choices.end(), places_[c].answer) == ch.question->choices.end())
             out.push_back(q + ".choices: the machine's answer \"" + places_[c].answer + "\" is not among them");
     }

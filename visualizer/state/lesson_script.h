@@ -17,6 +17,7 @@ struct ChapterPlace {
                                          // that answers it, or before an earlier one that gives the answer away)
     std::string answer;                  // the answer's field, as text
     std::string because;                 // the answering event's sentence
+    std::vector<std::string> fields;     // the answering event's fields, when it lacks the question's field
 };
 
 class LessonScript {

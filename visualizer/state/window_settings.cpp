@@ -4,8 +4,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string_view>
+#include <vector>
 
 #include <toml++/toml.h>
+
+#include "scene/input_file.h"
+#include "scene/toml_reader.h"
 
 namespace hsr::viz {
 
@@ -16,16 +21,43 @@ std::string window_settings_path() {
     return "hsrviz-window.toml";
 }
 
+namespace {
+
+constexpr std::size_t settings_limit = 64 << 10;  // a settings file is a few lines
+const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language"};
+
+// The first key a settings file does not have, if any: such a file is someone else's (a lesson, say) and is
+// neither used nor overwritten.
+std::optional<std::string> foreign_key(const toml::table& t) {
+    for (const auto& [key, value] : t)
+        if (std::find(settings_keys.begin(), settings_keys.end(), key.str()) == settings_keys.end()) return std::string(key.str());
+    return std::nullopt;
+}
+
+}  // namespace
+
 WindowSettings read_window_settings(const std::string& path, std::string& warning) {
     warning.clear();
     WindowSettings s;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return s;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)) && !std::filesystem::exists(path, ec)) return s;
     toml::table t;
     try {
-        t = toml::parse_file(path);
-    } catch (const toml::parse_error& e) {
-        warning = path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) + "; using the defaults";
+        t = toml::parse(algo::read_input_file(path, settings_limit), path);
+    } catch (const algo::LoadError& e) {  // not a regular file, too large, empty: not ours to read or replace
+        warning = algo::printable(path) + ": " + e.message + "; using the defaults, and the settings are not saved there";
+        return s;
+    } catch (const toml::parse_error& e) {  // a broken settings file is kept beside, never silently replaced
+        const std::string kept = path + ".bak";
+        std::filesystem::rename(path, kept, ec);
+        warning = algo::printable(path) + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
+                  (ec ? "; using the defaults (it could not be kept aside: " + ec.message() + ")"
+                      : "; kept as " + algo::printable(kept) + ", using the defaults");
+        return s;
+    }
+    if (const auto key = foreign_key(t)) {
+        warning = algo::printable(path) + " is not an hsrviz settings file (it has '" + algo::printable(*key, 60) +
+                  "'); it is left alone: the defaults are used and the settings are not saved there";
         return s;
     }
     // Each field on its own: a bad one is skipped and named, the rest still used.
@@ -44,20 +76,41 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
     s.y = integer("y", -16384, 16384);
     if (const auto side = integer("side", 200, 4000)) s.side = float(*side);
     if (const auto m = t["maximized"].value<bool>()) s.maximized = *m;
-    if (const auto l = t["language"].value<std::string>()) s.language = *l;
+    if (const auto l = t["language"].value<std::string>(); l && l->size() <= 16) s.language = *l;
     return s;
 }
 
-bool write_window_settings(const std::string& path, const WindowSettings& s) {
+std::string write_window_settings(const std::string& path, const WindowSettings& s) {
     std::error_code ec;
-    const auto dir = std::filesystem::path(path).parent_path();
-    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+    const std::filesystem::path file(path);
+    if (std::filesystem::exists(file, ec)) {  // only a settings file is replaced: never a lesson, a FIFO or a folder
+        try {
+            if (const auto key = foreign_key(toml::parse(algo::read_input_file(path, settings_limit), path)))
+                return path + " is not an hsrviz settings file (it has '" + algo::printable(*key, 60) + "'); left alone";
+        } catch (const std::exception&) {
+            return path + " is not an hsrviz settings file; left alone";
+        }
+    }
+    if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);
     toml::table t{{"width", s.width}, {"height", s.height}, {"maximized", s.maximized}, {"side", int(s.side)}, {"language", s.language}};
     if (s.x) t.insert("x", *s.x);
     if (s.y) t.insert("y", *s.y);
-    std::ofstream f(path);
-    f << "# hsrviz remembers the window here between runs; delete the file to start afresh.\n" << t << '\n';
-    return static_cast<bool>(f);
+    // A new file, then renamed over the old one: a full disk or a crash mid-write leaves the old settings whole.
+    const std::string temporary = path + ".new";
+    {
+        std::ofstream f(temporary, std::ios::trunc);
+        f << "# hsrviz remembers the window here between runs; delete the file to start afresh.\n" << t << '\n';
+        if (!f.flush()) {
+            std::filesystem::remove(temporary, ec);
+            return "cannot write " + temporary;
+        }
+    }
+    std::filesystem::rename(temporary, file, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        return "cannot replace " + path;
+    }
+    return "";
 }
 
 float clamp_side(float side, float window_width) { return std::clamp(side, 320.0f, std::max(320.0f, window_width - 320.0f)); }

@@ -20,9 +20,12 @@ struct WindowSettings {
 // $HSRVIZ_CONFIG if set, else $XDG_CONFIG_HOME/hsrviz/window.toml, else ~/.config/hsrviz/window.toml.
 std::string window_settings_path();
 // The settings in `path`; `warning` gets why a file there was not used (empty when it was, or when there is none).
+// A broken settings file is kept as PATH.bak (said in the warning); a file that is not a settings file (a lesson,
+// a FIFO, a folder) is read as nothing and left alone.
 WindowSettings read_window_settings(const std::string& path, std::string& warning);
-// Writes them (making the folder); false when it cannot.
-bool write_window_settings(const std::string& path, const WindowSettings& s);
+// Writes them (making the folder) through a new file renamed over the old one, and only over a settings file:
+// "" when written, else why not.
+std::string write_window_settings(const std::string& path, const WindowSettings& s);
 // The column width kept within a window: at least 320 points, and at least 320 left for the view.
 float clamp_side(float side, float window_width);
 
