@@ -147,6 +147,7 @@ void Lessonplay::cancel_report() {
 
 void Lessonplay::tell(const std::string& text) {
     std::printf("hsrviz: %s\n", algo::printable(text, 2000).c_str());
+    std::fflush(stdout);  // seen at once by whoever reads the terminal or a log (a watched reload, a test)
     toasts.say(algo::printable(text, 2000), seconds_now());
 }
 

@@ -321,6 +321,30 @@ case "$case" in
     printf 'side = "wide"\n' > window.toml
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot broken.png --frames 2 2> broken.txt
     grep -q "window.toml:1: field 'side'" broken.txt ;;
+  reload)  # a lesson or its scene edited on disk reloads by itself at the same step, also after a save that broke it
+    scene=$(sed -n 's/^scene = "\(.*\)"$/\1/p' "$src/lessons/03_sutherland_hodgman.toml")
+    cp "$src/lessons/$scene" good_scene.toml
+    cp good_scene.toml scene.toml
+    sed -e 's#^scene = .*#scene = "scene.toml"#' -e '/^prerequisites/d' -e '/^\[\[chapters\]\]/,$d' \
+        "$src/lessons/03_sutherland_hodgman.toml" > good.toml
+    cp good.toml l.toml
+    "$hsrviz" l.toml --keys Right,Right,Right,Right,Right --screenshot still.png --frames 10 > still.txt
+    step=$(grep -o "at step [0-9]* of" still.txt)
+    test -n "$step"
+    "$hsrviz" l.toml --keys Right,Right,Right,Right,Right --screenshot reload.png --frames 4000 > reload.txt &
+    pid=$!
+    wait_for() { for _ in $(seq 160); do if [ "$(grep -c "$1" reload.txt)" -ge "$2" ]; then return 0; fi; sleep 0.25; done; return 1; }
+    sleep 2
+    printf 'title = "broken\n' > l.toml        # a save gone wrong
+    wait_for "could not reload" 1
+    cp good.toml l.toml                        # fixed: reloaded at the same step
+    wait_for "reloaded l.toml" 1
+    printf '[camera]\nfov = 0\n' > scene.toml   # now the scene breaks
+    wait_for "could not reload" 2
+    cp good_scene.toml scene.toml              # fixed: the scene is still watched after its own failure
+    wait_for "reloaded l.toml" 2
+    wait "$pid"
+    grep -q "$step" reload.txt ;;
   report)  # hsrviz report --quick: every family's table, a CSV row per measurement, a chart per family
     "$hsrviz" report --quick --out rep > out.txt
     grep -q "0 violations" out.txt
