@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
 
 #include "scene/input_file.h"
 #include "scene/toml_reader.h"
@@ -50,6 +51,8 @@ void Lessonplay::load(const AppOptions& o) {
         place_before_error.reset();
     } catch (const algo::LoadError& e) {  // a bad file shows its error instead of the scene
         failed_to_load(e.what(), watched, e.file);
+    } catch (const std::bad_alloc&) {
+        failed_to_load(path + ": out of memory: the lesson needs more than this machine (or its limits) allow", watched, path);
     } catch (const std::exception& e) {
         failed_to_load(e.what(), watched, path);
     }

@@ -49,15 +49,23 @@ void add_sphere(Scene& s, glm::dvec3 centre, double r, int slices, int stacks, C
         }
 }
 
-std::optional<Scene> generated_scene(const std::string& name) {
+std::optional<std::size_t> generated_triangles(const std::string& name) {
     const std::size_t colon = name.find(':');
     const std::string kind = name.substr(0, colon);
     if (colon == std::string::npos || (kind != "city" && kind != "field" && kind != "spheres")) return std::nullopt;
+    const std::string count = name.substr(colon + 1);
     char* end = nullptr;
-    const unsigned long long n = std::strtoull(name.c_str() + colon + 1, &end, 10);
-    if (colon + 1 == name.size() || *end != 0 || n < 12 || n > 20'000'000)
+    const unsigned long long n = std::strtoull(count.c_str(), &end, 10);
+    if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos || *end != 0 || n < 12 || n > 20'000'000)
         throw InvalidInput(name + ": expected " + kind + ":N with N from 12 to 20000000 triangles");
-    const GeneratedScene g{.triangles = std::size_t(n)};
+    return std::size_t(n);
+}
+
+std::optional<Scene> generated_scene(const std::string& name) {
+    const auto n = generated_triangles(name);
+    if (!n) return std::nullopt;
+    const GeneratedScene g{.triangles = *n};
+    const std::string kind = name.substr(0, name.find(':'));
     return kind == "city" ? city_scene(g) : kind == "field" ? field_scene(g) : spheres_scene(g);
 }
 

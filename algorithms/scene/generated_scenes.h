@@ -27,6 +27,8 @@ Scene spheres_scene(GeneratedScene options);
 // "city:N", "field:N" or "spheres:N" (about N triangles, seed 1) → the generated scene; nullopt for any other name.
 // InvalidInput when the kind is one of those but N is not a count from 12 to 20,000,000.
 std::optional<Scene> generated_scene(const std::string& name);
+// The N of such a name (nothing generated yet: what a memory estimate needs first); nullopt and InvalidInput as above.
+std::optional<std::size_t> generated_triangles(const std::string& name);
 
 // A box from lo to hi as 12 triangles wound outwards; ids from `first_id`.
 void add_box(Scene& scene, glm::dvec3 lo, glm::dvec3 hi, Color color, SceneId& next_id);

@@ -35,6 +35,7 @@ struct Run {
     int exit = 1;
     std::vector<std::string> says;
     std::string no_output;  // a file that must not exist afterwards (no partial output)
+    std::string env;        // VARIABLE=value before the command
 };
 
 struct Case {
@@ -69,7 +70,7 @@ void run_case(const Case& c, std::size_t number) {
     if (c.make) c.make(dir);
     for (const Run& r : c.runs) {
         std::string command = "cd " + shell_quoted(dir.string()) + " && SDL_VIDEODRIVER=offscreen HSRVIZ_CONFIG=" + shell_quoted((dir / "window-settings.toml").string()) +
-                              " timeout 60 " + shell_quoted(hsrviz);
+                              " " + r.env + " timeout 60 " + shell_quoted(hsrviz);
         for (const std::string& a : r.args) command += " " + shell_quoted(a);
         command += " > out.txt 2>&1";
         const int status = std::system(command.c_str());
@@ -450,6 +451,16 @@ std::vector<Case> catalogue() {
     cs.push_back(command("an unknown option", {"s.toml", "--colour", "red"}, 2, {"--colour"}));
     cs.push_back(command("an unknown subcommand option", {"check", "s.toml", "--fix"}, 2, {"--fix"}));
     cs.push_back(command("a control character in a file name", {"check", "a\x1b[31mred.toml"}, 1, {"a\\x1b[31mred.toml"}));
+    // ── work no machine of the class can do: refused before it starts, with the figures ─────────────────────────
+    for (const auto& [name, args] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"render at 16384×16384", {"render", "s.toml", "--size", "16384x16384", "--out", "o.png"}},
+             {"render of city:2000000", {"render", "city:2000000", "--out", "o.png"}},
+             {"check of a lesson on field:20000000", {"check", "l.toml"}},
+             {"the window on a lesson on field:20000000", {"l.toml", "--screenshot", "w.png", "--frames", "2", "--size", "640x400"}}}) {
+        Case c{name, {{"s.toml", scene}, {"l.toml", "title = \"t\"\nalgorithm = \"cull_bounds\"\nscene = \"field:20000000\"\n"}}, {}, {}};
+        c.runs.push_back({args, 1, {"needs about", "of memory, and about 1.9 GB is available"}, "o.png", "HSRVIZ_MEMORY_LIMIT=2000000000"});
+        cs.push_back(c);
+    }
     return cs;
 }
 

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 
 #include "scene/input_file.h"
 #include "state/course.h"
@@ -31,6 +32,9 @@ int run_trace(const TraceOptions& o) {
         std::printf("%llu events, trace hash %s, written to %s\n", static_cast<unsigned long long>(t.events),
                     hex(t.hash).c_str(), o.out.c_str());
         return 0;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "hsrviz: out of memory: the trace needs more than this machine (or its limits) allow\n");
+        return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hsrviz: %s\n", algo::printable(e.what(), 2000).c_str());
         return 1;

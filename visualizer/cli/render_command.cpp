@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <new>
 #include <stdexcept>
 
 #include "scene/input_file.h"
 #include "analysis/painters.h"
 #include "cli/png_io.h"
 #include "state/arguments.h"
+#include "state/memory_budget.h"
 #include "raster/image.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
@@ -132,15 +134,19 @@ algo::Scene generated_or_loaded(const std::string& name) {
 
 int run_render(const RenderOptions& o) {
     try {
+        const auto size = parse_size(o.size);
+        if (!size) throw std::runtime_error("--size: expected WxH from 1x1 to 16384x16384, got " + algo::printable(o.size, 60));
+        const auto [w, h] = *size;
+        const std::string work = "render of " + algo::printable(o.scene, 60) + " at " + o.size;
+        // Before anything is generated or allocated: a generated scene's size is in its name
+        require_memory(memory_estimate(algo::generated_triangles(o.scene).value_or(0), std::uint64_t(w) * std::uint64_t(h)), work);
         algo::Scene scene = generated_or_loaded(o.scene);
+        require_memory(memory_estimate(scene.polygons.size(), std::uint64_t(w) * std::uint64_t(h)), work);
         if (const auto refused = algo::polygons_not_convex(scene); !refused.empty())
             throw std::runtime_error(refused.front() + (refused.size() > 1 ? " (and " + std::to_string(refused.size() - 1) + " more)" : ""));
         if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
         if (scene.coordinates != algo::Coordinates::world)
             throw std::runtime_error(o.scene + ": render needs world coordinates");
-        const auto size = parse_size(o.size);
-        if (!size) throw std::runtime_error("--size: expected WxH from 1x1 to 16384x16384, got " + algo::printable(o.size, 60));
-        const auto [w, h] = *size;
         if (o.eye) {
             const auto e = parse_point(*o.eye);
             if (!e) throw std::runtime_error("--eye: expected X,Y,Z (finite numbers within ±1e100), got " + algo::printable(*o.eye, 60));
@@ -167,6 +173,9 @@ int run_render(const RenderOptions& o) {
         if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + *o.ids);
         std::printf("wrote %s%s%s\n", o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
         return 0;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "hsrviz: out of memory: the render needs more than this machine (or its limits) allow; no image written\n");
+        return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hsrviz: %s\n", algo::printable(e.what(), 2000).c_str());
         return 1;

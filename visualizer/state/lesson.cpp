@@ -11,6 +11,7 @@
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 #include "scene/toml_reader.h"
+#include "state/memory_budget.h"
 
 namespace hsr::viz {
 namespace {
@@ -84,11 +85,14 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     }
     const std::string scene = r.text(root, "scene", "");
     try {  // a generated scene by name: city:N, field:N, spheres:N
+        if (const auto n = algo::generated_triangles(scene))  // refused before it is generated, not half-way
+            require_memory(memory_estimate(*n, std::uint64_t(lesson.grid.width) * std::uint64_t(lesson.grid.height)),
+                           "the lesson's scene " + scene);
         if (auto generated = algo::generated_scene(scene)) {
             lesson.scene = std::move(*generated);
             return lesson;
         }
-    } catch (const algo::InvalidInput& e) {
+    } catch (const std::exception& e) {  // a count out of range, or more than the memory holds
         r.fail(root.get("scene"), "scene", e.what());
     }
     const auto scene_path = (std::filesystem::path(path).parent_path() / scene).lexically_normal();

@@ -6,6 +6,8 @@
 #include "state/glyphs.h"
 #include "state/lesson_script.h"
 
+#include <new>
+
 namespace hsr::viz {
 namespace {
 
@@ -46,6 +48,8 @@ CheckResult check_file(const std::string& path) {
         // A scene's own [expect] tables, against the machines (a teacher's scene states what it should show)
         for (const analysis::ExpectOutcome& o : analysis::check_expectations(lesson.scene))
             if (!o.passed) r.problems.push_back(lesson.scene.source + ":" + std::to_string(o.line) + ": " + o.what + ": " + o.detail);
+    } catch (const std::bad_alloc&) {
+        r.problems.push_back(path + ": out of memory: the lesson needs more than this machine (or its limits) allow");
     } catch (const std::exception& e) {
         r.problems.push_back(e.what());
     }
