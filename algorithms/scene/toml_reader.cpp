@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -70,6 +71,27 @@ TomlReader::TomlReader(std::string path, std::string_view text) : path_(std::mov
 void TomlReader::fail(const toml::node* at, const std::string& field, const std::string& message) const {
     const auto& src = at ? at->source() : root_.source();
     throw LoadError(path_, int(src.begin.line), int(src.begin.column), field, message);
+}
+
+bool TomlReader::forget(const std::string& field) {
+    toml::table* table = &root_;
+    std::size_t at = 0;
+    while (at < field.size()) {
+        const std::size_t end = std::min(field.find('.', at), field.size()), bracket = field.find('[', at);
+        if (bracket < end) {  // key[i]: the element goes, with everything under it
+            toml::array* a = table->get_as<toml::array>(field.substr(at, bracket - at));
+            const std::size_t i = std::strtoul(field.c_str() + bracket + 1, nullptr, 10);
+            if (!a || i >= a->size()) return false;
+            a->erase(a->begin() + std::ptrdiff_t(i));
+            return true;
+        }
+        const std::string key = field.substr(at, end - at);
+        if (end == field.size()) return table->erase(key) > 0;
+        table = table->get_as<toml::table>(key);
+        if (!table) return false;
+        at = end + 1;
+    }
+    return false;
 }
 
 void TomlReader::only_keys(const toml::table& t, const std::string& field,

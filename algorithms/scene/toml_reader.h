@@ -36,6 +36,10 @@ public:
     const std::string& path() const { return path_; }
 
     [[noreturn]] void fail(const toml::node* at, const std::string& field, const std::string& message) const;
+    // Removes what a field path names ("camera.fov"; for "polygons[2].vertices[0]", the whole of polygons[2]), so
+    // that reading again finds the problems after it: `check` reports every problem of a file, not only the first.
+    // False when the path names nothing that can be removed.
+    bool forget(const std::string& field);
 
     // Each rejects keys a table does not know ("did you mean …" is left to the list of known keys it prints).
     void only_keys(const toml::table& t, const std::string& field, std::initializer_list<std::string_view> keys) const;

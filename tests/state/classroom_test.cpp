@@ -161,3 +161,25 @@ TEST_CASE("a lesson naming a scene too long for the file system is an error, not
     const std::string text = "title = \"t\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" + std::string(3000, 'x') + "\"\n";
     CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/long.toml", text), Catch::Contains("long.toml:3") && Catch::Contains("File name too long"));
 }
+
+TEST_CASE("check reports every problem of a file, each with its line and the field as the file numbers it", "[lesson][errors]") {
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_check_all";
+    std::filesystem::create_directories(dir);
+    const std::string file = (dir / "many.toml").string();
+    std::ofstream(file) << "name = \"many problems\"\n[camera]\neye = [0, 0, 5]\nfov = 0\nnear = -1\n"
+                           "[[polygons]]\nid = 1\nvertices = [[0,0,0],[1,0,0]]\n"
+                           "[[polygons]]\nid = 2\ncolor = \"red\"\nvertices = [[0,0,0],[1,0,0],[0,1,0]]\n"
+                           "[[polygons]]\nid = 3\nvertices = [[0,0,0],[1,0,0],[0,1,nan]]\n"
+                           "[[polygons]]\nid = 4\nvertices = [[0,0,0],[1,0,0],[0,1,0]]\n";
+    const CheckResult r = check_file(file);
+    REQUIRE(r.problems.size() == 5);
+    CHECK_THAT(r.problems[0], Catch::Contains("many.toml:4:7: field 'camera.fov'"));
+    CHECK_THAT(r.problems[1], Catch::Contains("many.toml:5:8: field 'camera.near'"));
+    CHECK_THAT(r.problems[2], Catch::Contains("many.toml:8:12: field 'polygons[0].vertices'"));
+    CHECK_THAT(r.problems[3], Catch::Contains("many.toml:11:9: field 'polygons[1].color'"));
+    CHECK_THAT(r.problems[4], Catch::Contains("many.toml:15:34: field 'polygons[2].vertices[2][2]'"));
+    // A lesson whose algorithm is unknown stops there (removed, the lesson would read as a scene)
+    std::ofstream(file) << "title = \"t\"\nalgorithm = \"zbufer\"\nscene = \"none.toml\"\nformat = \"int12\"\n";
+    REQUIRE(check_file(file).problems.size() == 1);
+    std::filesystem::remove_all(dir);
+}

@@ -1,12 +1,16 @@
 #include "state/lesson_check.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <new>
+#include <set>
+
 #include "analysis/expect_check.h"
 #include "raster/screen_polygon.h"
 #include "state/families.h"
 #include "state/glyphs.h"
 #include "state/lesson_script.h"
-
-#include <new>
 
 namespace hsr::viz {
 namespace {
@@ -26,10 +30,50 @@ std::vector<std::pair<std::string, std::string>> lesson_texts(const Lesson& l) {
     return texts;
 }
 
+// Every problem that loading the file meets, not only the first: after each, what it names is removed and the file
+// read again (at most 20, and never twice the same field: a field that is missing once removed stops it). A later
+// problem may follow from an earlier one, as a compiler's do.
+std::vector<std::string> load_problems(const std::string& path) {
+    std::vector<std::string> out;
+    try {
+        algo::TomlReader reader(path);
+        std::set<std::string> fields;
+        std::map<std::string, std::vector<std::size_t>> removed;  // by array ("polygons"): the elements removed, as first numbered
+        for (int k = 0; k < 20; ++k) {
+            try {
+                read_lesson(reader, std::nullopt);
+                return out;
+            } catch (const algo::LoadError& e) {
+                // The field as the file numbers it: polygons[1] after polygons[0] was removed is the file's polygons[2]
+                std::string field = e.field;
+                if (const std::size_t bracket = field.find('['); bracket != std::string::npos) {
+                    const std::string array = field.substr(0, bracket);
+                    std::size_t i = std::strtoul(field.c_str() + bracket + 1, nullptr, 10);
+                    std::vector<std::size_t>& gone = removed[array];
+                    for (const std::size_t r : gone) i += r <= i;
+                    field = array + "[" + std::to_string(i) + field.substr(field.find(']', bracket));
+                    gone.insert(std::upper_bound(gone.begin(), gone.end(), i), i);
+                }
+                out.push_back(algo::LoadError(e.file, e.line, e.column, field, e.message).what());
+                // (an unknown algorithm removed would read the lesson as a scene: the first problem is all there is)
+                if (e.file != path || e.field.empty() || e.field == "algorithm" || !fields.insert(e.field).second || !reader.forget(e.field))
+                    return out;
+            }
+        }
+    } catch (const std::exception& e) {  // the file itself: not there, not text, not TOML
+        out.push_back(e.what());
+    }
+    return out;
+}
+
 }  // namespace
 
 CheckResult check_file(const std::string& path) {
     CheckResult r;
+    if (std::vector<std::string> problems = load_problems(path); !problems.empty()) {
+        r.problems = std::move(problems);
+        return r;
+    }
     try {
         const Lesson lesson = load_lesson(path);
         const auto session = make_session(lesson);
