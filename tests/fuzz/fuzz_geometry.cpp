@@ -1,8 +1,9 @@
 // libFuzzer: any bytes as geometry. The bytes are read as doubles (so NaN, infinities, huge, tiny and denormal
-// values all come up) and shaped into up to 8 polygons of 3 to 6 vertices and a few segments before a fixed camera,
-// then every machine runs on them (run_machines.h).
+// values all come up) and shaped into up to 8 polygons of 3 to 6 vertices, sometimes a dense circle of up to 5,100
+// vertices, and a few segments before a fixed camera, then every machine runs on them (run_machines.h).
 #include <cstddef>
 #include <cstdint>
+#include <cmath>
 #include <cstring>
 
 #include "run_machines.h"
@@ -24,6 +25,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int n = 3 + byte() % 4;
         for (int k = 0; k < n; ++k) poly.vertices.emplace_back(next(), next(), next(), 1.0);
         s.polygons.push_back(std::move(poly));
+    }
+    // Dense convex polygons (hundreds to thousands of vertices, closer than the sub-pixel grid): a circle whose
+    // centre, radius and tilt come from the bytes
+    if (at < size && byte() % 4 == 0) {
+        ScenePolygon circle{SceneId(50), {90, 180, 90}, {}};
+        const int n = 100 + (byte() * 256 + byte()) % 5000;
+        const glm::dvec3 centre(next(), next(), next());
+        const double radius = next(), tilt = next();
+        for (int k = 0; k < n; ++k) {
+            const double a = 2 * M_PI * k / n;
+            circle.vertices.emplace_back(centre.x + radius * std::cos(a), centre.y + radius * std::sin(a),
+                                         centre.z + tilt * radius * std::cos(a), 1.0);
+        }
+        s.polygons.push_back(std::move(circle));
     }
     const int segments = byte() % 4;
     for (int k = 0; k < segments && at < size; ++k)
