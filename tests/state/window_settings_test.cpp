@@ -30,6 +30,12 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(partly.side == 700);
     CHECK(warning.find("window.toml:2: field 'height'") != std::string::npos);
 
+    std::ofstream(path) << "width = 15e20\nheight = 900.0\n";  // floats are not whole numbers (15e20 was undefined behaviour)
+    const WindowSettings floats = read_window_settings(path, warning);
+    CHECK(floats.width == 1280);
+    CHECK(floats.height == 800);
+    CHECK(warning.find("expected a whole number") != std::string::npos);
+
     std::ofstream(path) << "width = [1\n";
     CHECK(read_window_settings(path, warning) == WindowSettings{});
     CHECK(warning.find("window.toml:") != std::string::npos);

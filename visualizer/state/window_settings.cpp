@@ -64,7 +64,8 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
     const auto integer = [&](const char* key, int lo, int hi) -> std::optional<int> {
         const toml::node* n = t.get(key);
         if (!n) return std::nullopt;
-        const auto v = n->value<std::int64_t>();
+        // exact: toml++ converting a float such as 1.5e21 to an integer is undefined behaviour (found by fuzz_settings)
+        const auto v = n->value_exact<std::int64_t>();
         if (v && *v >= lo && *v <= hi) return int(*v);
         warning = path + ":" + std::to_string(n->source().begin.line) + ": field '" + key + "': expected a whole number from " +
                   std::to_string(lo) + " to " + std::to_string(hi) + "; ignored";
