@@ -13,7 +13,7 @@ double ms_since(Clock::time_point t) { return std::chrono::duration<double, std:
 
 }  // namespace
 
-BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, algo::Viewport vp) {
+BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, algo::Viewport vp, algo::WorkMeter* meter) {
     std::vector<algo::BspInput> inputs;
     for (const auto& p : scene.polygons) {
         algo::BspInput in{p.id, {}};
@@ -22,9 +22,18 @@ BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, alg
     }
     BspPainting out{algo::Image(vp.width, vp.height, background), {}, 0};
     const auto start = Clock::now();
-    out.tree = algo::build_bsp(std::move(inputs), {.splitter = splitter}).run_to_end();
+    // Progress: polygons placed in a node, of the polygons there are (each split adds one)
+    double there_are = double(inputs.size());
+    if (meter) meter->stage("BSP build", "polygons placed", there_are);
+    out.tree = algo::drain(algo::build_bsp(std::move(inputs), {.splitter = splitter}), meter, [&](const algo::BspEvent& e, double& placed) {
+        if (std::holds_alternative<algo::PolygonSplit>(e)) meter->set_total(++there_are);
+        if (const auto* node = std::get_if<algo::NodeFinished>(&e)) placed += node->coplanar;
+    });
     out.build_ms = ms_since(start);
-    const auto order = algo::traverse_bsp(&out.tree, algo::viewpoint_of(scene.camera)).run_to_end();
+    if (out.tree.bounded) return out;  // a tree a bound cut short is no picture of the scene: nothing is painted
+    if (meter) meter->stage("BSP traversal", "polygons in order", double(out.tree.held()));
+    const auto order = algo::drain(algo::traverse_bsp(&out.tree, algo::viewpoint_of(scene.camera)), meter,
+                                   [](const algo::BspEvent& e, double& drawn) { drawn += std::holds_alternative<algo::PolygonDrawn>(e); });
     const glm::dmat4 view_projection = algo::view_projection(scene.camera);
     std::unordered_map<algo::SceneId, algo::Color> color_of;  // by the scene's id: a lookup per fragment, not a scan
     for (const auto& sp : scene.polygons) color_of.emplace(sp.id, sp.color);
@@ -36,10 +45,13 @@ BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, alg
     return out;
 }
 
-DepthSortPainting paint_depth_sort(const algo::Scene& scene, algo::Viewport vp) {
+DepthSortPainting paint_depth_sort(const algo::Scene& scene, algo::Viewport vp, algo::WorkMeter* meter) {
     DepthSortPainting out{algo::Image(vp.width, vp.height, background), {}, 0};
     const auto start = Clock::now();
-    out.sorted = algo::depth_sort(algo::sort_polygons(scene)).run_to_end();
+    if (meter) meter->stage("depth sort", "polygons painted", double(scene.polygons.size()));
+    out.sorted = algo::drain(algo::depth_sort(algo::sort_polygons(scene)), meter, [](const algo::DepthSortEvent& e, double& painted) {
+        painted += std::holds_alternative<algo::PolygonPainted>(e);
+    });
     out.sort_ms = ms_since(start);
     for (std::uint32_t i : out.sorted.order) {  // back to front, each polygon in normalised device coordinates
         std::vector<glm::dvec4> ndc;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bsp/bsp_tree.h"
+#include "core/work_meter.h"
 #include "raster/image.h"
 #include "raster/screen_polygon.h"
 #include "depth_sort/depth_sort.h"
@@ -15,14 +16,15 @@ struct BspPainting {
     algo::BspTree tree;
     double build_ms = 0;  // the build alone; the traversal and painting come after
 };
-BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, algo::Viewport vp);
+// With a meter, the long work tells how far it has come and can be stopped (algo::WorkStopped).
+BspPainting paint_bsp(const algo::Scene& scene, algo::SplitterRule splitter, algo::Viewport vp, algo::WorkMeter* meter = nullptr);
 
 struct DepthSortPainting {
     algo::Image image{0, 0};
     algo::DepthSortResult sorted;
     double sort_ms = 0;  // the sort alone
 };
-DepthSortPainting paint_depth_sort(const algo::Scene& scene, algo::Viewport vp);
+DepthSortPainting paint_depth_sort(const algo::Scene& scene, algo::Viewport vp, algo::WorkMeter* meter = nullptr);
 
 inline constexpr algo::Color background{26, 28, 33};
 

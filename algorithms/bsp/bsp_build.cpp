@@ -59,18 +59,25 @@ BspPolygonId add_part(BspTree& t, BspPolygonId whole, std::vector<Vec3> vertices
     return BspPolygonId(t.polygons.size() - 1);
 }
 
-// BuildBSP(list): the node made for `list`, or −1 for an empty list. `t` is the tree the top-level machine owns.
+// One call of BuildBSP(list) for a list that is not empty: the node it makes, and the front and back lists it
+// would recurse on.
 struct Parent {
     BspNodeId node = -1;
     Side side = Side::front;
 };
+struct ListToBuild {
+    std::vector<BspPolygonId> list;
+    std::uint32_t depth = 0;
+    Parent parent;
+};
+struct Sides {
+    std::vector<BspPolygonId> front, back;
+};
 
-Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list, std::uint32_t depth, Parent parent,
-                                      BspOptions o) {
-    if (list.empty()) co_return -1;
-    const BspNodeId node = BspNodeId(t->nodes.size());
-    t->nodes.push_back({});
-    t->nodes.back().depth = depth;
+Steps<BspEvent, Sides> build_node(BspTree* t, BspNodeId node, ListToBuild in, BspOptions o) {
+    std::vector<BspPolygonId>& list = in.list;
+    const std::uint32_t depth = in.depth;
+    t->nodes[std::size_t(node)].depth = depth;
     t->depth = std::max(t->depth, depth + 1);
 
     // Choose a splitting polygon
@@ -89,9 +96,10 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
     }
     const Plane plane = t->polygons[std::size_t(splitter)].plane;
     t->nodes[std::size_t(node)].plane = plane;
-    co_yield SplitterChosen{node, parent.node, parent.side, splitter, depth, scored, best.value, plane};
+    co_yield SplitterChosen{node, in.parent.node, in.parent.side, splitter, depth, scored, best.value, plane};
 
-    std::vector<BspPolygonId> front, back, here{splitter};
+    Sides sides;
+    std::vector<BspPolygonId> here{splitter};
     if (depth + 1 >= o.max_depth) {  // bound: keep what is left at this node, in list order
         co_yield BspBoundReached{BspBound::depth, o.max_depth};
         t->bounded = true;
@@ -106,8 +114,8 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
         const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, tol);
         co_yield PolygonClassified{node, p, side};
         switch (side) {
-            case PolygonSide::front: front.push_back(p); break;
-            case PolygonSide::back: back.push_back(p); break;
+            case PolygonSide::front: sides.front.push_back(p); break;
+            case PolygonSide::back: sides.back.push_back(p); break;
             case PolygonSide::coplanar: here.push_back(p); break;  // never split against its own plane
             case PolygonSide::spanning: {
                 if (t->polygons.size() + 2 > o.max_polygons) {
@@ -124,32 +132,43 @@ Steps<BspEvent, BspNodeId> build_node(BspTree* t, std::vector<BspPolygonId> list
                 ++t->splits;
                 const BspEvent split_event = PolygonSplit{node, p, fp, bp, std::move(f), std::move(b)};
                 co_yield split_event;  // by name: see the top of core/steps.h
-                front.push_back(fp);
-                back.push_back(bp);
+                sides.front.push_back(fp);
+                sides.back.push_back(bp);
                 break;
             }
         }
     }
     t->nodes[std::size_t(node)].polygons = here;
-    co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(front.size()), std::uint32_t(back.size())};
-
-    // Recurse: front subtree, then back subtree
-    auto front_child = build_node(t, std::move(front), depth + 1, {node, Side::front}, o);
-    for (const auto& e : front_child) co_yield e;
-    t->nodes[std::size_t(node)].front = front_child.result();
-    auto back_child = build_node(t, std::move(back), depth + 1, {node, Side::back}, o);
-    for (const auto& e : back_child) co_yield e;
-    t->nodes[std::size_t(node)].back = back_child.result();
-    co_return node;
+    co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(sides.front.size()), std::uint32_t(sides.back.size())};
+    co_return sides;
 }
 
+// BuildBSP(list) from the top: the lecture's recursion (a node, then BuildBSP(front), then BuildBSP(back)) with its
+// stack of lists kept by hand. A recursive generator forwards each event through every level above it, so a tree
+// 600 deep cost 600 resumes per event; this way every event is passed on once, in the recursion's order.
 Steps<BspEvent, BspTree> build_machine(BspTree tree, BspOptions o) {
     co_yield BuildStarted{std::uint32_t(tree.polygons.size()), o.splitter, Tolerance::relative};
-    std::vector<BspPolygonId> all(tree.polygons.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = BspPolygonId(i);
-    auto root = build_node(&tree, std::move(all), 0, {}, o);
-    for (const auto& e : root) co_yield e;
-    tree.root = root.result();
+    ListToBuild all;
+    for (std::size_t i = 0; i < tree.polygons.size(); ++i) all.list.push_back(BspPolygonId(i));
+    std::vector<ListToBuild> to_build;  // the top is built next
+    to_build.push_back(std::move(all));
+    while (!to_build.empty()) {
+        ListToBuild next = std::move(to_build.back());
+        to_build.pop_back();
+        if (next.list.empty()) continue;  // an empty subtree: the parent's link stays −1
+        const BspNodeId node = BspNodeId(tree.nodes.size());
+        tree.nodes.push_back({});
+        const Parent parent = next.parent;
+        if (parent.node < 0) tree.root = node;
+        else if (parent.side == Side::front) tree.nodes[std::size_t(parent.node)].front = node;
+        else tree.nodes[std::size_t(parent.node)].back = node;
+        auto one_node = build_node(&tree, node, std::move(next), o);
+        for (const auto& e : one_node) co_yield e;
+        Sides sides = std::move(one_node).result();
+        const std::uint32_t depth = tree.nodes[std::size_t(node)].depth + 1;
+        to_build.push_back({std::move(sides.back), depth, {node, Side::back}});    // after the whole front subtree
+        to_build.push_back({std::move(sides.front), depth, {node, Side::front}});  // next
+    }
     co_yield BuildFinished{std::uint32_t(tree.nodes.size()), tree.depth, std::uint32_t(tree.held()),
                            tree.splits};
     co_return std::move(tree);

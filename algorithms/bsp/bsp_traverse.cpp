@@ -10,36 +10,43 @@
 namespace hsr::algo {
 namespace {
 
-Steps<BspEvent, std::vector<BspPolygonId>> display(const BspTree* t, BspNodeId n, Viewpoint eye, Order order,
-                                                   std::vector<BspPolygonId> drawn) {
-    if (n < 0) co_return drawn;
-    const BspNode& node = t->nodes[std::size_t(n)];
-    const double distance = eye.toward_eye ? glm::dot(node.plane.n, *eye.toward_eye) : node.plane.distance(eye.at);
-    const Side side = eye_side(node.plane, eye, node_tolerance(*t, node, eye.at));
-    co_yield EyeClassified{n, side, order, distance};
-
-    // The far side first: behind the plane when the eye is in front (or on it: then either order is right,
-    // since the node's polygons are seen edge-on)
-    BspNodeId far = side == Side::back ? node.front : node.back;
-    BspNodeId near = side == Side::back ? node.back : node.front;
-    if (order == Order::front_to_back) std::swap(far, near);
-
-    auto far_side = display(t, far, eye, order, std::move(drawn));
-    for (const auto& e : far_side) co_yield e;
-    drawn = std::move(far_side).result();  // moved, not copied: a copy per node would make this O(n²)
-    for (BspPolygonId p : node.polygons) {
-        drawn.push_back(p);
-        co_yield PolygonDrawn{n, p, std::uint32_t(drawn.size()), side, node.front < 0 && node.back < 0};
-    }
-    auto near_side = display(t, near, eye, order, std::move(drawn));
-    for (const auto& e : near_side) co_yield e;
-    co_return std::move(near_side).result();
-}
+// DisplayBSP(root) with the recursion's stack kept by hand (as in the build: a recursive generator would pass each
+// event up through every level of a deep tree). Each entry is a call still to make, DisplayBSP(node), or the
+// middle of one, "draw the node's polygons"; they are pushed in reverse so they run far side, node, near side.
+struct Call {
+    BspNodeId node;
+    bool draw_polygons = false;  // the middle of the node's call: its far side is done
+    Side eye_side = Side::front;
+};
 
 Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Viewpoint eye, Order order) {
-    auto all = display(t, t->root, eye, order, {});
-    for (const auto& e : all) co_yield e;
-    std::vector<BspPolygonId> drawn = std::move(all).result();
+    std::vector<BspPolygonId> drawn;
+    std::vector<Call> calls{{t->root}};  // the top runs next
+    while (!calls.empty()) {
+        const Call call = calls.back();
+        calls.pop_back();
+        if (call.node < 0) continue;
+        const BspNode& node = t->nodes[std::size_t(call.node)];
+        if (call.draw_polygons) {
+            for (BspPolygonId p : node.polygons) {
+                drawn.push_back(p);
+                co_yield PolygonDrawn{call.node, p, std::uint32_t(drawn.size()), call.eye_side, node.front < 0 && node.back < 0};
+            }
+            continue;
+        }
+        const double distance = eye.toward_eye ? glm::dot(node.plane.n, *eye.toward_eye) : node.plane.distance(eye.at);
+        const Side side = eye_side(node.plane, eye, node_tolerance(*t, node, eye.at));
+        co_yield EyeClassified{call.node, side, order, distance};
+
+        // The far side first: behind the plane when the eye is in front (or on it: then either order is right,
+        // since the node's polygons are seen edge-on)
+        BspNodeId far = side == Side::back ? node.front : node.back;
+        BspNodeId near = side == Side::back ? node.back : node.front;
+        if (order == Order::front_to_back) std::swap(far, near);
+        calls.push_back({near});
+        calls.push_back({call.node, true, side});
+        calls.push_back({far});
+    }
     co_yield TraversalFinished{std::uint32_t(drawn.size())};
     co_return drawn;
 }

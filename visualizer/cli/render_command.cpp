@@ -1,6 +1,8 @@
 #include "cli/render_command.h"
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstdio>
 #include <functional>
@@ -8,12 +10,15 @@
 #include <new>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include "scene/input_file.h"
 #include "analysis/painters.h"
 #include "cli/png_io.h"
 #include "state/arguments.h"
 #include "state/memory_budget.h"
 #include "raster/image.h"
+#include "core/work_meter.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
 #include "raster/screen_polygon.h"
@@ -48,8 +53,8 @@ algo::Acceleration acceleration_named(const std::string& s) {
     throw std::runtime_error("unknown acceleration \"" + s + "\"; expected none, grid or octree");
 }
 
-algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
-    analysis::BspPainting p = analysis::paint_bsp(scene, splitter_named(o.splitter), vp);
+algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
+    analysis::BspPainting p = analysis::paint_bsp(scene, splitter_named(o.splitter), vp, &meter);
     std::printf("bsp (%s): %zu polygons in, %zu in the tree after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
                 o.splitter.c_str(), scene.polygons.size(), p.tree.held(), p.tree.splits, p.tree.nodes.size(),
                 p.tree.depth, p.build_ms);
@@ -58,7 +63,7 @@ algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::V
 }
 
 // The culling pipeline, then the z-buffer on what is left: one line per stage.
-algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter&) {
     const auto start = Clock::now();
     algo::PipelineResult r = algo::run_pipeline(scene, {.stages = algo::parse_stages(*o.cull), .viewport = vp, .format = format_named(o.format)});
     const double total = ms_since(start);
@@ -74,13 +79,16 @@ algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo
     return std::move(r.frame.image);
 }
 
-algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
-    if (o.cull) return render_culled(scene, o, vp);
+algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
+    if (o.cull) return render_culled(scene, o, vp, meter);
     const algo::DepthFormat format = format_named(o.format);
     const auto start = Clock::now();
-    algo::FrameDepth f =
-        algo::zbuffer_fill(algo::project_polygons(scene, vp), algo::zbuffer_options(scene, vp, format, algo::EventDetail::polygon))
-            .run_to_end();
+    meter.stage("z-buffer", "polygons", double(scene.polygons.size()));
+    algo::FrameDepth f = algo::drain(
+        algo::zbuffer_fill(algo::project_polygons(scene, vp), algo::zbuffer_options(scene, vp, format, algo::EventDetail::polygon)),
+        &meter, [](const algo::ZBufferEvent& e, double& filled) {
+            filled += std::holds_alternative<algo::PolygonFillFinished>(e) || std::holds_alternative<algo::PolygonSkipped>(e);
+        });
     std::printf("zbuffer (%s): %zu polygons, %llu depth tests, %llu writes in %.3f ms\n", std::string(to_string(format)).c_str(),
                 scene.polygons.size(), (unsigned long long)f.tested, (unsigned long long)f.written, ms_since(start));
     if (f.tested > 0 && f.written == 0)  // a blank picture that is right for the format, said so it is not taken for a bug
@@ -90,32 +98,36 @@ algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, alg
     return std::move(f.image);
 }
 
-algo::Image render_scanline(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+algo::Image render_scanline(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
     const algo::DepthFormat format = format_named(o.format);
     const auto start = Clock::now();
     algo::ScanLineOptions options = algo::scan_line_options(scene, vp, format);
     options.tell_crossings = false;
-    auto machine = algo::scan_line(algo::project_polygons(scene, vp), options);
+    meter.stage("scan line", "rows", double(vp.height));
     std::uint64_t spans = 0;
-    for (const auto& e : machine) spans += std::holds_alternative<algo::SpanColored>(e);
-    algo::FrameDepth f = std::move(machine).result();
+    algo::FrameDepth f = algo::drain(algo::scan_line(algo::project_polygons(scene, vp), options), &meter,
+                                     [&](const algo::ScanLineEvent& e, double& rows) {
+                                         spans += std::holds_alternative<algo::SpanColored>(e);
+                                         if (const auto* line = std::get_if<algo::ScanLineStarted>(&e)) rows = line->y;
+                                     });
     std::printf("scanline (%s): %zu polygons, %llu spans in %.3f ms\n", std::string(to_string(format)).c_str(),
                 scene.polygons.size(), (unsigned long long)spans, ms_since(start));
     return std::move(f.image);
 }
 
-algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp) {
+algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
     const algo::Acceleration a = acceleration_named(o.acceleration);
     const auto start = Clock::now();
-    algo::RayCastResult r =
-        algo::ray_cast(scene, {.viewport = vp, .acceleration = a, .detail = algo::RayDetail::ray}).run_to_end();
+    meter.stage("ray cast", "rays", double(vp.width) * double(vp.height));
+    algo::RayCastResult r = algo::drain(algo::ray_cast(scene, {.viewport = vp, .acceleration = a, .detail = algo::RayDetail::ray}),
+                                        &meter, [](const algo::RayCastEvent& e, double& rays) { rays += std::holds_alternative<algo::RayFinished>(e); });
     std::printf("raycast (%s): %zu polygons, %llu primitive tests in %.3f ms\n", std::string(to_string(a)).c_str(),
                 scene.polygons.size(), (unsigned long long)r.tests, ms_since(start));
     return std::move(r.image);
 }
 
-algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, algo::Viewport vp) {
-    analysis::DepthSortPainting p = analysis::paint_depth_sort(scene, vp);
+algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, algo::Viewport vp, algo::WorkMeter& meter) {
+    analysis::DepthSortPainting p = analysis::paint_depth_sort(scene, vp, &meter);
     const algo::DepthSortResult& r = p.sorted;
     std::printf("depth-sort: %zu polygons, %llu pairs examined, %u moves, %u splits, sorted in %.3f ms\n", scene.polygons.size(),
                 (unsigned long long)r.pairs, r.moves, r.splits, p.sort_ms);
@@ -123,6 +135,37 @@ algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, al
         throw std::runtime_error("depth sort stopped at its step bound (" + std::to_string(r.pairs) + " pairs, " +
                                  std::to_string(r.splits) + " splits); no image written");
     return std::move(p.image);
+}
+
+// Ctrl+C while rendering asks the work to stop at its next look (no image is written); a second Ctrl+C ends the
+// program at once, as it would have without us.
+std::atomic<bool> interrupt_asked{false};
+extern "C" void on_interrupt(int) {
+    interrupt_asked.store(true);
+    std::signal(SIGINT, SIG_DFL);
+}
+struct StopOnInterrupt {
+    const std::atomic<bool>& asked = interrupt_asked;
+    void (*before)(int) = std::signal(SIGINT, on_interrupt);
+    StopOnInterrupt() { interrupt_asked.store(false); }
+    ~StopOnInterrupt() { std::signal(SIGINT, before); }
+    StopOnInterrupt(const StopOnInterrupt&) = delete;
+    StopOnInterrupt& operator=(const StopOnInterrupt&) = delete;
+};
+
+// On a terminal one line rewritten in place; into a log file a line every ten seconds.
+void progress_on_stderr(const algo::WorkProgress& p) {
+    static const bool terminal = isatty(STDERR_FILENO) != 0;
+    static double last_logged = -10;
+    if (terminal && p.finished) {
+        std::fprintf(stderr, "\r\x1b[K");  // the line is cleared for what the command prints next
+    } else if (terminal) {
+        std::fprintf(stderr, "\r%s (Ctrl+C stops)\x1b[K", p.sentence().c_str());
+    } else if (!p.finished && (p.seconds < last_logged || p.seconds - last_logged >= 10)) {
+        std::fprintf(stderr, "hsrviz: %s\n", p.sentence().c_str());
+        last_logged = p.seconds;
+    }
+    std::fflush(stderr);
 }
 
 algo::Scene generated_or_loaded(const std::string& name) {
@@ -162,17 +205,23 @@ int run_render(const RenderOptions& o) {
                     throw std::runtime_error(o.scene + ": polygon id " + std::to_string(p.id) +
                                              " does not fit the 16-bit id image (ids 1 to 65535)");
 
-        const std::map<std::string, std::function<algo::Image(const algo::Scene&, const RenderOptions&, algo::Viewport)>>
+        const std::map<std::string, std::function<algo::Image(const algo::Scene&, const RenderOptions&, algo::Viewport, algo::WorkMeter&)>>
             renderers{{"bsp", render_bsp}, {"zbuffer", render_zbuffer}, {"scanline", render_scanline}, {"raycast", render_raycast},
                       {"depth-sort", render_depth_sort}};
         const auto renderer = renderers.find(o.algorithm);
         if (renderer == renderers.end())
             throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected bsp, zbuffer, scanline, raycast or depth-sort");
-        const algo::Image image = renderer->second(scene, o, {w, h});
+        StopOnInterrupt ctrl_c;
+        algo::WorkMeter meter(progress_on_stderr, &ctrl_c.asked);
+        const algo::Image image = renderer->second(scene, o, {w, h}, meter);
+        meter.look();  // a Ctrl+C during the last events, or during work that is not metered (the culling pipeline)
         if (!write_rgb_png(o.out, image)) throw std::runtime_error("cannot write " + o.out);
         if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + *o.ids);
         std::printf("wrote %s%s%s\n", o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
         return 0;
+    } catch (const algo::WorkStopped&) {
+        std::fprintf(stderr, "%shsrviz: stopped (Ctrl+C); no image written\n", isatty(STDERR_FILENO) ? "\n" : "");
+        return 130;  // the shell's code for a command ended by SIGINT
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "hsrviz: out of memory: the render needs more than this machine (or its limits) allow; no image written\n");
         return 1;

@@ -1,0 +1,68 @@
+#include "core/work_meter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hsr::algo {
+namespace {
+
+std::string whole(double x) {  // 262144 → "262,144"
+    std::string digits = std::to_string(static_cast<long long>(std::llround(std::max(0.0, x))));
+    for (int k = int(digits.size()) - 3; k > 0; k -= 3) digits.insert(std::size_t(k), ",");
+    return digits;
+}
+
+std::string duration(double s) {
+    char b[32];
+    if (s < 60) std::snprintf(b, sizeof b, "%.1f s", s);
+    else if (s < 3600) std::snprintf(b, sizeof b, "%d min %02d s", int(s) / 60, int(s) % 60);
+    else std::snprintf(b, sizeof b, "%d h %02d min", int(s) / 3600, int(s) % 3600 / 60);
+    return b;
+}
+
+}  // namespace
+
+std::string WorkProgress::sentence() const {
+    std::string s = stage + ": " + whole(done) + " of " + whole(total) + " " + unit;
+    if (total > 0) s += " (" + std::to_string(int(std::clamp(100 * done / total, 0.0, 100.0))) + " %)";
+    s += ", " + duration(seconds);
+    if (seconds_left) s += ", about " + duration(*seconds_left) + " left";
+    return s;
+}
+
+WorkMeter::WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_tell_after_seconds)
+    : tell_(std::move(tell)), stop_(stop), first_tell_after_(first_tell_after_seconds) {}
+
+void WorkMeter::stage(std::string name, std::string unit, double total) {
+    progress_ = {.stage = std::move(name), .unit = std::move(unit), .total = total};
+    stage_start_ = Clock::now();
+    look();
+}
+
+void WorkMeter::look() {
+    if (stop_ && stop_->load(std::memory_order_relaxed)) throw WorkStopped();
+    if (!tell_) return;
+    const auto now = Clock::now();
+    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    if (seconds(now - work_start_) < first_tell_after_ || (told_ && seconds(now - last_told_) < 0.5)) return;
+    progress_.seconds = seconds(now - stage_start_);
+    progress_.seconds_left.reset();
+    if (progress_.done > 0 && progress_.total >= progress_.done)
+        progress_.seconds_left = progress_.seconds * (progress_.total - progress_.done) / progress_.done;
+    tell_(progress_);
+    told_ = true;
+    last_told_ = now;
+}
+
+void WorkMeter::finish() {
+    look();
+    if (!tell_ || !told_) return;
+    progress_.finished = true;
+    progress_.seconds = std::chrono::duration<double>(Clock::now() - stage_start_).count();
+    progress_.seconds_left = 0;
+    tell_(progress_);
+    progress_.finished = false;
+}
+
+}  // namespace hsr::algo
