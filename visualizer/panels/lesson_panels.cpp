@@ -185,9 +185,12 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
     ImDrawList* d = ImGui::GetBackgroundDrawList();
     // on the screen, in the view; placed from the last given (the element under study is given last) so that
     // no label covers another
+    // At most max_labels_shown of them: more cannot be read anyway, and placing each against all placed before is
+    // quadratic (a 65,535-polygon scene spent minutes a frame here).
+    constexpr std::size_t max_labels_shown = 256;
     std::vector<const Label*> shown;
     std::vector<LabelBox> boxes;
-    for (auto it = labels.rbegin(); it != labels.rend(); ++it) {
+    for (auto it = labels.rbegin(); it != labels.rend() && shown.size() < max_labels_shown; ++it) {
         const glm::vec4 c = vp * glm::vec4(it->world, 1.0f);
         if (c.w <= 1e-6f) continue;
         const float sx = x + (c.x / c.w * 0.5f + 0.5f) * w, sy = y + (0.5f - c.y / c.w * 0.5f) * h;

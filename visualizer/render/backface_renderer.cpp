@@ -12,18 +12,19 @@ namespace hsr::viz {
 using algo::Vec3;
 
 void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+    const SceneColors colors(scene);
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
         const FaceView& f = v.faces[i];
         const std::vector<Vec3>& vs = *f.vertices;
         const bool current = int(i) == v.current;
         const bool kept = f.facing == algo::Facing::front;
-        const glm::vec4 fill = !f.facing ? scene_color(scene, f.id, 0.25f)
-                               : kept    ? scene_color(scene, f.id, 0.85f)
+        const glm::vec4 fill = !f.facing ? colors(f.id, 0.25f)
+                               : kept    ? colors(f.id, 0.85f)
                                          : glm::vec4(0.35f, 0.12f, 0.08f, 0.35f);
         for (std::size_t k = 1; k + 1 < vs.size(); ++k)
             out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
         const glm::vec4 edge = current ? palette::current_edge : f.facing && !kept ? palette::outside
-                                                                                   : scene_color(scene, f.id, 1);
+                                                                                   : colors(f.id, 1);
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
         // every face numbered as the table and the questions name it, just off its outer side

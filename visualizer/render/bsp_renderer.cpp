@@ -66,6 +66,7 @@ std::vector<Vec3> plane_quad(const algo::Plane& p, const Vec3& lo, const Vec3& h
 }  // namespace
 
 void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+    const SceneColors colors(scene);
     Vec3 lo, hi;
     bounds(v, lo, hi);
     const double tick = 0.05 * glm::length(hi - lo) + 0.05;  // the length of a front-side tick
@@ -101,8 +102,8 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         if (p.replaced || !p.vertices) continue;
         const std::vector<Vec3>& vs = *p.vertices;
         const bool current = int(i) == v.current_polygon;
-        const glm::vec4 fill = scene_color(scene, p.source, p.drawn > 0 ? 0.9f : 0.3f);
-        const glm::vec4 edge = current ? palette::current_edge : scene_color(scene, p.source, 1.0f);
+        const glm::vec4 fill = colors(p.source, p.drawn > 0 ? 0.9f : 0.3f);
+        const glm::vec4 edge = current ? palette::current_edge : colors(p.source, 1.0f);
         if (vs.size() == 2) {
             (p.drawn > 0 || current ? out.bold : out.faint).line(glm::vec3(vs[0]), glm::vec3(vs[1]), edge);
         } else {
@@ -118,7 +119,7 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         }
         std::string text = p.label;
         if (p.drawn > 0) text += "  #" + std::to_string(p.drawn);
-        labels.push_back({glm::vec3(algo::centroid(vs)), text, current ? palette::current_edge : scene_color(scene, p.source, 1.0f)});
+        labels.push_back({glm::vec3(algo::centroid(vs)), text, current ? palette::current_edge : colors(p.source, 1.0f)});
     }
     out.bold.point(glm::vec3(v.eye), palette::eye);
     labels.push_back({glm::vec3(v.eye), "eye", palette::eye});

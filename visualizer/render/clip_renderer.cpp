@@ -142,6 +142,7 @@ void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const P
 
 void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels,
                     Tween tween) {
+    const SceneColors colors(scene);
     const ToWorld world(scene.camera);
     draw_volume(view, world, scene.camera, out, labels);
 
@@ -150,11 +151,11 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches&
         const bool active = int(i) == view.active && p.status == PrimitiveStatus::clipping;
         const float input_alpha = p.status == PrimitiveStatus::waiting ? 0.7f : 0.3f;
         polyline(p.kind == PrimitiveKind::point ? out.bold : out.faint, world, p.input,
-                 p.kind == PrimitiveKind::polygon, scene_color(scene, p.id, input_alpha));
+                 p.kind == PrimitiveKind::polygon, colors(p.id, input_alpha));
         if (p.status == PrimitiveStatus::done)
-            polyline(out.bold, world, p.visible, p.kind == PrimitiveKind::polygon, scene_color(scene, p.id, 1));
+            polyline(out.bold, world, p.visible, p.kind == PrimitiveKind::polygon, colors(p.id, 1));
         if (!p.input.empty())
-            if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), scene_color(scene, p.id, 0.9f)});
+            if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), colors(p.id, 0.9f)});
         if (!active) continue;
         if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels, tween);
         if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, scene, p, world, out);

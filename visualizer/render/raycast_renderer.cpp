@@ -25,17 +25,18 @@ void box(LineBatch& out, Vec3 lo, Vec3 hi, glm::vec4 colour) {
 }  // namespace
 
 void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+    const SceneColors colors(scene);
     // The scene's polygons, the nearest hit so far drawn stronger
     for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
         const auto& p = scene.polygons[i];
         const bool nearest = int(i) == v.nearest, tested = int(i) == v.tested;
         for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
             out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]),
-                               scene_color(scene, p.id, nearest ? 0.7f : 0.25f));
+                               colors(p.id, nearest ? 0.7f : 0.25f));
         for (std::size_t k = 0; k < p.vertices.size(); ++k)
             (tested ? out.bold : out.faint)
                 .line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
-                      tested ? palette::current_edge : scene_color(scene, p.id, 1));
+                      tested ? palette::current_edge : colors(p.id, 1));
     }
     draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);

@@ -14,12 +14,13 @@ namespace hsr::viz {
 using algo::Vec3;
 
 void draw_zbuffer_3d(const ZView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+    const SceneColors colors(scene);
     for (const auto& p : scene.polygons) {
         for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
             out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]),
-                               scene_color(scene, p.id, 0.35f));
+                               colors(p.id, 0.35f));
         for (std::size_t k = 0; k < p.vertices.size(); ++k)
-            out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]), scene_color(scene, p.id, 1));
+            out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]), colors(p.id, 1));
     }
     draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
@@ -37,7 +38,7 @@ void draw_zbuffer_3d(const ZView& v, const algo::Scene& scene, LineBatches& out,
     for (int y = 0; y < v.viewport.height; ++y)
         for (int x = 0; x < v.viewport.width; ++x) {
             const std::int32_t o = v.owner[std::size_t(y) * std::size_t(v.viewport.width) + std::size_t(x)];
-            const glm::vec4 c = o < 0 ? glm::vec4(0.16f, 0.17f, 0.2f, 0.9f) : scene_color(scene, (*v.polygons)[std::size_t(o)].id, 0.95f);
+            const glm::vec4 c = o < 0 ? glm::vec4(0.16f, 0.17f, 0.2f, 0.9f) : colors((*v.polygons)[std::size_t(o)].id, 0.95f);
             const glm::vec3 a = at(x, y), b = at(x + 1, y), cc = at(x + 1, y + 1), d = at(x, y + 1);
             out.faint.triangle(a, b, cc, c);
             out.faint.triangle(a, cc, d, c);

@@ -1,5 +1,6 @@
 #include "state/bsp_painting.h"
 
+#include <unordered_map>
 #include <algorithm>
 #include <cmath>
 
@@ -43,12 +44,13 @@ algo::Image bsp_painted_so_far(const BspView& v, const algo::Scene& scene, algo:
     for (const auto& p : v.polygons)
         if (p.drawn > 0) drawn.push_back(&p);
     std::sort(drawn.begin(), drawn.end(), [](auto* a, auto* b) { return a->drawn < b->drawn; });
+    // Colour and opacity by id (the first primitive with an id wins), looked up per drawn polygon in constant time
+    std::unordered_map<std::int32_t, std::pair<algo::Color, double>> paint_of;
+    for (const auto& seg : scene.segments) paint_of.try_emplace(seg.id, seg.color, 1.0);
+    for (const auto& poly : scene.polygons) paint_of.try_emplace(poly.id, poly.color, poly.opacity);
     const auto colour_of = [&](std::int32_t id) {
-        for (const auto& s : scene.segments)
-            if (s.id == id) return std::pair{s.color, 1.0};
-        for (const auto& s : scene.polygons)
-            if (s.id == id) return std::pair{s.color, s.opacity};
-        return std::pair{algo::Color{200, 200, 200}, 1.0};
+        const auto found = paint_of.find(id);
+        return found != paint_of.end() ? found->second : std::pair{algo::Color{200, 200, 200}, 1.0};
     };
     const double aspect = double(size.width) / std::max(size.height, 1);
     algo::Camera camera = scene.camera;

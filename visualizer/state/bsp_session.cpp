@@ -1,6 +1,7 @@
 #include "state/bsp_session.h"
 
 #include <chrono>
+#include <unordered_map>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -163,19 +164,23 @@ algo::Scene BspSession::scene_of_job() const {
     if (view().two_d) s.camera.target = job_.eye.at + heading_;  // the eye looks where it looked, wherever it is dragged
     // Inputs as the edits left them: moved, added (new ids, colours in turn from the palette) or deleted.
     static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
+    // The scene's colour and opacity by id (the last primitive with an id wins), looked up once per input
+    std::unordered_map<std::int32_t, algo::Color> color_of;
+    std::unordered_map<std::int32_t, double> opacity_of;
+    for (const auto& seg : s.segments) color_of.insert_or_assign(seg.id, seg.color);
+    for (const auto& poly : s.polygons) color_of.insert_or_assign(poly.id, poly.color), opacity_of.insert_or_assign(poly.id, poly.opacity);
     std::vector<algo::SceneSegment> segments;
     std::vector<algo::ScenePolygon> polygons;
     for (const algo::BspInput& in : job_.polygons) {
-        algo::Color color = palette[std::size_t(in.id) % std::size(palette)];
-        for (const auto& seg : s.segments) color = seg.id == in.id ? seg.color : color;
-        for (const auto& poly : s.polygons) color = poly.id == in.id ? poly.color : color;
+        const auto known = color_of.find(in.id);
+        const algo::Color color = known != color_of.end() ? known->second : palette[std::size_t(in.id) % std::size(palette)];
         if (in.vertices.size() == 2) {
             segments.push_back({in.id, color, glm::dvec4(in.vertices[0], 1.0), glm::dvec4(in.vertices[1], 1.0)});
             continue;
         }
         algo::ScenePolygon p{in.id, color, {}};
         for (const auto& v : in.vertices) p.vertices.emplace_back(v, 1.0);
-        for (const auto& poly : s.polygons) p.opacity = poly.id == in.id ? poly.opacity : p.opacity;
+        if (const auto o = opacity_of.find(in.id); o != opacity_of.end()) p.opacity = o->second;
         polygons.push_back(std::move(p));
     }
     if (view().two_d) s.segments = std::move(segments);

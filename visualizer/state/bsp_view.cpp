@@ -18,8 +18,22 @@ BspView initial_view(const BspJob& job) {
     return v;
 }
 
+namespace {
+
+void clear_sides(BspView& v) {
+    for (BspPolygonId p : v.sided)
+        if (std::size_t(p) < v.polygons.size()) v.polygons[std::size_t(p)].side.reset();
+    v.sided.clear();
+}
+
+}  // namespace
+
 void reduce(BspView& v, const BspEvent& event) {
     const auto polygon = [&](BspPolygonId p) -> BspPolygonView& { return v.polygons[std::size_t(p)]; };
+    const auto give_side = [&](BspPolygonId p, PolygonSide side) {
+        polygon(p).side = side;
+        v.sided.push_back(p);
+    };
     std::visit(overloaded{
                    [&](const BuildStarted&) {},
                    [&](const CandidateScored& e) { v.current_polygon = e.candidate; },
@@ -38,16 +52,16 @@ void reduce(BspView& v, const BspEvent& event) {
                        v.current_node = e.node;
                        v.current_polygon = e.splitter;
                        polygon(e.splitter).node = e.node;
-                       for (auto& p : v.polygons) p.side.reset();
+                       clear_sides(v);
                    },
                    [&](const PolygonClassified& e) {
                        v.current_polygon = e.polygon;
-                       polygon(e.polygon).side = e.side;
+                       give_side(e.polygon, e.side);
                        if (e.side == PolygonSide::coplanar) polygon(e.polygon).node = e.node;
                    },
                    [&](const PolygonSplit& e) {
                        polygon(e.polygon).replaced = true;
-                       polygon(e.polygon).side = PolygonSide::spanning;
+                       give_side(e.polygon, PolygonSide::spanning);
                        // copies, not references: the resize below may move the polygons
                        const std::int32_t source = polygon(e.polygon).source;
                        const std::string label = polygon(e.polygon).label;
@@ -56,6 +70,8 @@ void reduce(BspView& v, const BspEvent& event) {
                                                                 PolygonSide::front, 0};
                        v.polygons[std::size_t(e.back_part)] = {source, label + "b", e.back, false, -1,
                                                                PolygonSide::back, 0};
+                       v.sided.push_back(e.front_part);
+                       v.sided.push_back(e.back_part);
                        ++v.splits;
                        v.current_polygon = e.front_part;
                    },
@@ -63,7 +79,7 @@ void reduce(BspView& v, const BspEvent& event) {
                    [&](const BuildFinished&) {
                        v.built = true;
                        v.current_node = v.current_polygon = -1;
-                       for (auto& p : v.polygons) p.side.reset();
+                       clear_sides(v);
                    },
                    [&](const EyeClassified& e) {
                        v.current_node = e.node;
@@ -82,7 +98,7 @@ void reduce(BspView& v, const BspEvent& event) {
 }
 
 std::size_t approx_bytes(const BspView& v) {
-    std::size_t b = sizeof v + v.nodes.capacity() * sizeof(BspNodeView);
+    std::size_t b = sizeof v + v.nodes.capacity() * sizeof(BspNodeView) + v.sided.capacity() * sizeof(algo::BspPolygonId);
     for (const auto& p : v.polygons) b += sizeof p + p.label.capacity();
     return b;
 }

@@ -35,6 +35,7 @@ public:
 
     Player(Machine machine, View initial, PlayerOptions options = {})
         : machine_(std::move(machine)), options_(options), view_(initial) {
+        next_keyframe_at_ = keyframe_interval(initial);
         keyframes_.push_back({0, std::move(initial)});
     }
 
@@ -144,12 +145,15 @@ private:
         }
     }
 
+    // The view's size is measured when a keyframe is taken, not after every event: measuring is as slow as the view
+    // is large, and per event that made opening a 65,535-polygon BSP lesson quadratic.
     void maybe_keyframe() {
-        const Keyframe& last = keyframes_.back();
-        if (cursor_ <= last.at) return;
-        const std::size_t interval =
-            std::max(options_.min_keyframe_interval, approx_bytes(view_) / options_.keyframe_bytes_per_event);
-        if (cursor_ - last.at >= interval) keyframes_.push_back({cursor_, view_});
+        if (cursor_ <= keyframes_.back().at || cursor_ < next_keyframe_at_) return;
+        keyframes_.push_back({cursor_, view_});
+        next_keyframe_at_ = cursor_ + keyframe_interval(view_);
+    }
+    std::size_t keyframe_interval(const View& v) const {
+        return std::max(options_.min_keyframe_interval, approx_bytes(v) / options_.keyframe_bytes_per_event);
     }
 
     Machine machine_;
@@ -158,6 +162,7 @@ private:
     std::vector<Keyframe> keyframes_;  // sorted by `at`; the first is the initial view
     View view_;
     std::size_t cursor_ = 0;
+    std::size_t next_keyframe_at_ = 0;  // the next keyframe is taken on reaching this event
 };
 
 }  // namespace hsr::viz

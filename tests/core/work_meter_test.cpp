@@ -1,0 +1,67 @@
+#include <atomic>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "catch.h"
+#include "core/work_meter.h"
+
+using hsr::algo::Steps;
+using hsr::algo::WorkMeter;
+using hsr::algo::WorkProgress;
+
+namespace {
+
+Steps<int, int> counting_to(int n, std::atomic<bool>* stop_at_half = nullptr) {
+    for (int i = 0; i < n; ++i) {
+        if (stop_at_half && i == n / 2) stop_at_half->store(true);
+        co_yield i;
+    }
+    co_return n;
+}
+
+}  // namespace
+
+TEST_CASE("drain tells how far the work has come and gives the machine's answer") {
+    std::vector<WorkProgress> told;
+    WorkMeter meter([&](const WorkProgress& p) { told.push_back(p); }, nullptr, 0.0);
+    meter.stage("counting", "numbers", 200'000);
+    const int answer = hsr::algo::drain(counting_to(200'000), &meter, [](int, double& done) { ++done; });
+    CHECK(answer == 200'000);
+    REQUIRE(told.size() >= 2);  // at the stage's start, and its last word
+    CHECK(told.front().done == 0);
+    CHECK(told.back().finished);
+    CHECK(told.back().done == 200'000);
+    for (std::size_t k = 1; k < told.size(); ++k) CHECK(told[k].done >= told[k - 1].done);
+}
+
+TEST_CASE("a meter's teller waits before its first word, and then speaks at most twice a second") {
+    std::vector<WorkProgress> told;
+    WorkMeter quiet([&](const WorkProgress& p) { told.push_back(p); }, nullptr, 60.0);
+    quiet.stage("short work", "steps", 10);
+    (void)hsr::algo::drain(counting_to(100'000), &quiet, [](int, double& done) { ++done; });
+    CHECK(told.empty());  // short work says nothing (and no last word either)
+
+    WorkMeter chatty([&](const WorkProgress& p) { told.push_back(p); }, nullptr, 0.0);
+    chatty.stage("work", "steps", 10);
+    for (int k = 0; k < 100'000; ++k) chatty.at(k);
+    CHECK(told.size() == 1);  // within half a second of the first word: no second
+}
+
+TEST_CASE("asked to stop, a drained machine ends with WorkStopped before its answer") {
+    std::atomic<bool> stop{false};
+    WorkMeter meter({}, &stop);
+    meter.stage("counting", "numbers", 1e6);
+    int seen = 0;
+    CHECK_THROWS_AS(hsr::algo::drain(counting_to(1'000'000, &stop), &meter, [&](int, double& done) { done = ++seen; }),
+                    hsr::algo::WorkStopped);
+    CHECK(seen >= 500'000);
+    CHECK(seen < 500'000 + 1024 + 1);  // seen within the 1024 events between two looks
+}
+
+TEST_CASE("the progress sentence gives done, total, share, time and the time left") {
+    const WorkProgress p{.stage = "ray cast", .unit = "rays", .done = 120'000, .total = 262'144, .seconds = 3.14, .seconds_left = 75.0};
+    CHECK(p.sentence() == "ray cast: 120,000 of 262,144 rays (45 %), 3.1 s, about 1 min 15 s left");
+    const WorkProgress none{.stage = "BSP build", .unit = "polygons placed", .done = 0, .total = 7};
+    CHECK(none.sentence() == "BSP build: 0 of 7 polygons placed (0 %), 0.0 s");
+}
