@@ -355,6 +355,29 @@ case "$case" in
     done
     test "$(wc -l < rep/report.csv)" -gt 40
     grep -q "^clipping,liang_barsky straight-line (float)," rep/report.csv ;;
+  long-work)  # a long render tells how far it is on stderr and stops on Ctrl+C, exit 130, with no image written
+    # (depth sort on 100,000 sphere triangles examines pairs for about 35 s before its bound; it is stopped after 8)
+    rc=0; timeout --preserve-status -s INT 8 "$hsrviz" render spheres:100000 --algorithm depth-sort --out long.png 2> err.txt || rc=$?
+    cat err.txt
+    test "$rc" -eq 130
+    test ! -e long.png
+    grep -q "depth sort: .* of 99,904 polygons painted" err.txt
+    grep -q "stopped (Ctrl+C); no image written" err.txt ;;
+  memory)  # work beyond the memory there is: refused with the figures before it starts, or, when a machine grows
+          # past the estimate, stopped by std::bad_alloc with "out of memory" and no image
+    rc=0; HSRVIZ_MEMORY_LIMIT=100000000 "$hsrviz" render city:1000000 --out big.png 2> err.txt || rc=$?
+    test "$rc" -eq 1
+    grep -q "needs about 1.2 GB of memory, and about 95 MB is available" err.txt
+    test ! -e big.png
+    # A real allocation failure under an address-space limit (the first-polygon BSP of a city splits far beyond
+    # the estimate). Only in the plain build: the sanitizers' shadow memory cannot start under ulimit -v.
+    if [ "${HSR_SANITIZED:-0}" != 1 ]; then
+      rc=0; (ulimit -v 500000; "$hsrviz" render city:100000 --algorithm bsp --out oom.png) 2> err.txt || rc=$?
+      cat err.txt
+      test "$rc" -eq 1
+      grep -q "out of memory: the render needs more than this machine (or its limits) allow; no image written" err.txt
+      test ! -e oom.png
+    fi ;;
   *) echo "unknown case $case"; exit 2 ;;
 esac
 echo "gui_test $case: ok"
