@@ -125,10 +125,10 @@ void draw_active_segment(const ClipView& view, const PrimitiveState& p, const To
     end(w2, "p2", view.c2, view.c2_known);
 }
 
-void draw_active_polygon(const ClipView& view, const algo::Scene& scene, const PrimitiveState& p, const ToWorld& world,
+void draw_active_polygon(const ClipView& view, const SceneColors& colors, const PrimitiveState& p, const ToWorld& world,
                          LineBatches& out) {
     polyline(out.faint, world, view.stage_input, true, palette::working);
-    polyline(out.bold, world, view.stage_output, false, scene_color(scene, p.id, 1));
+    polyline(out.bold, world, view.stage_output, false, colors(p.id, 1));
     if (view.edge >= 0 && !view.stage_input.empty()) {
         const std::size_t i = std::size_t(view.edge), n = view.stage_input.size();
         if (auto s = world(view.stage_input[i]), e = world(view.stage_input[(i + 1) % n]); s && e) {
@@ -158,7 +158,7 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches&
             if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), colors(p.id, 0.9f)});
         if (!active) continue;
         if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels, tween);
-        if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, scene, p, world, out);
+        if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, colors, p, world, out);
     }
     for (std::size_t k = 0; k < view.intersections.size(); ++k)
         if (auto at = world(view.intersections[k])) {
