@@ -110,6 +110,13 @@ Steps<BspEvent, Sides> build_node(BspTree* t, BspNodeId node, ListToBuild in, Bs
     // Classify every other polygon against the splitter's plane
     for (BspPolygonId p : list) {
         if (p == splitter) continue;
+        if (++t->classifications > *o.max_classifications) {  // bound: this node keeps what is left, unclassified
+            co_yield BspBoundReached{BspBound::classifications, *o.max_classifications};
+            t->bounded = true;
+            for (auto rest = std::find(list.begin(), list.end(), p); rest != list.end(); ++rest)
+                if (*rest != splitter) here.push_back(*rest);
+            break;
+        }
         const Tolerance tol = pair_tolerance(*t, splitter, t->polygons[std::size_t(p)].vertices);
         const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, tol);
         co_yield PolygonClassified{node, p, side};
@@ -210,6 +217,8 @@ Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions op
                            std::to_string(options.max_polygons));
     const Vec3 size = polygons.empty() ? Vec3(1) : hi - lo;
     tree.tolerance = Tolerance::for_extent(std::max({size.x, size.y, size.z}));
+    if (!options.max_classifications)
+        options.max_classifications = std::uint32_t(std::clamp<std::uint64_t>(256 * std::uint64_t(tree.polygons.size()), 1u << 24, 1u << 28));
     return build_machine(std::move(tree), options);
 }
 

@@ -38,6 +38,7 @@ std::string_view to_string(BspBound b) {
     switch (b) {
         case BspBound::depth: return "tree depth";
         case BspBound::polygons: return "polygons";
+        case BspBound::classifications: return "classifications";
     }
     return "?";
 }

@@ -22,7 +22,7 @@ using BspNodeId = std::int32_t;     // index into BspTree::nodes; −1 is an emp
 using VertexList = std::shared_ptr<const std::vector<Vec3>>;
 
 enum class SplitterRule : std::uint8_t { first, balanced, fewest_splits, weighted };
-enum class BspBound : std::uint8_t { depth, polygons };
+enum class BspBound : std::uint8_t { depth, polygons, classifications };
 enum class Order : std::uint8_t { back_to_front, front_to_back };
 
 bool same_vertices(const VertexList& a, const VertexList& b);  // by content

@@ -288,6 +288,30 @@ TEST_CASE("BSP extreme cases", "[bsp][extreme]") {
                           [](const BspEvent& e) { return std::holds_alternative<BspBoundReached>(e); }));
         check_drawn_once(in, b.tree, paint_order(b.tree, Vec3(0)));
     }
+    SECTION("a classification bound ends the build with an event naming it, and every polygon is still drawn once") {
+        std::mt19937_64 rng(4);
+        const auto in = random_triangles(rng, 30);
+        const Built whole = build(in);
+        REQUIRE(whole.tree.classifications > 40);
+        const Built b = build(in, {.max_classifications = 40});
+        CHECK(b.tree.bounded);
+        CHECK(b.tree.classifications > 40);  // the one that found the bound is counted, then nothing more is classified
+        const auto classified = std::count_if(b.events.begin(), b.events.end(), [](const BspEvent& e) {
+            return std::holds_alternative<PolygonClassified>(e);
+        });
+        CHECK(classified == 40);
+        CHECK(std::any_of(b.events.begin(), b.events.end(), [](const BspEvent& e) {
+            const auto* bound = std::get_if<BspBoundReached>(&e);
+            return bound && bound->bound == BspBound::classifications && bound->limit == 40;
+        }));
+        check_drawn_once(in, b.tree, paint_order(b.tree, Vec3(0)));
+    }
+    SECTION("the default classification bound lets an ordinary build finish") {
+        std::mt19937_64 rng(5);
+        const Built b = build(random_triangles(rng, 200));
+        CHECK_FALSE(b.tree.bounded);
+        CHECK(b.tree.classifications < (1u << 24));
+    }
     SECTION("an eye on a splitting plane still gets a correct order") {
         std::mt19937_64 rng(8);
         const auto in = random_triangles(rng, 20);

@@ -55,10 +55,12 @@ algo::Acceleration acceleration_named(const std::string& s) {
 
 algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
     analysis::BspPainting p = analysis::paint_bsp(scene, splitter_named(o.splitter), vp, &meter);
-    std::printf("bsp (%s): %zu polygons in, %zu in the tree after %u splits, %zu nodes, depth %u, built in %.3f ms\n",
-                o.splitter.c_str(), scene.polygons.size(), p.tree.held(), p.tree.splits, p.tree.nodes.size(),
-                p.tree.depth, p.build_ms);
-    if (p.tree.bounded) throw std::runtime_error("the BSP build stopped at its step bound (depth or polygons); no image written");
+    std::printf("bsp (%s): %zu polygons in, %zu in the tree after %u splits and %llu classifications, %zu nodes, "
+                "depth %u, built in %.3f ms\n",
+                o.splitter.c_str(), scene.polygons.size(), p.tree.held(), p.tree.splits,
+                static_cast<unsigned long long>(p.tree.classifications), p.tree.nodes.size(), p.tree.depth, p.build_ms);
+    if (p.tree.bounded)
+        throw std::runtime_error("the BSP build stopped at a step bound (depth, polygons or classifications); no image written");
     return std::move(p.image);
 }
 
