@@ -22,15 +22,11 @@
 
 #include "capture.h"
 #include "cli/commands.h"
+#include "state/output_folder.h"
+#include "frame_panels.h"
 #include "gif_writer.h"
 #include "lesson_play.h"
-#include "panels/chapter_panels.h"
-#include "panels/keys_panel.h"
 #include "panels/layout_audit.h"
-#include "panels/lesson_menu.h"
-#include "panels/toast_panel.h"
-#include "panels/preset_panel.h"
-#include "panels/report_panel.h"
 #include "render/gl.h"
 #include "render/palette.h"
 #include "scene/input_file.h"
@@ -132,12 +128,9 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!lp.session()) {
-        error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), layout, actions);
-        if (lp.show_presets) preset_panel(lp.presets, false, lp.next_seed, lp.path != lp.home, layout, actions);
-        toast_panel(lp.toasts, seconds_now(), layout);
+        draw_frame_panels(lp, "", 0, 0, layout, actions);
         return;
     }
-    const Session& s = *lp.session();
     r.batches.faint.clear();
     r.batches.bold.clear();
     r.labels.clear();
@@ -153,28 +146,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, 0, px(layout.width), px(layout.height));
     draw_labels(r.labels, vp, 0, 0, view_w, view_h);
 
-    // the family's canvases and state panel, then what every lesson has
-    PanelFrame panels{view_w, view_h, layout, lp.second_view, lp.animate, actions};
-    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_panels(session, panels); });
-    if (s.lesson().chapters.empty()) lesson_panel(s, scene.detail, layout);
-    else chapter_lesson_panel(s, lp.classroom, scene.detail, layout);
-    pseudocode_panel(s, layout);
-    question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
-    if (lp.show_report)
-        report_panel(lp.report, lp.measuring.running() ? std::optional(lp.measuring.fraction()) : std::nullopt, layout, actions);
-    if (lp.show_keys) keys_panel(layout);
-    if (lp.show_presets)
-        preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
-    if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, layout, actions);
-    toast_panel(lp.toasts, seconds_now(), layout);
-    narration_panel(s, layout);
-    const Question* open = lp.classroom.open_question(s);
-    std::vector<TimelineMark> marks;
-    if (const LessonScript* script = lp.classroom.script())
-        for (std::size_t k = 0; k < script->places().size() && k < s.lesson().chapters.size(); ++k)
-            if (const auto at = script->places()[k].starts)
-                marks.push_back({*at, s.lesson().chapters[k].question.has_value(), s.lesson().chapters[k].title});
-    timeline_panel(s, lp.playback, open ? open->choices.size() : 0, marks, layout, actions);
+    draw_frame_panels(lp, scene.detail, view_w, view_h, layout, actions);
 }
 
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.

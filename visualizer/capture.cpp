@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "cli/commands.h"
+#include "state/output_folder.h"
 #include "cli/png_io.h"
 #include "render/gl.h"
 #include "scene/save_scene.h"

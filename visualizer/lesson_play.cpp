@@ -8,7 +8,7 @@
 
 #include "scene/input_file.h"
 #include "scene/toml_reader.h"
-#include "cli/commands.h"
+#include "state/output_folder.h"
 #include "scene/save_scene.h"
 #include "state/trace.h"
 

@@ -7,6 +7,7 @@
 
 #include "app.h"
 #include "cli/commands.h"
+#include "state/output_folder.h"
 #include "cli/render_command.h"
 #include "cli/report_command.h"
 #include "state/arguments.h"

@@ -14,6 +14,14 @@
 namespace hsr::viz {
 namespace {
 
+// The style before scaling (ScaleAllSizes multiplies, so each scale starts from this).
+ImGuiStyle& unscaled_style() {
+    static ImGuiStyle style;
+    return style;
+}
+
+}  // namespace
+
 void load_fonts(ImGuiIO& io, float scale) {
     // The characters lessons may use (state/glyphs.h: `hsrviz check` warns about any other), as ImGui's ranges
     static const std::vector<ImWchar> ranges = [] {
@@ -31,14 +39,6 @@ void load_fonts(ImGuiIO& io, float scale) {
     io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges.data());
     io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges.data());  // pseudocode
 }
-
-// The style before scaling (ScaleAllSizes multiplies, so each scale starts from this).
-ImGuiStyle& unscaled_style() {
-    static ImGuiStyle style;
-    return style;
-}
-
-}  // namespace
 
 bool interactive(const AppOptions& o) { return !o.screenshot && !o.record_dir && !o.gif; }
 

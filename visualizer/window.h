@@ -2,6 +2,7 @@
 #pragma once
 
 #include <SDL.h>
+#include <imgui.h>
 
 #include "app.h"
 #include "state/window_settings.h"
@@ -25,6 +26,9 @@ void setup_imgui(const Window& w, const AppOptions& o);
 // The scale the window starts at: --scale; else 1.3 for a projector, the screen's DPI / 96 on a high-DPI screen
 // (144 dpi and more), else 1.
 float initial_scale(const AppOptions& o);
+// The window's two fonts at `scale` into ImGui's atlas: DejaVu Sans for text, DejaVu Sans Mono for pseudocode,
+// with every character a lesson may use (state/glyphs.h); ImGui's own ASCII font when DejaVu is missing.
+void load_fonts(ImGuiIO& io, float scale);
 // Type, paddings and frames rebuilt at `scale` (Ctrl+= and Ctrl+−). Between frames only.
 void apply_scale(float scale);
 

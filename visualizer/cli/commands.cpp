@@ -54,14 +54,6 @@ int print_lesson_list() {
     return status;
 }
 
-bool make_folder(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (!ec && std::filesystem::is_directory(dir, ec)) return true;
-    std::fprintf(stderr, "hsrviz: cannot make the folder %s: %s\n", dir.c_str(), ec ? ec.message().c_str() : "a file of that name is in the way");
-    return false;
-}
-
 int run_check(std::vector<std::string> files, const std::string& root) {
     if (files.empty())
         for (const char* dir : {"lessons", "assets/scenes"})

@@ -19,9 +19,6 @@ int run_trace(const TraceOptions& o);
 // --lesson-list: the shipped lessons, one line each (file, difficulty, algorithm, title); exit code.
 int print_lesson_list();
 
-// Makes a folder (and its parents); false, having said why on stderr, when it cannot be made.
-bool make_folder(const std::string& dir);
-
 // Checks lesson and scene files (state/lesson_check.h); with none, every shipped lesson and scene under `root`.
 // Prints one line per file (and one per problem); exit code 1 when any file has a problem.
 int run_check(std::vector<std::string> files, const std::string& root);

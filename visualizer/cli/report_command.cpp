@@ -6,6 +6,7 @@
 
 #include "analysis/measurement.h"
 #include "cli/commands.h"
+#include "state/output_folder.h"
 #include "analysis/report_files.h"
 #include "state/lesson.h"
 

@@ -42,7 +42,11 @@ GLuint compile(GLenum type, const char* source) {
 
 }  // namespace
 
-LineBatch::LineBatch() {
+LineBatch::LineBatch() = default;
+
+// The GL objects are made at the first draw, not with the batch: a batch can then be filled with no GL context (the
+// panel fuzzer fills a frame's batches headless) and a batch never drawn costs nothing.
+void LineBatch::make_gl_objects() {
     const GLuint vs = compile(GL_VERTEX_SHADER, vertex_shader), fs = compile(GL_FRAGMENT_SHADER, fragment_shader);
     program_ = glCreateProgram();
     glAttachShader(program_, vs);
@@ -67,6 +71,7 @@ LineBatch::LineBatch() {
 }
 
 LineBatch::~LineBatch() {
+    if (program_ == 0) return;  // never drawn
     glDeleteBuffers(1, &vbo_);
     glDeleteVertexArrays(1, &vao_);
     glDeleteProgram(program_);
@@ -98,6 +103,7 @@ void LineBatch::upload_and_draw(const std::vector<ColoredVertex>& v, GLenum mode
 }
 
 void LineBatch::draw(const glm::mat4& view_projection, float line_width, float point_size) {
+    if (program_ == 0) make_gl_objects();
     glUseProgram(program_);
     glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(view_projection));
     glUniform1f(point_size_location_, point_size);

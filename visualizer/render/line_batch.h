@@ -33,6 +33,7 @@ public:
     void draw(const glm::mat4& view_projection, float line_width, float point_size);
 
 private:
+    void make_gl_objects();
     void upload_and_draw(const std::vector<ColoredVertex>& v, GLenum mode);
     std::vector<ColoredVertex> lines_, triangles_, points_;
     GLuint program_ = 0, vao_ = 0, vbo_ = 0;

@@ -1,0 +1,48 @@
+#include "frame_panels.h"
+
+#include <optional>
+#include <vector>
+
+#include "panels/chapter_panels.h"
+#include "panels/keys_panel.h"
+#include "panels/lesson_menu.h"
+#include "panels/preset_panel.h"
+#include "panels/report_panel.h"
+#include "panels/toast_panel.h"
+
+namespace hsr::viz {
+
+void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
+                       UiActions& actions) {
+    if (!lp.session()) {
+        error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), layout, actions);
+        if (lp.show_presets) preset_panel(lp.presets, false, lp.next_seed, lp.path != lp.home, layout, actions);
+        toast_panel(lp.toasts, seconds_now(), layout);
+        return;
+    }
+    const Session& s = *lp.session();
+    // the family's canvases and state panel, then what every lesson has
+    PanelFrame panels{view_w, view_h, layout, lp.second_view, lp.animate, actions};
+    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_panels(session, panels); });
+    if (s.lesson().chapters.empty()) lesson_panel(s, detail, layout);
+    else chapter_lesson_panel(s, lp.classroom, detail, layout);
+    pseudocode_panel(s, layout);
+    question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
+    if (lp.show_report)
+        report_panel(lp.report, lp.measuring.running() ? std::optional(lp.measuring.fraction()) : std::nullopt, layout, actions);
+    if (lp.show_keys) keys_panel(layout);
+    if (lp.show_presets)
+        preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
+    if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, layout, actions);
+    toast_panel(lp.toasts, seconds_now(), layout);
+    narration_panel(s, layout);
+    const Question* open = lp.classroom.open_question(s);
+    std::vector<TimelineMark> marks;
+    if (const LessonScript* script = lp.classroom.script())
+        for (std::size_t k = 0; k < script->places().size() && k < s.lesson().chapters.size(); ++k)
+            if (const auto at = script->places()[k].starts)
+                marks.push_back({*at, s.lesson().chapters[k].question.has_value(), s.lesson().chapters[k].title});
+    timeline_panel(s, lp.playback, open ? open->choices.size() : 0, marks, layout, actions);
+}
+
+}  // namespace hsr::viz
