@@ -262,7 +262,10 @@ int run_app(const AppOptions& o) {
 
             // Update: recording and screenshots take one Step per frame, so the same command gives the same picture
             const std::uint64_t ticks = SDL_GetTicks64();
-            if ((o.record_dir || o.gif || (o.screenshot && o.keys.empty())) && frame > 0) actions.step = true;
+            // (a screenshot's frames after the last step only settle the panels: ImGui shows a scrollbar a frame
+            // after the content outgrew its box, and a step then would outgrow it again)
+            const bool screenshot_steps = o.screenshot && o.keys.empty() && frame < std::uint64_t(o.frames);
+            if ((o.record_dir || o.gif || screenshot_steps) && frame > 0) actions.step = true;
             lp.update(actions, double(ticks - last_ticks) / 1000.0, o);
             last_ticks = ticks;
 
@@ -308,7 +311,8 @@ int run_app(const AppOptions& o) {
             // frames at most) for the panel column to settle
             const bool keys_pressed = next_key >= o.keys.size() && !lp.measuring.running();  // the last one drawn already
             const std::uint64_t ready = std::max<std::uint64_t>(std::uint64_t(o.frames), o.keys.size());
-            if (o.screenshot && keys_pressed && frame >= ready && (!lp.column.moved() || frame >= ready + 8)) {
+            const bool settled = !lp.column.moved() && layout_problems().empty();
+            if (o.screenshot && keys_pressed && frame >= ready && (settled || frame >= ready + 8)) {
                 if (const Session* s = lp.session())
                     std::printf("hsrviz: at step %zu of %zu%s, %s%s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
                                 lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "",

@@ -379,6 +379,15 @@ case "$case" in
       grep -q "out of memory: the render needs more than this machine (or its limits) allow; no image written" err.txt
       test ! -e oom.png
     fi ;;
+  huge-scene)  # a lesson on a 65,535-triangle city opens in seconds (no quadratic path in the window), with the
+              # panels laid out whole and the labels' crowd thinned (a screenshot after plain steps: its last frames
+              # only settle the panels)
+    printf 'title = "A huge city"\nalgorithm = "sutherland_hodgman"\nscene = "city:65535"\n' > huge.toml
+    "$hsrviz" huge.toml --screenshot huge.png --frames 3 > out.txt
+    cat out.txt
+    grep -q "at step 3 of 100000+" out.txt
+    if grep "layout:" out.txt; then exit 1; fi
+    "$png_check" huge.png 1280 800 ;;
   *) echo "unknown case $case"; exit 2 ;;
 esac
 echo "gui_test $case: ok"

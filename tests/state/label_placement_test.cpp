@@ -40,3 +40,19 @@ TEST_CASE("labels far apart each keep the usual spot", "[labels]") {
     CHECK(p[0].left == p[1].left - 290);
     CHECK(p[0].top == p[1].top);
 }
+
+TEST_CASE("in a crowd, labels with no free spot are left out after the first few, which are always shown", "[labels]") {
+    // 60 polygons' labels at one point (a city of thousands seen from afar): eight spots around it are free
+    const std::vector<LabelBox> crowd(60, LabelBox{400, 300, 30, 14});
+    const auto p = place_labels(crowd, 16);
+    REQUIRE(p.size() == crowd.size());
+    for (std::size_t k = 0; k < 16; ++k) CHECK(p[k].shown);  // the first 16: shown, on a free spot or their own
+    for (std::size_t k = 16; k < crowd.size(); ++k) CHECK_FALSE(p[k].shown);
+    // those shown on a free spot never overlap one another
+    for (std::size_t i = 0; i < 8; ++i)
+        for (std::size_t j = i + 1; j < 8; ++j) CHECK_FALSE(overlap(crowd[i], p[i], crowd[j], p[j]));
+    // with room around every point, nobody is left out
+    std::vector<LabelBox> spread;
+    for (int k = 0; k < 60; ++k) spread.push_back({float(40 * (k % 10)), float(40 * (k / 10)), 20, 12});
+    for (const Placed& q : place_labels(spread, 16)) CHECK(q.shown);
+}

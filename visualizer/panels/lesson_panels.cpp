@@ -201,6 +201,7 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
     }
     const std::vector<Placed> at = place_labels(boxes);
     for (std::size_t k = 0; k < shown.size(); ++k) {
+        if (!at[k].shown) continue;  // no free spot in a crowd of labels
         const Label& label = *shown[k];
         const ImU32 color = ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, label.color.w));
         d->AddText(ImVec2(at[k].left + 1, at[k].top + 1), IM_COL32(0, 0, 0, 200), label.text.c_str());

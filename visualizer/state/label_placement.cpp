@@ -10,7 +10,7 @@ struct Rect {
 
 }  // namespace
 
-std::vector<Placed> place_labels(const std::vector<LabelBox>& labels) {
+std::vector<Placed> place_labels(const std::vector<LabelBox>& labels, std::size_t always_shown) {
     std::vector<Placed> out;
     std::vector<Rect> taken;
     for (const LabelBox& l : labels) {
@@ -21,6 +21,7 @@ std::vector<Placed> place_labels(const std::vector<LabelBox>& labels) {
             {l.x + gap, l.y - 2 * line}, {l.x + gap, l.y + line}, {l.x - gap - l.width, l.y - 2 * line}, {l.x - gap - l.width, l.y + line},
         };
         Placed chosen = tries[0];
+        chosen.shown = out.size() < always_shown;
         for (const Placed& p : tries) {
             const Rect r{p.left, p.top, p.left + l.width, p.top + l.height};
             bool free = true;
@@ -31,7 +32,7 @@ std::vector<Placed> place_labels(const std::vector<LabelBox>& labels) {
             }
         }
         out.push_back(chosen);
-        taken.push_back({chosen.left, chosen.top, chosen.left + l.width, chosen.top + l.height});
+        if (chosen.shown) taken.push_back({chosen.left, chosen.top, chosen.left + l.width, chosen.top + l.height});
     }
     return out;
 }

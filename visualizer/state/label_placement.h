@@ -1,8 +1,11 @@
 // Where the labels of a view go so that none covers another: each wants the spot to the upper right of its point;
 // when that spot is taken, it tries the other corners and then spots a line further away, and takes the first free
-// one (if none is free, its own spot). Labels placed first keep their spots: pass the most important first.
+// one. If none is free, the first `always_shown` labels take their own spot anyway (what a small scene or the
+// question is about is never hidden); a later one is not shown (a crowd of them, on a scene of thousands of
+// polygons, would be an unreadable pile). Labels placed first keep their spots: pass the most important first.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace hsr::viz {
@@ -12,9 +15,10 @@ struct LabelBox {
     float width, height;  // of its text
 };
 struct Placed {
-    float left, top;  // of the text
+    float left, top;    // of the text
+    bool shown = true;  // false: no free spot, and past the labels always shown
 };
 
-std::vector<Placed> place_labels(const std::vector<LabelBox>& labels);
+std::vector<Placed> place_labels(const std::vector<LabelBox>& labels, std::size_t always_shown = 12);
 
 }  // namespace hsr::viz
