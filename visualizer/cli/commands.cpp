@@ -56,9 +56,17 @@ int print_lesson_list() {
 
 int run_check(std::vector<std::string> files, const std::string& root) {
     if (files.empty())
-        for (const char* dir : {"lessons", "assets/scenes"})
-            for (const auto& e : std::filesystem::recursive_directory_iterator(std::filesystem::path(root) / dir))
-                if (e.path().extension() == ".toml") files.push_back(e.path().string());
+        for (const char* dir : {"lessons", "assets/scenes"}) {
+            std::error_code ec;
+            const std::filesystem::path folder = std::filesystem::path(root) / dir;
+            for (auto it = std::filesystem::recursive_directory_iterator(folder, ec); !ec && it != std::filesystem::end(it); it.increment(ec))
+                if (it->path().extension() == ".toml") files.push_back(it->path().string());
+            if (ec) {  // an installation without its data, or HSRVIZ_DATA naming the wrong folder
+                std::fprintf(stderr, "hsrviz: cannot read the shipped lessons and scenes in %s: %s (set HSRVIZ_DATA to the "
+                                     "folder holding lessons/ and assets/)\n", algo::printable(folder.string()).c_str(), ec.message().c_str());
+                return 1;
+            }
+        }
     std::sort(files.begin(), files.end());
     int bad = 0;
     for (const std::string& f : files) {

@@ -114,7 +114,16 @@ algo::Scene grid_scene(const Lesson& lesson) {
 
 std::string data_dir() {
     if (const char* d = std::getenv("HSRVIZ_DATA"); d && *d) return d;
-    return HSR_SOURCE_DIR;
+    // installed (or a copy of the installation moved anywhere): BIN/hsrviz finds BIN/../share/hsrviz
+    static const std::string beside_program = [] {
+        std::error_code ec;
+        const auto program = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (ec) return std::string();
+        const auto share = program.parent_path().parent_path() / "share" / "hsrviz";
+        return std::filesystem::is_directory(share / "lessons", ec) ? share.string() : std::string();
+    }();
+    if (!beside_program.empty()) return beside_program;
+    return HSR_SOURCE_DIR;  // a run from the build tree
 }
 
 std::string default_lesson_path() { return data_dir() + "/lessons/00_tour.toml"; }

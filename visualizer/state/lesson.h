@@ -61,7 +61,8 @@ Lesson load_lesson(const std::string& path, std::optional<std::string> algorithm
 Lesson load_lesson_text(const std::string& path, std::string_view text);
 Lesson read_lesson(const algo::TomlReader& reader, std::optional<std::string> algorithm);
 
-// Where lessons/ and assets/ are: $HSRVIZ_DATA, else the source tree the program was built from.
+// Where lessons/ and assets/ are: $HSRVIZ_DATA when set (a teacher's own copy wins); else beside the program as
+// installed (BIN/../share/hsrviz, wherever the installation was put); else the source tree the program was built from.
 std::string data_dir();
 std::string default_lesson_path();
 // The lessons in data_dir()/lessons, in the course's order (by file name: NN_topic.toml).
