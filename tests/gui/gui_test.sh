@@ -358,7 +358,9 @@ case "$case" in
   long-work)  # a long render tells how far it is on stderr and stops on Ctrl+C, exit 130, with no image written
     # (a ray cast of 100,000 sphere triangles with no acceleration structure: 14 minutes; it is stopped after 8 s,
     # and each ray is slow, so this also shows the stop is seen at once, not a thousand rays later)
-    rc=0; timeout --preserve-status -s INT 8 "$hsrviz" render spheres:100000 --algorithm raycast --accel none --out long.png 2> err.txt || rc=$?
+    # (--foreground: one SIGINT to hsrviz, as a terminal's Ctrl+C sends; without it timeout signals the process
+    # and then its whole group, and that second SIGINT is the "second Ctrl+C ends at once")
+    rc=0; timeout --foreground --preserve-status -s INT 8 "$hsrviz" render spheres:100000 --algorithm raycast --accel none --out long.png 2> err.txt || rc=$?
     cat err.txt
     test "$rc" -eq 130
     test ! -e long.png
