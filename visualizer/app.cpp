@@ -27,6 +27,7 @@
 #include "gif_writer.h"
 #include "lesson_play.h"
 #include "panels/layout_audit.h"
+#include "panels/work_panel.h"
 #include "render/gl.h"
 #include "render/palette.h"
 #include "scene/input_file.h"
@@ -149,6 +150,44 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     draw_frame_panels(lp, scene.detail, view_w, view_h, layout, actions);
 }
 
+// A frame drawn from inside long work (the meter's teller, ten times a second once it has lasted 0.3 s): the
+// progress box over an empty view. The input since the last frame is read here: Esc stops the work, closing the
+// window stops it and quits; a scripted key (--keys) is pushed as on any frame, so a test presses Esc as a
+// teacher would while a huge lesson opens. Other input waits until the work is done or stopped.
+void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const AppOptions& o, std::size_t& next_key, bool& quit) {
+    if (p.finished) {  // the last word: how long it took, on the terminal
+        std::printf("hsrviz: %s\n", p.sentence().c_str());
+        std::fflush(stdout);
+        return;
+    }
+    if (next_key < o.keys.size())
+        if (const auto input = parse_scripted_input(o.keys[next_key]); input && input->kind == ScriptedInput::Kind::key) {
+            SDL_Event e;
+            key_event(input->key, e);
+            SDL_PushEvent(&e);
+            ++next_key;
+        }
+    SDL_Event e;
+    while (SDL_PollEvent(&e)) {
+        ImGui_ImplSDL2_ProcessEvent(&e);  // a resize, the mouse
+        const bool esc = e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE;
+        if (e.type == SDL_QUIT) quit = true;
+        if (esc || e.type == SDL_QUIT) lp.stopped_by = esc ? "Esc" : "the window closing", lp.stop_work = true;
+    }
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    glViewport(0, 0, GLsizei(io.DisplaySize.x * io.DisplayFramebufferScale.x), GLsizei(io.DisplaySize.y * io.DisplayFramebufferScale.y));
+    glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    work_panel(p, io.DisplaySize.x, io.DisplaySize.y);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    SDL_GL_SwapWindow(w.window);
+    if (std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "") == "offscreen") glFinish();
+}
+
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
 bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer& r, bool& shift_held) {
     const auto input = parse_scripted_input(text);
@@ -199,9 +238,12 @@ int run_app(const AppOptions& o) {
     {
         // The lesson, as the options and the settings say
         Lessonplay lp;
-        lp.load(o);
+        std::size_t next_key = 0;  // of --keys
+        bool quit = false;         // the window was closed while long work ran
+        lp.show_work = [&](const algo::WorkProgress& p) { work_frame(p, w, lp, o, next_key, quit); };
         lp.side = settings.side;
         lp.scale = lp.first_scale = initial_scale(o);
+        lp.load(o);
         float applied_scale = lp.scale;
         for (int k = 0; k < 8 && !settings.language.empty() && lp.classroom.language() != settings.language; ++k)
             lp.classroom.next_language();  // the language last chosen, where the lesson has it
@@ -216,12 +258,11 @@ int run_app(const AppOptions& o) {
         Renderer renderer;
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool orbiting = false;
-        std::size_t next_key = 0;
         std::uint64_t awake_until = SDL_GetTicks64() + 1000;  // ms: until when frames are drawn without waiting for input
         std::vector<double> frame_ms;  // --frame-log
         std::uint64_t frame_start = SDL_GetPerformanceCounter();
         const bool offscreen = SDL_GetCurrentVideoDriver() && std::string(SDL_GetCurrentVideoDriver()) == "offscreen";
-        while (running) {
+        while (running && !quit) {
             // Input: scripted keys and gestures first (through the same queue), then every event
             UiActions actions;
             bool scripted_shift = false;

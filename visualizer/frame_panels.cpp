@@ -15,7 +15,8 @@ namespace hsr::viz {
 void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions) {
     if (!lp.session()) {
-        error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), layout, actions);
+        error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), lp.opening_stopped, layout,
+                    actions);
         if (lp.show_presets) preset_panel(lp.presets, false, lp.next_seed, lp.path != lp.home, layout, actions);
         toast_panel(lp.toasts, seconds_now(), layout);
         return;

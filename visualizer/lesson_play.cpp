@@ -10,9 +10,19 @@
 #include "scene/toml_reader.h"
 #include "state/output_folder.h"
 #include "scene/save_scene.h"
+#include "state/long_work.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
+namespace {
+
+std::string seconds_said(const algo::WorkMeter& meter) {  // "3.1 s"
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f s", meter.seconds());
+    return b;
+}
+
+}  // namespace
 
 void Lessonplay::load(const AppOptions& o) {
     // A reload stays at its step where it still exists, also through a failed reload (a file saved half-written).
@@ -21,7 +31,9 @@ void Lessonplay::load(const AppOptions& o) {
     if (path.empty()) home = path = o.lesson_path, algorithm = o.algorithm;
     const std::vector<std::string> watched = watch.files();
     watch.watch({path});
+    algo::WorkMeter meter = work_meter("opening " + std::filesystem::path(path).filename().string());
     try {
+        LongWork in_place(meter);  // gone before the catch
         const Lesson lesson = load_lesson(path, algorithm);
         presets = extreme_presets(lesson.algorithm, data_dir() + "/assets/scenes/extreme");
         if (session() && session()->lesson().algorithm.machine.index() != lesson.algorithm.machine.index())
@@ -33,6 +45,7 @@ void Lessonplay::load(const AppOptions& o) {
         session()->prefetch(prefetch_events);  // the scrub bar shows a lesson's whole length
         classroom.attach(*session());
         error.clear();
+        opening_stopped = false;
         // A lesson that plays but whose chapters cannot work as written (a typo in an event's name, a question
         // nothing answers) says so, as `hsrviz check` would: the teacher sees it before the class does.
         if (const LessonScript* script = classroom.script())
@@ -49,6 +62,13 @@ void Lessonplay::load(const AppOptions& o) {
                     }
         session()->seek(std::min(start, session()->known()));
         place_before_error.reset();
+        meter.finish();
+    } catch (const algo::WorkStopped&) {  // Esc: the window is the teacher's again, and F5 tries once more
+        failed_to_load("opening " + path + " was stopped (" + stopped_by + ") after " + seconds_said(meter) + ", at " +
+                           algo::whole_number(meter.progress().done) + " machine steps",
+                       watched, path);
+        opening_stopped = true;
+        if (!fresh) place_before_error = keep;
     } catch (const algo::LoadError& e) {  // a bad file shows its error instead of the scene
         failed_to_load(e.what(), watched, e.file);
     } catch (const std::bad_alloc&) {
@@ -58,10 +78,19 @@ void Lessonplay::load(const AppOptions& o) {
     }
 }
 
+algo::WorkMeter Lessonplay::work_meter(const std::string& what) {
+    stop_work = false;
+    // the window's frames come a tenth of a second apart while it works (Esc is read there), the first after 0.3 s
+    algo::WorkMeter meter(show_work, &stop_work, 0.3, 0.1);
+    meter.stage(what, "machine steps", 0);
+    return meter;
+}
+
 void Lessonplay::failed_to_load(const std::string& why, std::vector<std::string> watched, const std::string& at_fault) {
     if (session()) place_before_error = session()->cursor();
     family.reset();
     error = algo::printable(why, 2000);
+    opening_stopped = false;
     // Still watched: the files watched before (the scene of a lesson that loaded) and the file at fault, so fixing
     // either reloads by itself.
     watched.push_back(path);
@@ -229,49 +258,62 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         show_keys = show_presets = show_report = show_menu = false;
     }
     if (a.toggle_3d) second_view = !second_view;
-    // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
-    // machine reruns, and the classroom follows the new events
-    with_family_screen([&](auto& s, auto& screen) {
-        if (screen.apply(s, a)) classroom.attach(p);
-        if (a.save_scene)
-            if (const auto scene = screen.edited_scene(s)) save_edited(*scene);
-    });
-    const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
-                          a.to_start || a.to_end || a.seek || playback.playing;
-    if (animate && may_move) with_family_screen([](auto& s, auto& screen) { screen.before_step(s); });
-    const std::size_t cursor = p.cursor();
-    if (a.speed) playback.speed = *a.speed;
-    const bool waiting = questions_hold && classroom.hold(cursor) == cursor;  // a question waits for its answer here
-    if (a.toggle_play) playback.playing = !playback.playing && !p.at_end() && !waiting;
-    if (a.step) p.step();
-    if (a.step_back) p.step_back();
-    if (a.micro_step) p.micro_step();
-    if (a.micro_step_back) p.micro_step_back();
-    if (a.to_start) p.seek(0);
-    if (a.to_end) p.seek_end();
-    if (a.seek) p.seek(*a.seek);
-    if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek)
+    // Long work (End on a run of millions of events, an edit that reruns a huge machine) shows the window busy, and
+    // Esc stops it between two events: the lesson stays where the work got to.
+    std::size_t cursor = p.cursor();
+    algo::WorkMeter meter = work_meter("running " + std::string(p.lesson().algorithm.id));
+    try {
+        LongWork in_place(meter);  // gone before the catch: what follows it must not tick a stopped meter
+        // the family's own edits (a moved eye or vertex, a new segment or triangle, undo, the depth format): the
+        // machine reruns, and the classroom follows the new events
+        with_family_screen([&](auto& s, auto& screen) {
+            if (screen.apply(s, a)) classroom.attach(p);
+            if (a.save_scene)
+                if (const auto scene = screen.edited_scene(s)) save_edited(*scene);
+        });
+        const bool may_move = a.toggle_play || a.step || a.step_back || a.micro_step || a.micro_step_back ||
+                              a.to_start || a.to_end || a.seek || playback.playing;
+        if (animate && may_move) with_family_screen([](auto& s, auto& screen) { screen.before_step(s); });
+        cursor = p.cursor();
+        if (a.speed) playback.speed = *a.speed;
+        const bool waiting = questions_hold && classroom.hold(cursor) == cursor;  // a question waits for its answer here
+        if (a.toggle_play) playback.playing = !playback.playing && !p.at_end() && !waiting;
+        if (a.step) p.step();
+        if (a.step_back) p.step_back();
+        if (a.micro_step) p.micro_step();
+        if (a.micro_step_back) p.micro_step_back();
+        if (a.to_start) p.seek(0);
+        if (a.to_end) p.seek_end();
+        if (a.seek) p.seek(*a.seek);
+        if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek)
+            playback.playing = false;
+        if (playback.playing) {
+            playback.since_step += dt;
+            if (playback.since_step >= 1.0 / playback.speed) {
+                playback.since_step = 0;
+                p.step();
+                if (p.at_end()) playback.playing = false;
+            }
+        }
+        // a step forward stops where a chapter pauses, so that its question is asked before the events answer it
+        if (a.step || a.micro_step || playback.playing)
+            if (const auto stop = classroom.first_pause_crossed(p, cursor)) {
+                p.seek(*stop);
+                playback.playing = false;
+            }
+        // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
+        if (questions_hold && p.cursor() > cursor)
+            if (const auto hold = classroom.hold(cursor); hold && p.cursor() > *hold) {
+                p.seek(*hold);
+                playback.playing = false;
+            }
+        meter.finish();
+    } catch (const algo::WorkStopped&) {
         playback.playing = false;
-    if (playback.playing) {
-        playback.since_step += dt;
-        if (playback.since_step >= 1.0 / playback.speed) {
-            playback.since_step = 0;
-            p.step();
-            if (p.at_end()) playback.playing = false;
-        }
+        classroom.attach(p);  // an edit's rerun may have stopped before the classroom followed it
+        tell("stopped (" + stopped_by + ") after " + seconds_said(meter) + ", at step " + std::to_string(p.cursor()) + " of " +
+             std::to_string(p.known()) + " known so far");
     }
-    // a step forward stops where a chapter pauses, so that its question is asked before the events answer it
-    if (a.step || a.micro_step || playback.playing)
-        if (const auto stop = classroom.first_pause_crossed(p, cursor)) {
-            p.seek(*stop);
-            playback.playing = false;
-        }
-    // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
-    if (questions_hold && p.cursor() > cursor)
-        if (const auto hold = classroom.hold(cursor); hold && p.cursor() > *hold) {
-            p.seek(*hold);
-            playback.playing = false;
-        }
     classroom.close_revealed(p);
     with_family_screen([&](auto& s, auto& screen) { screen.after_step(s, p.cursor() != cursor, dt); });
 }

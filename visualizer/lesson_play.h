@@ -2,12 +2,15 @@
 // classroom, the presets and the report, and the update that carries out a frame's UiActions.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "app.h"
+#include "core/work_meter.h"
 #include "state/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/orbit_camera.h"
@@ -25,6 +28,7 @@ struct Lessonplay {
     std::optional<FamilySession> family;  // the lesson being played, as its family's type
     Screens screens;                      // one per family
     std::string error;                    // why the lesson could not be loaded ("" when it could)
+    bool opening_stopped = false;         // the error is that opening was stopped (Esc), not the file
     std::optional<std::size_t> place_before_error;  // the step a failed reload left: the fixed file opens there again
     PlaybackState playback;
     OrbitCamera camera;
@@ -51,6 +55,11 @@ struct Lessonplay {
     BackgroundMeasurement measuring;      // R's measurement while it runs (a progress bar; closing R cancels it)
     std::vector<Preset> presets;          // of the lesson's algorithm
     std::uint32_t next_seed = 1;          // of the next random scene
+    // Long work (a lesson opening on a huge scene, End on a long run, an edit that reruns a big machine): the window
+    // shows it while it lasts and stops it on Esc (or when it is closed), by setting stop_work and saying why.
+    algo::WorkMeter::Teller show_work;
+    std::atomic<bool> stop_work{false};
+    std::string stopped_by = "Esc";
 
     Session* session() const { return family ? &**family : nullptr; }
     // f(session, screen) with the family's own types; only while a lesson plays
@@ -81,6 +90,8 @@ struct Lessonplay {
     void collect_report();
     // Stops R's measurement, if one runs, saying so.
     void cancel_report();
+    // A meter for long work named `what`, shown by the window and stopped by stop_work (reset here).
+    algo::WorkMeter work_meter(const std::string& what);
     // One frame's actions and dt seconds of playing.
     void update(const UiActions& a, double dt, const AppOptions& o);
 };

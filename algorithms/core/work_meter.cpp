@@ -5,13 +5,14 @@
 #include <cstdio>
 
 namespace hsr::algo {
-namespace {
 
-std::string whole(double x) {  // 262144 → "262,144"
-    std::string digits = std::to_string(static_cast<long long>(std::llround(std::max(0.0, x))));
+std::string whole_number(double x) {
+    std::string digits = std::to_string(static_cast<long long>(std::llround(std::clamp(x, 0.0, 9e18))));
     for (int k = int(digits.size()) - 3; k > 0; k -= 3) digits.insert(std::size_t(k), ",");
     return digits;
 }
+
+namespace {
 
 std::string duration(double s) {
     char b[32];
@@ -24,15 +25,15 @@ std::string duration(double s) {
 }  // namespace
 
 std::string WorkProgress::sentence() const {
-    std::string s = stage + ": " + whole(done) + " of " + whole(total) + " " + unit;
+    std::string s = stage + ": " + whole_number(done) + (total > 0 ? " of " + whole_number(total) : std::string()) + " " + unit;
     if (total > 0) s += " (" + std::to_string(int(std::clamp(100 * done / total, 0.0, 100.0))) + " %)";
     s += ", " + duration(seconds);
-    if (seconds_left) s += ", about " + duration(*seconds_left) + " left";
+    if (seconds_left && !finished) s += ", about " + duration(*seconds_left) + " left";
     return s;
 }
 
-WorkMeter::WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_tell_after_seconds)
-    : tell_(std::move(tell)), stop_(stop), first_tell_after_(first_tell_after_seconds) {}
+WorkMeter::WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_tell_after_seconds, double tell_every_seconds)
+    : tell_(std::move(tell)), stop_(stop), first_tell_after_(first_tell_after_seconds), tell_every_(tell_every_seconds) {}
 
 void WorkMeter::stage(std::string name, std::string unit, double total) {
     progress_ = {.stage = std::move(name), .unit = std::move(unit), .total = total};
@@ -45,7 +46,7 @@ void WorkMeter::look() {
     if (!tell_) return;
     const auto now = Clock::now();
     const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
-    if (seconds(now - work_start_) < first_tell_after_ || (told_ && seconds(now - last_told_) < 0.5)) return;
+    if (seconds(now - work_start_) < first_tell_after_ || (told_ && seconds(now - last_told_) < tell_every_)) return;
     progress_.seconds = seconds(now - stage_start_);
     progress_.seconds_left.reset();
     if (progress_.done > 0 && progress_.total >= progress_.done)
@@ -54,6 +55,8 @@ void WorkMeter::look() {
     told_ = true;
     last_told_ = now;
 }
+
+double WorkMeter::seconds() const { return std::chrono::duration<double>(Clock::now() - stage_start_).count(); }
 
 void WorkMeter::finish() {
     look();

@@ -1,5 +1,5 @@
 // Long work, told and stoppable. A command that drains a machine counts what is done against what there is to do;
-// every 64 events the meter looks at the clock and, at most twice a second, tells how far it has come
+// every 64 events the meter looks at the clock and, at most twice a second (or as often as asked), tells how far it has come
 // (done, left, an estimate of the time left) to whoever shows it: stderr for the command line, a bar in the window.
 // It also looks at a stop flag (set by Ctrl+C or Esc) and then throws WorkStopped, before anything is written: long
 // work stops cleanly and leaves no half-made output.
@@ -21,6 +21,9 @@ struct WorkStopped : std::runtime_error {
     WorkStopped() : std::runtime_error("stopped before the work was done") {}
 };
 
+// 262144 → "262,144" (a count, rounded; negative counts are 0)
+std::string whole_number(double x);
+
 struct WorkProgress {
     std::string stage;  // "ray cast", "BSP build", …
     std::string unit;   // what is counted: "rays", "polygons", …
@@ -35,7 +38,9 @@ class WorkMeter {
 public:
     using Teller = std::function<void(const WorkProgress&)>;
     // `stop` may be null (nothing can stop the work); `tell` may be empty (nobody watches, but stop still works).
-    WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_tell_after_seconds = 1.0);
+    // The first tell comes after `first_tell_after_seconds` (short work says nothing), the next ones
+    // `tell_every_seconds` apart (the window tells more often than a terminal: its teller is also where Esc is read).
+    WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_tell_after_seconds = 1.0, double tell_every_seconds = 0.5);
 
     void stage(std::string name, std::string unit, double total);  // a new stage starts: its clock, its count
     void set_total(double total) { progress_.total = total; }      // the total grew (a BSP split adds a polygon)
@@ -51,12 +56,13 @@ public:
     void finish();  // the stage is done: a last look, and a last word to a teller that was told anything
     [[nodiscard]] bool told_anything() const { return told_; }
     [[nodiscard]] const WorkProgress& progress() const { return progress_; }
+    [[nodiscard]] double seconds() const;  // since the stage started
 
 private:
     using Clock = std::chrono::steady_clock;
     Teller tell_;
     const std::atomic<bool>* stop_;
-    double first_tell_after_;
+    double first_tell_after_, tell_every_;
     WorkProgress progress_;
     Clock::time_point stage_start_ = Clock::now(), work_start_ = Clock::now(), last_told_{};
     std::uint64_t calls_ = 0;

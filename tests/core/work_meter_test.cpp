@@ -64,4 +64,9 @@ TEST_CASE("the progress sentence gives done, total, share, time and the time lef
     CHECK(p.sentence() == "ray cast: 120,000 of 262,144 rays (45 %), 3.1 s, about 1 min 15 s left");
     const WorkProgress none{.stage = "BSP build", .unit = "polygons placed", .done = 0, .total = 7};
     CHECK(none.sentence() == "BSP build: 0 of 7 polygons placed (0 %), 0.0 s");
+    // work whose size nobody knows ahead (a lesson opening: its machine's events) says what is done, not "of 0"
+    const WorkProgress open{.stage = "opening city.toml", .unit = "machine steps", .done = 1'234'567, .total = 0, .seconds = 2.5};
+    CHECK(open.sentence() == "opening city.toml: 1,234,567 machine steps, 2.5 s");
+    const WorkProgress done{.stage = "ray cast", .unit = "rays", .done = 7, .total = 7, .seconds = 1.0, .seconds_left = 0.0, .finished = true};
+    CHECK(done.sentence() == "ray cast: 7 of 7 rays (100 %), 1.0 s");  // the last word has nothing left
 }

@@ -390,6 +390,31 @@ case "$case" in
     grep -q "at step 3 of 100000+" out.txt
     if grep "layout:" out.txt; then exit 1; fi
     "$png_check" huge.png 1280 800 ;;
+  opening-stopped)  # Esc while a huge lesson opens stops the opening at once (a BSP traversal of 200,000 city
+                    # triangles takes tens of seconds to open), and the window says so instead of the scene
+    printf 'title = "A huge city"\nalgorithm = "bsp_traversal"\nscene = "city:200000"\n' > huge.toml
+    rc=0; "$hsrviz" huge.toml --keys Escape --screenshot stopped.png --frames 1 > out.txt 2>&1 || rc=$?
+    cat out.txt
+    test "$rc" -eq 1
+    grep -q "opening huge.toml was stopped (Esc) after .* machine steps" out.txt
+    "$png_check" stopped.png 1280 800 ;;
+  end-stopped)  # End on a run of millions of events shows the window busy, and Esc stops it where it got to: the
+                # lesson plays on from there
+    printf 'title = "A huge city"\nalgorithm = "sutherland_hodgman"\nscene = "city:200000"\n' > huge.toml
+    "$hsrviz" huge.toml --keys End,Escape,Right --screenshot end.png > out.txt
+    cat out.txt
+    grep -q "stopped (Esc) after .*, at step [0-9]* of [0-9]* known so far" out.txt
+    grep -q "at step [0-9]* of [0-9]*+*, paused" out.txt
+    "$png_check" end.png 1280 800 ;;
+  closed-while-opening)  # Ctrl+C in the terminal (SDL makes it a window close) while a huge lesson opens: the opening
+                         # stops and the program ends, long before the opening would (-k: a hang is killed, and fails)
+    printf 'title = "A huge city"\nalgorithm = "bsp_traversal"\nscene = "city:200000"\n' > huge.toml
+    SECONDS=0
+    rc=0; timeout --foreground -k 120 -s INT 5 "$hsrviz" huge.toml > out.txt 2>&1 || rc=$?
+    cat out.txt
+    test "$rc" -ne 137
+    grep -q "opening huge.toml was stopped (the window closing)" out.txt
+    test "$SECONDS" -lt 120 ;;
   *) echo "unknown case $case"; exit 2 ;;
 esac
 echo "gui_test $case: ok"

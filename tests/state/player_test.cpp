@@ -1,4 +1,5 @@
 // The player: seek(k) equals folding events [0, k) from the start, for every k, on real traces.
+#include <atomic>
 #include <random>
 
 #include "catch.h"
@@ -6,6 +7,7 @@
 #include "state/clip_view.h"
 #include "state/event_log.h"
 #include "state/lesson.h"
+#include "state/long_work.h"
 #include "state/player.h"
 
 using namespace hsr::algo;
@@ -140,5 +142,65 @@ TEST_CASE("seek(k) equals a fold of the first k events on every shipped lesson's
             player.seek(k);
             REQUIRE(same_view(player.view(), folds[k]));
         }
+    }
+}
+
+TEST_CASE("long work in the window: the player ticks the meter in place, and a stop between two events leaves it consistent",
+          "[state][player][long]") {
+    const ClipJob job = job_for(ClipSpace::cube, 80);
+    const auto algorithm = ClipAlgorithm::liang_barsky;
+    std::vector<ClipView> folds{initial_view(job, algorithm)};
+    for (const auto& e : clip_scene(job, algorithm)) {
+        folds.push_back(folds.back());
+        reduce(folds.back(), e);
+    }
+    const std::size_t n = folds.size() - 1;
+    REQUIRE(n > 600);
+    // told at every look (every 64 ticks); asks to stop once 200 steps are done: the look at 256 sees it, the tick
+    // after it throws
+    std::atomic<bool> stop{false};
+    int told = 0;
+    WorkMeter meter([&](const WorkProgress& p) { ++told, stop = stop || p.done >= 200; }, &stop, 0.0, 0.0);
+    meter.stage("opening", "machine steps", 0);
+    TestPlayer player(clip_scene(job, algorithm), initial_view(job, algorithm), {.min_keyframe_interval = 16});
+
+    SECTION("pulling stops with the event that was being pulled in the log") {
+        {
+            LongWork in_place(meter);
+            CHECK_THROWS_AS(player.seek_end(), WorkStopped);
+        }
+        CHECK(told > 1);
+        CHECK(player.known() == 257);
+        CHECK(player.cursor() == 0);
+        player.seek_end();  // no meter in place any more: nothing ticks, nothing stops
+        CHECK(player.cursor() == n);
+        CHECK(same_view(player.view(), folds[n]));
+    }
+    SECTION("folding stops at a step whose view is the fold of the events before it") {
+        player.prefetch(n + 1);
+        REQUIRE(player.complete());
+        {
+            LongWork in_place(meter);
+            CHECK_THROWS_AS(player.seek(n), WorkStopped);
+        }
+        CHECK(player.cursor() == 257);
+        CHECK(same_view(player.view(), folds[257]));
+        player.seek(n);
+        CHECK(same_view(player.view(), folds[n]));
+    }
+    SECTION("an inner meter hides the outer one until it goes; a machine run to its end ticks once per event") {
+        std::atomic<bool> never{false};
+        WorkMeter inner({}, &never);
+        inner.stage("inner", "machine steps", 0);
+        LongWork outer_place(meter);
+        {
+            LongWork inner_place(inner);
+            const auto clipped = LongWork::run_to_end(clip_scene(job, algorithm));
+            CHECK(clipped == answers(folds[n]));  // the same answers as the player's fold
+            CHECK(inner.progress().done == double(n));
+        }
+        CHECK(told == 1);  // the outer meter was told only at its stage's start
+        LongWork::tick();
+        CHECK(meter.progress().done == 1);  // its count goes on from where it was
     }
 }

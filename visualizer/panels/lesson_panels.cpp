@@ -169,15 +169,16 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
 }
 
 // ── [SECTION] error, labels ─────────────────────────────────────────────────────────────────────────────────
-void error_panel(const std::string& message, const PanelLayout& l, UiActions& out) {
+void error_panel(const std::string& message, bool stopped, const PanelLayout& l, UiActions& out) {
     place(40, 40, l.width - 80, 220);
-    ImGui::Begin("The lesson could not be loaded", nullptr, fixed);
+    ImGui::Begin(stopped ? "The lesson was not opened##error" : "The lesson could not be loaded##error", nullptr, fixed);
     ImGui::PushStyleColor(ImGuiCol_Text, bit_set);
     wrapped_text(message);
     ImGui::PopStyleColor();
     ImGui::Separator();
-    wrapped_text("Fix the file and press F5 (or the button) to load it again.");
-    out.reload |= ImGui::Button("Reload (F5)");
+    wrapped_text(stopped ? "Press F5 (or the button) to open it again, or M to choose another lesson."
+                         : "Fix the file and press F5 (or the button) to load it again.");
+    out.reload |= ImGui::Button(stopped ? "Open again (F5)" : "Reload (F5)");
     ImGui::End();
 }
 

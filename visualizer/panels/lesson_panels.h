@@ -44,7 +44,8 @@ struct TimelineMark {
 // `question_choices`: while a question waits for an answer, its number of choices (the player holds), else 0.
 void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices,
                     const std::vector<TimelineMark>& marks, const PanelLayout& layout, UiActions& out);
-void error_panel(const std::string& message, const PanelLayout& layout, UiActions& out);
+// `stopped`: the opening was stopped (Esc), the file is not at fault.
+void error_panel(const std::string& message, bool stopped, const PanelLayout& layout, UiActions& out);
 
 // Labels of the 3D view, projected with the viewer's camera into the viewport (x, y, w, h in pixels, top-left).
 void draw_labels(const std::vector<Label>& labels, const glm::mat4& view_projection, float x, float y, float w, float h);

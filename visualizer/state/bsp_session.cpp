@@ -8,6 +8,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "state/bsp_painting.h"
+#include "state/long_work.h"
 
 namespace hsr::viz {
 namespace {
@@ -90,7 +91,7 @@ void BspSession::measure() {
     stats_.polygons_in = job.polygons.size();
     stats_.rule = job.options.splitter;
     const auto start = std::chrono::steady_clock::now();
-    const BspTree tree = build_bsp(std::move(job.polygons), job.options).run_to_end();
+    const BspTree tree = LongWork::run_to_end(build_bsp(std::move(job.polygons), job.options));
     stats_.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats_.polygons_after = tree.held();
     stats_.nodes = tree.nodes.size();

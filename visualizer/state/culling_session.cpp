@@ -8,6 +8,7 @@
 #include "core/overloaded.h"
 #include "culling/view_frustum.h"
 #include "scene/generated_scenes.h"
+#include "state/long_work.h"
 
 namespace hsr::viz {
 namespace {
@@ -39,7 +40,7 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     w->scene = lesson.scene;
     w->scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
     const HierarchyKind kind = machine_of<CullingMachine>(lesson) == CullingMachine::bounds ? HierarchyKind::bvh : HierarchyKind::octree;
-    w->hierarchy = build_hierarchy(polygon_boxes(w->scene), {.kind = kind}).run_to_end();
+    w->hierarchy = LongWork::run_to_end(build_hierarchy(polygon_boxes(w->scene), {.kind = kind}));
     w->zbuffer = zbuffer_options(w->scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
     w->detail_pixels = 4;
     w->frustum = view_frustum(w->scene.camera);

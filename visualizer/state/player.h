@@ -17,6 +17,7 @@
 
 #include "core/steps.h"
 #include "state/event_log.h"
+#include "state/long_work.h"
 
 namespace hsr::viz {
 
@@ -127,6 +128,7 @@ private:
                 break;
             }
             log_.push(*e);
+            LongWork::tick();  // a huge run shows the window busy and can be stopped (Esc) between two events
         }
         return log_.size() >= n;
     }
@@ -142,6 +144,7 @@ private:
             reduce(view_, log_.at(cursor_));
             ++cursor_;
             maybe_keyframe();
+            LongWork::tick();
         }
     }
 

@@ -4,6 +4,7 @@
 
 #include "core/overloaded.h"
 #include "scene/random_scene.h"
+#include "state/long_work.h"
 
 namespace hsr::viz {
 namespace {
@@ -52,7 +53,7 @@ std::shared_ptr<const PortalWorld> portal_world(const Scene& scene) {
     auto w = std::make_shared<PortalWorld>();
     w->model = cell_model(scene);
     w->bsp = build_cell_bsp(w->model);
-    w->pvs = build_pvs(&w->model).run_to_end();
+    w->pvs = LongWork::run_to_end(build_pvs(&w->model));
     return w;
 }
 

@@ -1,6 +1,7 @@
 #include "state/zmerge_session.h"
 
 #include "core/overloaded.h"
+#include "state/long_work.h"
 
 namespace hsr::viz {
 namespace {
@@ -23,8 +24,8 @@ ZMergeView zmerge_initial_view(const Lesson& lesson) {
     auto all = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     const std::size_t half = (all->size() + 1) / 2;
     const ZBufferOptions o = zbuffer_options(scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
-    auto a = std::make_shared<const FrameDepth>(zbuffer_fill({all->begin(), all->begin() + std::ptrdiff_t(half)}, o).run_to_end());
-    auto b = std::make_shared<const FrameDepth>(zbuffer_fill({all->begin() + std::ptrdiff_t(half), all->end()}, o).run_to_end());
+    auto a = std::make_shared<const FrameDepth>(LongWork::run_to_end(zbuffer_fill({all->begin(), all->begin() + std::ptrdiff_t(half)}, o)));
+    auto b = std::make_shared<const FrameDepth>(LongWork::run_to_end(zbuffer_fill({all->begin() + std::ptrdiff_t(half), all->end()}, o)));
     ZMergeView initial;
     initial.viewport = lesson.grid;
     initial.polygons = all;
