@@ -150,7 +150,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     draw_frame_panels(lp, scene.detail, view_w, view_h, layout, actions);
 }
 
-// A frame drawn from inside long work (the meter's teller, ten times a second once it has lasted 0.3 s): the
+// A frame drawn from inside long work (the meter's teller, five times a second once it has lasted 0.3 s): the
 // progress box over an empty view. The input since the last frame is read here: Esc stops the work, closing the
 // window stops it and quits; a scripted key (--keys) is pushed as on any frame, so a test presses Esc as a
 // teacher would while a huge lesson opens. Other input waits until the work is done or stopped.

@@ -80,8 +80,9 @@ void Lessonplay::load(const AppOptions& o) {
 
 algo::WorkMeter Lessonplay::work_meter(const std::string& what) {
     stop_work = false;
-    // the window's frames come a tenth of a second apart while it works (Esc is read there), the first after 0.3 s
-    algo::WorkMeter meter(show_work, &stop_work, 0.3, 0.1);
+    // the window draws a frame every 0.2 s while it works (Esc is read there), the first after 0.3 s: short work
+    // shows nothing
+    algo::WorkMeter meter(show_work, &stop_work, 0.3, 0.2);
     meter.stage(what, "machine steps", 0);
     return meter;
 }
