@@ -128,26 +128,14 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, 0, px(layout.width), px(layout.height));
     glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!lp.session()) {
-        draw_frame_panels(lp, "", 0, 0, layout, actions);
-        return;
-    }
-    r.batches.faint.clear();
-    r.batches.bold.clear();
-    r.labels.clear();
-    // the family's 3D view and caption, drawn in the space left of the panels and above the timeline
-    SceneFrame scene{r.batches, r.labels, "", std::nullopt, view_w / view_h, lp.second_view};
-    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_scene(session, scene); });
+    const glm::mat4 vp = draw_frame_content(lp, r.batches, r.labels, layout, actions);  // ImGui's part, drawn later
+    if (!lp.session()) return;
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));  // GL's y axis points up
-    const glm::mat4 vp = scene.view_projection.value_or(lp.camera.view_projection(view_w / view_h));
     r.geometry.view_projection = vp, r.geometry.width = view_w, r.geometry.height = view_h;
     const float thick = scale * lp.scale;  // lines and points grow with the type (projector, Ctrl+=)
     r.batches.faint.draw(vp, 1.5f * thick, 7.0f * thick);
     r.batches.bold.draw(vp, 3.5f * thick, 11.0f * thick);
     glViewport(0, 0, px(layout.width), px(layout.height));
-    draw_labels(r.labels, vp, 0, 0, view_w, view_h);
-
-    draw_frame_panels(lp, scene.detail, view_w, view_h, layout, actions);
 }
 
 // A frame drawn from inside long work (the meter's teller, five times a second once it has lasted 0.3 s): the
@@ -319,12 +307,7 @@ int run_app(const AppOptions& o) {
             int width = 0, height = 0;
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
-            lp.side = clamp_side(lp.side, io.DisplaySize.x);
-            // the column and the timeline grow with the type (the column's width is remembered unscaled)
-            PanelLayout layout{io.DisplaySize.x, io.DisplaySize.y, clamp_side(lp.side * lp.scale, io.DisplaySize.x), 96 * lp.scale};
-            lp.column.arrange(layout.height - layout.bottom, lp.path);
-            layout.fit = &lp.column;
-            draw_frame(lp, renderer, layout, io.DisplayFramebufferScale.x, from_panels);
+            draw_frame(lp, renderer, arrange_frame(lp, io.DisplaySize.x, io.DisplaySize.y), io.DisplayFramebufferScale.x, from_panels);
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             ++frame;

@@ -9,8 +9,37 @@
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "panels/toast_panel.h"
+#include "state/window_settings.h"
 
 namespace hsr::viz {
+
+PanelLayout arrange_frame(Lessonplay& lp, float width, float height) {
+    lp.side = clamp_side(lp.side, width);
+    // the column and the timeline grow with the type (the column's width is remembered unscaled)
+    PanelLayout layout{width, height, clamp_side(lp.side * lp.scale, width), 96 * lp.scale};
+    lp.column.arrange(layout.height - layout.bottom, lp.path);
+    layout.fit = &lp.column;
+    return layout;
+}
+
+glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Label>& labels, const PanelLayout& layout,
+                             UiActions& actions) {
+    const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
+    lines.faint.clear();
+    lines.bold.clear();
+    labels.clear();
+    if (!lp.session()) {
+        draw_frame_panels(lp, "", 0, 0, layout, actions);
+        return lp.camera.view_projection(view_w / view_h);
+    }
+    // the family's 3D view and caption, drawn in the space left of the panels and above the timeline
+    SceneFrame scene{lines, labels, "", std::nullopt, view_w / view_h, lp.second_view};
+    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_scene(session, scene); });
+    const glm::mat4 vp = scene.view_projection.value_or(lp.camera.view_projection(view_w / view_h));
+    draw_labels(labels, vp, 0, 0, view_w, view_h);
+    draw_frame_panels(lp, scene.detail, view_w, view_h, layout, actions);
+    return vp;
+}
 
 void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions) {

@@ -104,19 +104,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
         ImGui::NewFrame();
         layout_problems().clear();
-        PanelLayout layout{1280, 800, 500, 96};
-        lp.column.arrange(layout.height - layout.bottom, lp.path);
-        layout.fit = &lp.column;
-        const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
-        LineBatches batches;
+        LineBatches lines;  // filled, never drawn: no GL here
         std::vector<Label> labels;
-        SceneFrame scene{batches, labels, "", std::nullopt, view_w / view_h, lp.second_view};
-        if (lp.session()) {
-            lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_scene(session, scene); });
-            draw_labels(labels, scene.view_projection.value_or(lp.camera.view_projection(view_w / view_h)), 0, 0, view_w, view_h);
-        }
         UiActions from_panels;
-        draw_frame_panels(lp, scene.detail, view_w, view_h, layout, from_panels);
+        draw_frame_content(lp, lines, labels, arrange_frame(lp, 1280, 800), from_panels);
         ImGui::Render();
         check_draw_data();
     }
