@@ -139,29 +139,23 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
 }
 
 // A frame drawn from inside long work (the meter's teller, five times a second once it has lasted 0.3 s): the
-// progress box over an empty view. The input since the last frame is read here: Esc stops the work, closing the
-// window stops it and quits; a scripted key (--keys) is pushed as on any frame, so a test presses Esc as a
-// teacher would while a huge lesson opens. Other input waits until the work is done or stopped.
+// progress box over an empty view. The input is only looked at, not taken: Esc stops the work, closing the window
+// stops it and quits, and every event stays queued for the frame after the work (a key pressed meanwhile is not
+// lost; a scripted Escape is pressed now, as a teacher's would be, the other scripted keys wait for their frames).
 void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const AppOptions& o, std::size_t& next_key, bool& quit) {
     if (p.finished) {  // the last word: how long it took, on the terminal
         std::printf("hsrviz: %s\n", p.sentence().c_str());
         std::fflush(stdout);
         return;
     }
-    if (next_key < o.keys.size())
-        if (const auto input = parse_scripted_input(o.keys[next_key]); input && input->kind == ScriptedInput::Kind::key) {
-            SDL_Event e;
-            key_event(input->key, e);
-            SDL_PushEvent(&e);
-            ++next_key;
-        }
     SDL_Event e;
-    while (SDL_PollEvent(&e)) {
-        ImGui_ImplSDL2_ProcessEvent(&e);  // a resize, the mouse
-        const bool esc = e.type == SDL_KEYDOWN && e.key.keysym.sym == SDLK_ESCAPE;
-        if (e.type == SDL_QUIT) quit = true;
-        if (esc || e.type == SDL_QUIT) lp.stopped_by = esc ? "Esc" : "the window closing", lp.stop_work = true;
-    }
+    if (next_key < o.keys.size() && o.keys[next_key] == "Escape" && key_event("Escape", e)) SDL_PushEvent(&e), ++next_key;
+    SDL_PumpEvents();
+    std::vector<SDL_Event> keys_down(64);
+    const int n = SDL_PeepEvents(keys_down.data(), int(keys_down.size()), SDL_PEEKEVENT, SDL_KEYDOWN, SDL_KEYDOWN);
+    for (int k = 0; k < n; ++k)
+        if (keys_down[std::size_t(k)].key.keysym.sym == SDLK_ESCAPE) lp.stopped_by = "Esc", lp.stop_work = true;
+    if (SDL_HasEvent(SDL_QUIT)) lp.stopped_by = "the window closing", lp.stop_work = true, quit = true;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplSDL2_NewFrame();
     ImGui::NewFrame();

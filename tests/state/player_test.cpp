@@ -125,6 +125,21 @@ TEST_CASE("a player with an event cap ends there instead of pulling forever", "[
     CHECK(player.at_end());
 }
 
+TEST_CASE("a player whose log reaches its byte cap ends there, at a multiple of 4,096 events", "[state][player]") {
+    const ClipJob job = job_for(ClipSpace::cube, 1500);
+    TestPlayer player(clip_scene(job, ClipAlgorithm::cohen_sutherland),
+                      initial_view(job, ClipAlgorithm::cohen_sutherland), {.max_log_bytes = 1});
+    player.seek_end();
+    CHECK(player.cursor() == 4096);
+    CHECK(player.capped());
+    CHECK(player.at_end());
+    CHECK_FALSE(player.complete());
+    TestPlayer roomy(clip_scene(job, ClipAlgorithm::cohen_sutherland), initial_view(job, ClipAlgorithm::cohen_sutherland));
+    roomy.seek_end();
+    CHECK(roomy.cursor() > 4096);  // the same run is longer
+    CHECK(roomy.complete());
+}
+
 TEST_CASE("seek(k) equals a fold of the first k events on every shipped lesson's trace", "[state][player][lesson]") {
     for (const char* file : {"01_cohen_sutherland.toml", "02_liang_barsky.toml", "03_sutherland_hodgman.toml"}) {
         INFO(file);

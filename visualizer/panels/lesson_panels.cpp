@@ -20,8 +20,9 @@ namespace hsr::viz {
 namespace {
 
 std::string step_text(const Session& s) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "step %zu of %zu%s", s.cursor(), s.known(), s.complete() ? "" : "+");
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "step %zu of %zu%s%s", s.cursor(), s.known(), s.complete() ? "" : "+",
+                  s.capped() && s.cursor() >= s.known() ? " (the window keeps no more of this run)" : "");
     return buf;
 }
 

@@ -28,6 +28,7 @@ public:
     virtual std::size_t known() const = 0;
     virtual bool complete() const = 0;
     virtual bool at_end() const = 0;
+    virtual bool capped() const = 0;  // the window keeps no more of this run (its event or memory cap)
 
     virtual void step() = 0;  // to the next major event
     virtual void step_back() = 0;
@@ -75,6 +76,7 @@ public:
     std::size_t known() const override { return player_.known(); }
     bool complete() const override { return player_.complete(); }
     bool at_end() const override { return player_.at_end(); }
+    bool capped() const override { return player_.capped(); }
     void step() override { player_.step_forward_until([this](const Event& e) { return is_major(e); }); }
     void step_back() override { player_.step_back_until([this](const Event& e) { return is_major(e); }); }
     void micro_step() override { player_.step_forward(); }
