@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "core/numeric.h"
 #include "zbuffer/zbuffer_fill.h"
@@ -23,6 +24,11 @@ inline std::uint64_t depth_code(double z, const ZBufferOptions& o, double levels
 // are done four at once); otherwise it is depth_test_row_by_pixel.
 std::uint64_t depth_test_row(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x, std::int32_t index,
                              const ZBufferOptions& o, double levels);
+
+// The integer formats' test four pixels at a time, where the processor can (depth_test_row_avx2.cpp: x86-64 with
+// AVX2, chosen at run time); nullopt where it cannot (depth_test_row_portable.cpp on other processors).
+std::optional<std::uint64_t> integer_row_wide(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
+                                              std::int32_t index, double levels);
 
 // The loop pixel by pixel, which the test holds depth_test_row to.
 std::uint64_t depth_test_row_by_pixel(std::uint32_t* depth, std::int32_t* owner, int begin, int end, double z, double per_x,
