@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every algorithm the tool can step through: one line each in registry.cpp. An algorithm's `machine` is a value of
 // its family's own type (the clippers' ClipAlgorithm, the ray cast's Acceleration, …), so the one place that turns
 // an algorithm into a session (visualizer/state/families.h) visits it instead of switching over numbers.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Writes assets/scenes/cells_chain_1000.toml: 1000 cells in a serpentine chain (rows of 20 rooms, 2 x 2 each),
 each room opening into the next through a door of width 0.8 at a random place along the shared wall (seed 1), so
 that some sightlines run far along a row and others stop after a room or two."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // [SECTION] input: keys and the mouse
 // [SECTION] drawing a frame (draw)
 // [SECTION] the loop

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window: SDL2 + OpenGL 3.3 core + Dear ImGui around one lesson being played.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pictures of the window: a PNG of the frame just drawn, a GIF frame at half size, and E's export (the window, the
 // trace and the scene) into hsrviz-export/.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Everything of a frame but GL's part: the panel column arranged, the family's 3D view as lines and labels (for the
 // window's GL to draw), and every panel Dear ImGui draws: the load error, or the family's canvases and state panel,
 // then what every lesson has (lesson, pseudocode, question, overlays, notes, narration, timeline). The window calls

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An animated GIF of the window, frame by frame (giflib): each frame quantised to its own 256-colour palette,
 // looping for ever, for a teacher's slides.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lesson being played in the window: its session (as its family's type) and screens, the playback, the
 // classroom, the presets and the report, and the update that carries out a frame's UiActions.
 #pragma once

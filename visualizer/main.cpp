@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // hsrviz: step through culling and hidden-surface algorithms.
 #include <CLI/CLI.hpp>
 #include <algorithm>

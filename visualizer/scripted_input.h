@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scripted input for --keys: key presses, and mouse gestures on the 2D view given in world coordinates (the window
 // turns them into window points through the view it draws, then into SDL events in the same queue as real ones).
 //   Space  Right  Shift+Left  Home  End  F5  S  …   a key press (SDL's key names)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window, its OpenGL 3.3 context and Dear ImGui, opened as the options and the last run's settings say.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "analysis/exact_clip.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exact answer of clipping, in GMP rationals: every double input is a rational, and the clip planes are
 // linear, so the visible part of a segment or polygon can be computed with no rounding at all. Tests measure the
 // algorithms' error against it, never against the algorithms themselves.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "analysis/expect_check.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Checks a scene's [expect] tables against the machines: every clipping machine that clips a primitive, the three
 // back-face tests, BSP builds and traversals, the PVS, hidden-surface images against the ray cast, and machines
 // that must refuse the scene. One outcome per expectation (per machine where several answer it), with the error

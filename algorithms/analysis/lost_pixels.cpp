@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "analysis/lost_pixels.h"
 
 #include "core/plane.h"

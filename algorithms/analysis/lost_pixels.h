@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The culling reference: a culled frame against the frame of every primitive. A pixel counts as lost when the full
 // render shows a front face there and the culled one does not (a back face and a front face tied in depth on a
 // silhouette are ordered by chance, not by visibility: such pixels are not losses).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping: each algorithm as the step-through machine (double) and as the straight-line formula in double and in
 // float, on random segments and polygons of clip space, against the exact answer in GMP rationals.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The culling pipeline on generated scenes: what each stage leaves out, the frame time against rendering every
 // primitive, and visibility violations (front-face pixels the culled frame lost; must be 0 for the conservative
 // stages). Detail culling is not conservative by design: its lost pixels are its error, not a violation.

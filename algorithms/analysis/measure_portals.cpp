@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells and portals: the PVS's slack (pairs it holds that sampled rays never reach) and missed cells (must be 0),
 // and portal_render with exact and with bounding-box frusta: polygons drawn, and polygons a ray cast sees that it
 // did not draw (must be 0).

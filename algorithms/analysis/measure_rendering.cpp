@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hidden surfaces against the double-precision ray cast: the z-buffer per depth format and near/far ratio, the BSP
 // per splitter rule, and depth sort. The error is the share of pixels whose visible primitive differs.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Error against run time: each algorithm family measured over named scenes and settings, in one run. Every number
 // comes from running the code: the run time is the median of repeats, the error is against an exact or trusted
 // reference (GMP rationals for clipping, the double-precision ray cast for hidden surfaces, sampled rays for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The two painter's algorithms as images: a BSP tree traversed back to front from the camera's eye, and Newell's
 // depth sort, each painting whole polygons over what is there. Shared by `hsrviz render` and the report.
 #pragma once

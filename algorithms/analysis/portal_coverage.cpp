@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "analysis/portal_coverage.h"
 
 #include <cmath>

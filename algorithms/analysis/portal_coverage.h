@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // References for cells and portals: what a ray cast from the eye sees (the nearest front-facing wall per pixel)
 // against what portal_render drew, and how much of a PVS sampled rays from inside each cell ever reach.
 #pragma once

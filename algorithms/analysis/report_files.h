@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The report's files: a Markdown table per family, one CSV of every row, and a chart of error against run time per
 // family (SVG: both axes logarithmic, a row with no error drawn on the "0" line at the bottom).
 #pragma once

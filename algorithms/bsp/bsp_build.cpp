@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // BuildBSP, as the lecture gives it: choose a splitting polygon, classify every other polygon against its plane
 // (front, back, coplanar, spanning), split the spanning ones, keep the coplanar ones at the node, recurse.
 #include <algorithm>

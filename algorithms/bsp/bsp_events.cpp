@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "bsp/bsp_events.h"
 
 #include <cstdio>

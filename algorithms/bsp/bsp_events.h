@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The facts of BSP build (the lecture's BuildBSP) and traversal (DisplayBSP). Polygons are named by their index in
 // the tree's polygon table (inputs first, then split parts in the order they are made); a split carries the two
 // parts' vertices as immutable shared lists, so events stay small and a view can draw a part the moment it appears.

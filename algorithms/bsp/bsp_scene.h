@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The machine a BSP lesson plays: build the tree from a scene's polygons (or, for the classroom picture, its
 // segments in the plane z = 0), then display it from the camera's eye (DisplayBSP), back to front.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // DisplayBSP, as the lecture gives it: if the eye is in front of the node's plane, display the back subtree, the
 // node's polygons, then the front subtree; otherwise the other way round. The polygons come out back to front
 // (the painter's order); front to back swaps the sides.

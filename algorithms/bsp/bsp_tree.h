@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A BSP tree (the lecture's BuildBSP / DisplayBSP), in 3D for polygons and in 2D for segments in the plane z = 0
 // (the classroom picture): a segment is a 2-vertex polygon whose plane is the vertical plane through it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipped points that remember which side of every plane they are on.
 //
 // Cohen–Sutherland and Sutherland–Hodgman clip what an earlier cut left. Testing the next plane on an already

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/clip_events.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The facts the clipping machines report: point clipping, 3D Cohen–Sutherland, 3D Liang–Barsky and the
 // Sutherland–Hodgman pipeline share one variant, because they share one picture (the clip volume and the
 // primitive being cut down). Every event carries the numbers its sentence and its view need; coordinates are

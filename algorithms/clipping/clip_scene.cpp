@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/clip_scene.h"
 
 #include "clipping/cohen_sutherland.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clips every primitive of a scene with one algorithm, one after another, as one machine: the machine a clipping
 // lesson plays. Points go through point clipping; segments through Cohen–Sutherland or Liang–Barsky; polygons
 // through Sutherland–Hodgman. Primitives the chosen algorithm does not clip are left as they are.

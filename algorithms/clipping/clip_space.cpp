@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/clip_space.h"
 
 #include "core/numeric.h"

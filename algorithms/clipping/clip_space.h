@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The clip volume of the lecture ("Frustum Culling (3)"), in its two settings, and the tests every clipping
 // algorithm shares: the boundary value of a point for a plane, the outcode, and the plane–line intersection.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Inputs, options and answers of the clipping machines (clip-space coordinates throughout).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/cohen_sutherland.h"
 
 #include "clipping/carried_boundaries.h"

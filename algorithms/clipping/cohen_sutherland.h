@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // 3D Cohen–Sutherland line clipping with 6-bit outcodes (7 in homogeneous clip space), as the lecture's
 // CS_Clip_3D: trivial accept, trivial reject, else cut at a plane where the bits differ and recurse.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/liang_barsky.h"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // 3D Liang–Barsky line clipping: each plane is an inequality t·p_i ≤ q_i on l(t) = p1 + t (p2 − p1), with the
 // lecture's p_i, q_i; entering planes raise t_enter, leaving planes lower t_leave, and the segment is empty as
 // soon as t_enter > t_leave.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/point_clip.h"
 
 namespace hsr::algo {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Point clipping ("trivial", as the lecture says): a point is kept when its outcode is 000000.
 #pragma once
 

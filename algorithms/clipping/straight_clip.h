@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The three clipping algorithms as plain straight-line functions: the same formulas as the machines in clipping/
 // (the boundary values, equations (3), the snap onto the plane), with no events, no coroutine frame and no step
 // bound, in the precision T (float or double). Two uses: the benchmark that prices being a step-through machine,

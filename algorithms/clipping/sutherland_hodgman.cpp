@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clipping/sutherland_hodgman.h"
 
 #include <utility>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every family's events share: each event struct names its kind (`static constexpr std::string_view kind`),
 // and sentences print numbers the same way.
 #pragma once

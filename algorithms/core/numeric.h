@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Numbers we trust: the one place that says how input is checked and which precision an algorithm uses.
 //
 // - NaN or infinite input is rejected at the door (require_finite) with an error naming where it came from.

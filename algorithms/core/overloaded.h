@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The usual visitor helper for std::visit over an event variant (clang 14 needs the deduction guide).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Work split over the machine's cores in contiguous chunks, for the batch stages that no view steps through (the
 // projection of a whole scene, the z-buffer's polygon-level fill and its image). Small jobs stay on the calling
 // thread: starting threads costs more than they would save.

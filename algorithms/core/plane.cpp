@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core/plane.h"
 
 #include <algorithm>

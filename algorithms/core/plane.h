@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Point-versus-plane and polygon-versus-plane classification: the one predicate every algorithm that sorts
 // geometry by a plane uses (BSP build and traversal, depth sort's tests 3 and 4, portals), and its one tolerance.
 //

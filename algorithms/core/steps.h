@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Steps<Event, Result>: the coroutine generator every algorithm is written as.
 //
 // An algorithm's body keeps the textbook's shape: it `co_yield`s a fact (an event) wherever a student should see

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Long work, told and stoppable. A command that drains a machine counts what is done against what there is to do;
 // every 64 events the meter looks at the clock and, at most twice a second (or as often as asked), tells how far it has come
 // (done, left, an estimate of the time left) to whoever shows it: stderr for the command line, a bar in the window.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Back-face culling, in the three forms the lectures give, one event per polygon:
 //   view_vector     v̂ · n̂ with v from the eye to a point of the polygon (never a constant look direction, which is
 //                   wrong for a wide field of view): front-facing when v̂ · n̂ < 0. (The lecture's v points the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "culling/bounding_volume.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bounding volumes of a group of primitives (the lecture: "simple shapes that enclose an object": the axis-aligned
 // box, the sphere, the oriented box), and the void space each leaves: the part of its volume the object does not
 // fill, which is what makes a cheap test say "maybe visible" for an object that is not.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "culling/culling_events.h"
 
 #include "core/events.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the culling machines tell: a hierarchy built node by node (BVH or octree), and a hierarchy culled top-down
 // against the view frustum and for detail, each node's outcome with the planes it took to decide.
 #pragma once

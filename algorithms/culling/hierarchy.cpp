@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "culling/hierarchy.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hierarchies of bounding volumes over a scene's primitives (the lecture: a BVH, and an octree that "recursively
 // subdivides an initial cell into 8 subcells when an elementary cell size is reached or the object complexity
 // within a cell is below a certain limit"), built step by step, and culled top-down:

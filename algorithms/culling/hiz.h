@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Hierarchical visibility with a hierarchical z-buffer (the lecture: Greene's Z-pyramid over an object-space
 // octree):
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // From-point occlusion culling with planar occluders (the lecture, after Coorg and Teller):
 //
 //   choose occluders:   rank the front-facing polygons by f = −A (n̂ · v̂) / |v|², keep the best few

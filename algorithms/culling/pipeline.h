@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The culling pipeline of the lectures: cheap tests leave out what cannot be seen before the expensive
 // hidden-surface algorithm runs. Stages, in order (a scene or lesson names those it needs; the others are shown as
 // left out of the pipeline):

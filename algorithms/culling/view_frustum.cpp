@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "culling/view_frustum.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The view frustum of a scene's camera as six planes whose fronts are inside: left, right, bottom, top, near, far
 // (world space). For a perspective camera the four sides pass through the eye; for an orthographic one they are
 // the sides of its box.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "depth_sort/depth_sort.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Newell, Newell and Sancha's depth sort, as the lectures give it:
 //
 //   DepthSort(polygonDB):

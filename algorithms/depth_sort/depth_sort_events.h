@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What Newell's depth sort tells as it runs. Polygons are numbered in the sort's working list of polygons (the
 // scene's, clipped to the view volume, then the parts of splits as they are made); each carries its scene id.
 // Depths and extents are in the canonical view volume (normalised device coordinates: x, y, z in [−1, 1], z

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Locating the viewer's cell with a BSP tree (the lecture: "uses separating planes, which may be cell boundaries,
 // to recursively partition the scene; leafs represent cells"). The tree is the BSP lesson's, built over every
 // cell's walls as 2D segments with the balanced splitter, so it is O(log n_c) deep for a plan of n_c cells; each

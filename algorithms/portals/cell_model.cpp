@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/cell_model.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells and portals, built from a scene's floor plan: each cell a convex room (its walls, with openings where its
 // portals are, and its floor), each portal an opening in a wall two cells share, kept once for each way through.
 // Plan coordinates (x, y) are the world's (x, −z); the floor is at world y = 0, the ceiling at the rooms' height

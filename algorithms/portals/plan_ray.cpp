@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/plan_ray.h"
 
 #include <glm/geometric.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The reference a PVS is checked against: a ray in the floor plan from a point of a cell, followed through the
 // openings it crosses until it meets a wall. Every cell it passes is visible from the start cell, so each must be
 // in that cell's PVS; PVS entries no ray ever reaches are its slack.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/portal_events.h"
 
 #include "core/events.h"

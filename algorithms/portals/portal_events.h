@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the cells-and-portals machines tell as they run: the pre-processing (a stab tree from each cell, giving the
 // PVS matrix) and the runtime portal_render (locate the eye's cell, take its PVS row, draw through narrowing
 // frusta). Cells, portals and polygons are indices into the CellModel; planes and points are in world space.

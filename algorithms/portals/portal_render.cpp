@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/portal_render.h"
 
 #include <algorithm>

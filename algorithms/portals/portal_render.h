@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runtime, the lecture's portal_render:
 //
 //   main():                         determine cell c of the viewpoint using the BSP tree

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/pvs.h"
 
 #include <algorithm>

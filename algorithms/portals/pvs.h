@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pre-processing, from region (the lecture): starting from each cell c, visit the cells reachable in the cell
 // adjacency graph while a sightline exists through the sequence of portals that leads there; the cells visited
 // form c's stab tree, and the stab trees give the PVS matrix.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/sightline.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Is there a sightline through a sequence of portals? In the plan (the lecture's simplest form), a line passes
 // through portals 1 … n, each in its direction, exactly when it has every portal's left end on its left and every
 // right end on its right (Teller's separability condition). Lines are points (s, t) of line space, y' = s·x' + t

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "portals/stab3d.h"
 
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sightline test in 3D, for openings that do not reach floor to ceiling (windows, doors with lintels): a line
 // through the plan's openings may still pass above or below one of them. Teller's separating planes give a
 // conservative test. A plane through an edge of one opening and a corner of the other, with the two openings on its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An image of colours and of visible primitive ids (0 is background), and the painter's fill: a polygon painted
 // over whatever is there, as the hidden-surface algorithms that produce an order (BSP, depth sort) draw.
 // Pixels are covered as the z-buffer covers them (raster/screen_polygon.h: clipped in homogeneous clip space first,

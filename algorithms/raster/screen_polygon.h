@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The rasterisers' common ground (z-buffer fill and scan-line): polygons on the screen, with the fill rule.
 //
 // Screen space: x to the right, y down, in pixels; pixel (i, j) is sampled at its centre (i + ½, j + ½).

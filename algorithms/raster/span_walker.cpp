@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raster/span_walker.h"
 
 #include "core/numeric.h"

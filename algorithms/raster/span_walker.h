@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // span_on_row's spans for one polygon, row after row, without a division per row: the edges' DDA.
 //
 // Each edge bounds row j's span by a floor: first pixel = −⌊M/D⌋ for a left edge, one past the last = ⌊M/D⌋ + 1

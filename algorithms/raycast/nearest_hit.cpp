@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raycast/nearest_hit.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The reference the hidden-surface algorithms are checked against: for one ray, the nearest intersection over all
 // primitives, in double precision (the lecture's RayCasting, for one pixel). Polygons are planar with 3 or more
 // vertices; 2-vertex "polygons" are 2D segments in z = 0, hit by rays in that plane.

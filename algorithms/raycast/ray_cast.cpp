@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raycast/ray_cast.h"
 
 #include <algorithm>

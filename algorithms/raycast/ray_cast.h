@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ray casting, the lecture's RayCasting, for each pixel the nearest intersection over all primitives, in double
 // precision: the reference the other hidden-surface algorithms are checked against.
 //

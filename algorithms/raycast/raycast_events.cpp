@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raycast/raycast_events.h"
 
 #include "core/events.h"

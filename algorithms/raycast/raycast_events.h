@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the ray caster tells as it runs: each ray, the grid cells or octree nodes it walks, each primitive it tests,
 // each nearer hit, and the answer per pixel. t is the ray parameter: 0 on the near plane, 1 on the far plane.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raycast/spatial.h"
 
 #include <algorithm>

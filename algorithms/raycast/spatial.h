@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lectures' spatial subdivision for ray casting: a regular grid walked cell by cell (3D DDA) and an octree.
 // Both list, for each cell or leaf, the primitives whose bounding box (padded by 1e-9 of the scene's extent, so
 // that a hit on a cell face is listed on both sides) overlaps it.

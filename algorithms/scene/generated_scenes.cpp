@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/generated_scenes.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Generated scenes for the culling pipeline, reproducible from a seed, at any size: closed meshes wound outwards
 // (counter-clockwise seen from outside), as triangles.
 //   city:    blocks of buildings along streets, seen from the street: most of it is hidden behind the nearest

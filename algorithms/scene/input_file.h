@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The one door every file a user names comes in by (scenes, lessons, meshes). Only a regular file is read, and
 // never more than a limit far above any real lesson: a FIFO, a device, a folder or an endless file is an error
 // that says what it is, not a hang, an empty scene or the whole memory. A file that cannot be opened says why

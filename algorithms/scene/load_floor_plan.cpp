@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/load_floor_plan.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading a scene's [floor_plan] (cells and portals) and its [expect.pvs], with the checks a teacher needs when
 // writing one by hand: convex cells with unique names, portals on a wall the two cells share.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Meshes from OBJ files (tinyobjloader) placed in a scene:
 //   [[meshes]]  file = "meshes/torus.obj"  id = 100  color = "#cc79a7"  translate = [0, 1, 0]  scale = 2  turn = 30
 // Each face becomes a polygon with ids counting up from `id`, scaled, turned about y (degrees) and moved; faces

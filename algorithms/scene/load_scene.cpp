@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/load_scene.h"
 
 #include <glm/common.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Loading a scene from TOML. The format, by example (every field but the geometry is optional):
 //
 //   name = "Three segments"

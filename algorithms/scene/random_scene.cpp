@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/random_scene.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Random scenes for tests, benchmarks and the stability report: triangles in front of a camera, reproducible from
 // a seed.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/save_scene.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A scene: geometry with ids and colours, a camera, and the answers expected of it ([expect]).
 #pragma once
 

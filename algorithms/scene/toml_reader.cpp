@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "scene/toml_reader.h"
 
 #include <algorithm>

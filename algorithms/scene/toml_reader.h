@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading hand-written TOML with errors a teacher can act on: every failure names the file, the line and column,
 // the field (a dotted path such as "segments[2].a") and what was expected. Shared by scene and lesson loading.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/binned_fill.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer fill for a machine drained with polygon-level events (no view waits on spans or pixels): the same
 // loop, run tile by tile over the frame (bands of 64 rows up to 1024 pixels wide, each tile's polygons in their
 // order) by a thread per core.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/depth_format.h"
 
 #include "core/numeric.h"

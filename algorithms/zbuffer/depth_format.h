@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Depth formats, as the lectures store depth: the window depth d = a + b/z of an eye distance z in [near, far],
 // with a = far / (far − near) and b = far·near / (near − far), kept as
 //   int16, int24, int32  round((2^N − 1) · d)                (the lecture's (2^N − 1)·(a + b/z))

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/depth_test_row.h"
 
 namespace hsr::algo {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer's inner loop, shared by the machine's drain and the tiled fill (zbuffer_fill.cpp, binned_fill.cpp):
 // a depth's code, and the depth test along one row.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The integer formats' depth test four pixels at a time on x86-64 processors with AVX2 (the build takes this file
 // on x86 only; depth_test_row_portable.cpp elsewhere).
 #include "zbuffer/depth_test_row.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Processors without x86's AVX2 (arm64, WebAssembly, …): no wide test, depth_test_row goes pixel by pixel.
 #include "zbuffer/depth_test_row.h"
 

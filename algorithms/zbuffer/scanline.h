@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scan-line algorithm, as the lectures give it, in its hybrid form with a one-scan-line z-buffer:
 //
 //   put every non-horizontal edge in the edge table (ET), bucketed by the first scan line it crosses

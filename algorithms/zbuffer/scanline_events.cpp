@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/scanline_events.h"
 
 #include "core/events.h"

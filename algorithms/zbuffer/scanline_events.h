@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the scan-line algorithm tells: the edge table, each scan line, edges entering and leaving the active edge
 // table, each edge crossed on the line (the polygon's in/out flag flips), and the spans coloured.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/z_merge.h"
 
 #include "core/numeric.h"

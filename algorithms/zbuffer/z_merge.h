@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lecture's z-merge of two frame/depth buffer pairs (f_a, z_a) and (f_b, z_b) of two parts of a scene:
 //
 //   for (x = 0; x < XRES; x++)

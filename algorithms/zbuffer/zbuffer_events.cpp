@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/zbuffer_events.h"
 
 #include "core/events.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the z-buffer fill tells as it runs. Pixels are (x, y) with y down; depths are the format's codes (they grow
 // with distance in every format, see depth_format.h) and the window depth d they came from.
 #pragma once

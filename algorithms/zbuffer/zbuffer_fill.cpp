@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "zbuffer/zbuffer_fill.h"
 
 #include "zbuffer/z_merge.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer fill, as the lectures give it:
 //
 //   for all pixels (x, y): Depth[x, y] = far; Image[x, y] = background

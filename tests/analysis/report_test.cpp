@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The report's measurements: the straight-line clippers are the machines' formulas (bit for bit in double), the
 // errors order as the arithmetic says they must (float above double, 16-bit depth above 32-bit at a far/near of
 // 2·10^7), the counts that must be 0 are, and the files carry every row.

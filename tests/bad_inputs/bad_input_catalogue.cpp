@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A catalogue of bad inputs, each handed to the real hsrviz binary through every front door that takes it (check,
 // trace, render, the window's headless screenshot, the command line itself), with the outcome it must give: a clear
 // error naming the file and line (and the field, or the operating system's reason), or a stated result. Nothing may

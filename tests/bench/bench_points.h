@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Random clip-space points for the clipping benchmarks: spread over the volume and beyond, some behind the eye.
 #pragma once
 

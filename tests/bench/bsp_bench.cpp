@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // BSP build and traversal at 10^3, 10^4 and 10^5 polygons, per splitter rule (figures, not tests):
 //   build/tests/bench/hsr_bench --benchmark_filter=Bsp --benchmark_counters_tabular=true
 // random: small triangles at random in a cube of side 100 (few of them cross a plane far away);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The cost of being a step-through machine, measured side by side in one run (figures, not tests):
 //   build/tests/bench/hsr_bench --benchmark_filter=ClipCost --benchmark_counters_tabular=true
 // For each clipper, the same random primitives go through (1) the straight-line formula written with no events

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Figures for the culling issue: for each generated scene and size (10^3 to 10^6 triangles), the primitives each
 // stage leaves out and its time, and the frame time with the whole pipeline against the z-buffer alone.
 //   build/tests/bench/hsr_bench --benchmark_filter=Culling --benchmark_counters_tabular=true

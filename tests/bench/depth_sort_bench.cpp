@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Figures for the depth-sort issue: sort-and-resolve time, pairs examined, which test settled them, moves and
 // splits, for 10^2 to 10^4 random triangles (the O(P log P) sort and the O(P^2) pair scan in our own numbers).
 //   build/tests/bench/hsr_bench --benchmark_filter=DepthSort --benchmark_counters_tabular=true

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Seek latency and bytes per stored event of the player on traces of at least 10^6 events (figures, not tests).
 //   build/tests/bench/hsr_bench --benchmark_counters_tabular=true
 // Each benchmark builds one trace, pulls it whole (as the window's End key does), then times 2000 seeks to random

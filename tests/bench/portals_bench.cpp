@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Figures for the cells-and-portals issue: pre-processing time and PVS size for 10 to 10^4 cells (a maze of rooms
 // with some extra doors), and the runtime traversal's time, cells visited and polygons drawn against all of them,
 // for exact and bounding-box frusta; and the slack of the PVS against 2D ray walks.

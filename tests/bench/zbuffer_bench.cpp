@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Figures for the z-buffer, scan-line and ray cast issue: pixels and triangles per second of the fill at
 // 1024×1024 for 10^3 to 10^5 random triangles, with polygon-detail events and with every event; the same scenes'
 // ray cast; and bytes per recorded event.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // BSP build and traversal: painting in the traversal's order gives the nearest-hit ray cast's picture, in 2D and
 // 3D; every polygon is drawn exactly once; the extreme cases of the issue.
 #include <algorithm>

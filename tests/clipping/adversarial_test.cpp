@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The clipping machines against exact rational clipping (GMP) on families of input built to break clippers: through
 // corners, along planes, crossing w = 0 and 0 < w < ε, near-parallel to a face at 1e-12 … 1e-16 after another plane
 // cut first, huge and tiny, near the double limit, and the known 2D failures of other libraries lifted to 3D (a

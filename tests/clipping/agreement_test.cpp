@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cohen–Sutherland, Liang–Barsky and Sutherland–Hodgman agree with each other and with the exact GMP answer on
 // 10^5 random segments and polygons per setting.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shared by the clipping tests: draining a machine, folding its events, and printing them in a failure.
 #pragma once
 

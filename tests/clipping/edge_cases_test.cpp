@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The cases that break naive clippers: every outcode region, points on planes, edges and corners, near-parallel
 // segments, huge and tiny coordinates, zero-length segments, w = 0, segments behind the eye and crossing w = 0,
 // and NaN or infinite input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Back-face culling: the three forms agree on closed meshes; a constant look direction is wrong at the edge of a
 // wide field of view.
 #include <cmath>

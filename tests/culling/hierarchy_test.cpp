@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Bounding volumes and their void space; BVH and octree built to their rules; hierarchical frustum culling that is
 // conservative (every primitive with a part in the frustum is kept), saves plane tests by inheriting clip flags,
 // and detail culling that leaves out only what projects below its threshold.

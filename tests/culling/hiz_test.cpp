@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The hierarchical z-buffer: every pyramid texel is the farthest of those below it, for sizes that are not powers of
 // two; isOccluded answers as a test of every pixel under the footprint would; Cull_or_Render over an octree gives
 // the z-buffer's image exactly while leaving out what a wall hides; boxes reaching the eye are never occluded.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The culling pipeline: the generated scenes are closed and near their size; after back-face, frustum, occluders
 // and the hierarchical z-buffer the image is that of rendering every primitive; each stage leaves out something
 // on the scene built to show it; and an object hidden only by two occluders together is passed on (the partial

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Newell's depth sort: each test decides when it should, cycles and piercing pairs end with a split and the right
 // image, and on random scenes the painter's image in the final order is the ray cast's but for boundary pixels.
 #include <algorithm>

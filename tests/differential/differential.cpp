@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The differential test: generated scenes built to break hidden-surface algorithms (scene_families.h), every
 // hidden-surface algorithm and setting drawn into an id image, compared pixel by pixel with OpenGL (Mesa's
 // llvmpipe through EGL: another rasteriser, written by others) and with the double-precision ray cast without

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The differential test without a window: every generated family, every hidden-surface algorithm and setting,
 // against the ray cast with no acceleration; every differing pixel must be an edge or a depth tie. (tests/gui's
 // `differential` adds OpenGL as a second reference.)

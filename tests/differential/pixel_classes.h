@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Why two images of the same scene differ at a pixel. Two renderers may rightly disagree where a pixel's centre
 // lies within rounding of a polygon's outline (edge) or where the two polygons they show lie within a few depth
 // codes of each other there (depth tie); anywhere else one of them is wrong (unexplained).

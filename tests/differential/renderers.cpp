@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "renderers.h"
 
 #include "analysis/painters.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every hidden-surface algorithm and setting of hsrviz as a function from a scene to an id image, for the
 // differential test (the window-free ones: OpenGL is added by the test that has a context).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Generated scenes built to break hidden-surface algorithms, in families: each family aims at one way a renderer
 // goes wrong (a short edge snapped the wrong way, an orthographic camera, a giant polygon beside small ones, …).
 // Reproducible from a seed. Every polygon is convex and planar; ids run 1 … N.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any text as the command line's values (--size, --eye). Each is refused, or read as values in range
 // that print back to text the parser reads the same way.
 #include <cmath>

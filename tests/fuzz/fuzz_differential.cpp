@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: the differential test with the scenes made by the fuzzer. The bytes become up to 6 triangles inside
 // the view (coordinates on a fine grid in ±4, so that near-coplanar stacks, slivers, shared edges and piercing
 // pairs all come up), sometimes an orthographic camera; every hidden-surface renderer draws them at 48×36 and each

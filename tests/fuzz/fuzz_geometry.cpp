@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any bytes as geometry. The bytes are read as doubles (so NaN, infinities, huge, tiny and denormal
 // values all come up) and shaped into up to 8 polygons of 3 to 6 vertices, sometimes a dense circle of up to 5,100
 // vertices, and a few segments before a fixed camera, then every machine runs on them (run_machines.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any text as a lesson file (its chapters, questions, languages, options). It loads, or fails with a
 // LoadError naming file and line (a scene it names is looked for beside the corpus, and is usually missing).
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any bytes as an OBJ mesh placed by a scene ([[meshes]] file = "m.obj"). It loads, or fails with a
 // LoadError naming the scene's line and the mesh's problem; a loaded scene goes through every machine.
 #include <unistd.h>

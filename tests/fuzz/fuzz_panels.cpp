@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any text as a lesson or scene file, played in the window's panels with no window and no GL. The file is
 // loaded as the window loads it (Lessonplay::load: its error is shown instead when it fails), then a few frames are
 // drawn, each one stepping on: the family's 3D view filled (its line batches and labels), every panel drawn through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any text as a scene file. It loads, or fails with a LoadError naming file and line; a loaded scene
 // goes through every machine (run_machines.h).
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer: any bytes as the window's settings file. Reading never throws; whatever was read, written back and
 // read again gives the same settings with no warning (the round trip holds for anything the reader accepts), and a
 // file that is not a settings file is never overwritten.

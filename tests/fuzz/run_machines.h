@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What every fuzz target does with a scene that loaded: run each machine on it, small and bounded, where an input
 // that is wrong may only be refused with InvalidInput (a clear error); anything else, a crash, a sanitizer report or
 // a hang, is a bug the fuzzer reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Our z-buffer and OpenGL's rasteriser (Mesa's llvmpipe here) on the same clip-space triangles, each drawn in a
 // colour that encodes its index, with GL_LESS on a 24-bit depth buffer: the visible triangle per pixel from both,
 // and the time each took. Shared by gl_raster_check (a test) and zbuffer_vs_llvmpipe (a benchmark).

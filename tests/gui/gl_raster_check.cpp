@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Our z-buffer against OpenGL's rasteriser (Mesa llvmpipe here): the same triangles, the same viewport, each
 // drawn in a colour that encodes its index, with GL_LESS on a 24-bit depth buffer. Prints how many pixels differ
 // and fails if any does:

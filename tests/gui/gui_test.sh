@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Drives the real window headless (SDL's offscreen driver: EGL on Mesa's llvmpipe, no X server needed) and checks
 # what it shows. Usage: gui_test.sh HSRVIZ PNG_CHECK SOURCE_DIR WORK_DIR CASE
 set -euo pipefail

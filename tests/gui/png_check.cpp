@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Checks that a screenshot of the window is a real picture: the expected size, a 3D view that is not just
 // background, and panels with text. Usage: png_check FILE WIDTH HEIGHT
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Z-buffer fill against Mesa's llvmpipe through OpenGL (EGL offscreen via SDL), on the same 10^5 random triangles
 // at 1024×1024, small (about 20 pixels each) and large (about 300): our machine drained with polygon-level events,
 // llvmpipe with one thread (LP_NUM_THREADS=0: the rasteriser runs in the calling thread) and with its default

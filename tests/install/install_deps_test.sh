@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # scripts/install-deps asks only for what a purpose needs, and a user with neither root nor sudo gets the exact
 # command for an administrator (exit 1) instead of "sudo: command not found". Runs the real script with stand-ins
 # for id (a user, not root) and dpkg-query (nothing installed) on a PATH without sudo.

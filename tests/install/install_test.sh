@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # hsrviz installed as software: `cmake --install` into a prefix, and the .deb that cpack makes, unpacked into a
 # scratch root with dpkg -x. The installed program finds its lessons beside itself (also when the installation is
 # moved), checks every shipped lesson, plays one headless; the .deb depends on runtime libraries only.

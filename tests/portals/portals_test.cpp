@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells and portals: the PVS matches the lecture's example and is symmetric and conservative (a 2D ray walk from
 // random points never sees a cell outside it); the BSP finds the cell brute force finds; portal_render draws every
 // polygon a ray cast from the eye sees; and the extremes (an eye in an opening, a portal edge-on, an eye in a wall,

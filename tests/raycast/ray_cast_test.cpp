@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ray casting: the grid and the octree give brute force's hits; awkward rays neither divide by zero nor loop.
 #include "catch.h"
 #include "raycast/ray_cast.h"

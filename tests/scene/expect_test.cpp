@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One test walks every scene file in assets/scenes and checks its [expect] tables against the machines
 // (analysis/expect_check.h); a second holds the catalogue of extreme cases in assets/scenes/extreme to its promises.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene files: a good one loads; a bad one gives one clear error with file, line, column and field.
 #include <filesystem>
 #include <fstream>

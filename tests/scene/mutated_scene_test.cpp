@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A teacher's typos, at random: every byte-level mutation of a real scene file either loads or gives a LoadError
 // with a file and a line; nothing else escapes, nothing crashes (the sanitizer build runs this too).
 #include <fstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The image beside the BSP traversal: what DisplayBSP has painted so far, seen from the eye. In a 2D plan it is
 // the first-person strip; a near wall covers a far one only once it is painted, after it.
 #include "bsp/bsp_scene.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The BSP view folded from the machine's events shows exactly the tree the build returns and the order the
 // traversal returns; seek(k) equals the fold of [0, k) on the BSP lessons' traces.
 #include <random>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Chapters and questions: every shipped lesson and scene checks out (chapters start, questions are answered by the
 // machine, answers are among the choices); a question answered wrongly on purpose gets "wrong" with the machine's
 // own answer and sentence; playback pauses at a chapter; a teacher's typo names the file and line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panel column's arithmetic: boxes get what they hold when it fits and fair shares when it does not; text wraps
 // at spaces only, so a number is never broken.
 #include <numeric>

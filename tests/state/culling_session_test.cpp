@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Culling lessons: each view folded to the end holds what its machine returns; seeking equals folding.
 #include "catch.h"
 #include "state/families.h"

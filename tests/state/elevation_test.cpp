@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The elevation of lesson 26: along the row of rooms A, B, C, D, lines through the low window and the high one
 // pass above the last low one, so no sightline from A reaches D; through the first two alone they pass.
 #include "catch.h"

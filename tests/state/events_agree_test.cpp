@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The event log is the truth the window shows: folding a machine's events must give exactly its answer.
 #include <random>
 

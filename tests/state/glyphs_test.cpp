@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window's font ranges and the check that warns about characters outside them.
 #include <catch2/catch.hpp>
 

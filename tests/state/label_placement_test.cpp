@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Labels of a view never cover one another while there is room around their points, and the first label given
 // keeps the spot a reader expects (to the upper right of its point).
 #include "catch.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Lessons load and play to the end; traces are JSON Lines and the same input gives the same hash.
 #include <filesystem>
 #include <fstream>

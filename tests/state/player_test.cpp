@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The player: seek(k) equals folding events [0, k) from the start, for every k, on real traces.
 #include <atomic>
 #include <random>

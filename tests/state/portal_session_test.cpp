@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells-and-portals lessons: the PVS view folds to the machine's matrix, the runtime view to its drawn set; seeking
 // equals folding; dragging the eye reruns the traversal from the new place.
 #include "catch.h"

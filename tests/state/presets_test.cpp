@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Presets: each algorithm's extreme cases are the catalogue's files its family answers, and each plays with that
 // algorithm; random scenes load, differ by seed and play.
 #include <algorithm>

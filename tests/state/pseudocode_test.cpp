@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pseudocode tables: an event lights the first line that names it (by kind, and by its fields where a line asks),
 // and every event of every shipped lesson, played with every algorithm of its family, lights a line of the
 // pseudocode that is shown when it happens.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ray-casting lessons: the image folded from the events is the machine's, and seeking equals folding.
 #include "catch.h"
 #include "state/raycast_session.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scan-line lessons: the image folded from the spans is the z-buffer's, and the active edge table empties.
 #include <algorithm>
 

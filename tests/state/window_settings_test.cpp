@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window's remembered settings: a round trip, the defaults when there is no file, and a broken file or field
 // named (file and line) and the rest still used.
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Z-buffer lessons: the view folds to the machine's buffers, seeking equals folding, and changing the format or
 // near and far reruns the fill and moves the z-fighting the lesson is about.
 #include <filesystem>

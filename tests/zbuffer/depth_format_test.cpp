@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Depth codes against their closed forms (the formulas are written out here, not taken from the code under test).
 #include <cmath>
 

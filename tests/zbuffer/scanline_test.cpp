@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scan-line algorithm gives the z-buffer's image, pixel for pixel, and tells its edge table as it goes.
 #include <map>
 

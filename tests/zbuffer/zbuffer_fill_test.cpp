@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer fill: the top-left rule on shared edges, clipping before the divide, extremes, and the events.
 #include <cmath>
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer's visible polygon per pixel against the double-precision ray cast. Where they differ, the test
 // says why, and only two reasons are allowed:
 //   z-fighting  the two surfaces' depths at the pixel fall within one code of the format (the lesson's subject)

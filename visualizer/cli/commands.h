@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The headless commands of the command line (no window, no GL).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/png_io.h"
 
 #include <cstdio>

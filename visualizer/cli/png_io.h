@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writing images: colour as 8-bit RGB PNG (stb), visible primitive ids as 16-bit grey PNG (libpng).
 #pragma once
 

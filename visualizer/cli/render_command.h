@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // hsrviz render SCENE --algorithm bsp|zbuffer|raycast|scanline|depth-sort [options] --out IMAGE.png [--ids IDS.png]
 // SCENE is a scene file, or a generated scene: city:N, field:N or spheres:N (about N triangles). With --cull STAGES
 // (zbuffer only) the culling pipeline runs first and prints one line per stage.

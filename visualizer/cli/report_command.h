@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // hsrviz report: error against run time for every algorithm family (analysis/measurement.h), written as
 // report.md, report.csv and one SVG chart per family into the output folder.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/backface_panels.h"
 
 #include <imgui.h>

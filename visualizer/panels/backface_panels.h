@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The state panel of a back-face culling lesson: every face with its value and verdict.
 #pragma once
 

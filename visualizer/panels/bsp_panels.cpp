@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/bsp_panels.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The state panel of a BSP lesson: the statistics line and the tree as nodes and edges.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/chapter_panels.h"
 
 #include <cctype>

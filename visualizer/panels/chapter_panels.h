@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The classroom in the window: the chapter showing (its title and narration in the chosen language) above the
 // lesson's summary, and the open question at the foot of the panel column, where it hides nothing of the view it
 // asks about, with a button per choice (keys 1 to 9), then the verdict with the machine's own sentence, and the

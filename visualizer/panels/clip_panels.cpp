@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The state panel of a clipping lesson: outcodes (Cohen–Sutherland), parameters (Liang–Barsky) or the pipeline
 // stage (Sutherland–Hodgman).
 #include "panels/clip_panels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The state panel of a clipping lesson.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/culling_panels.h"
 
 #include <algorithm>

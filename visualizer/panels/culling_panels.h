@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a culling lesson: the pipeline (one row per stage: primitives in, left out, passed on, time, and a
 // bar of what it leaves out), what the machine has done so far, the void space of each object's bounding volumes
 // (bounds lesson), and the Z-pyramid's levels as images (hierarchical z-buffer lesson).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Over the 3D view of a depth-sort lesson: the display list as a row of chips that slide when a polygon moves to
 // the head or is cut into parts, the screen (x, y) with the projections of R and Q and their extents, and the
 // image painted so far, translucent polygons composited "over" what lies behind them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/depth_sort_panels.h"
 
 #include <string>

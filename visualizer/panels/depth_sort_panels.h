@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a depth-sort lesson: the decision table of the pair under examination (each test tried, its
 // outcome and the numbers that decided it), and over the 3D view the display list (moves and splits animated),
 // the screen with the projections of R and Q (tests 1, 2 and 5 are about them) and the image painted so far.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawing a classroom-sized image as a grid of fat pixels (z-buffer and scan-line lessons), with polygon outlines
 // in the same pixel coordinates.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/keys_panel.h"
 
 #include <imgui.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // F1: every key of the window, over the view.
 #pragma once
 

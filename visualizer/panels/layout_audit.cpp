@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/layout_audit.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the frame drew cut: a box of the panel column whose content runs past its right or bottom edge with no
 // scrollbar to reach it, or a word too wide for its line (broken inside). After --screenshot the window prints each
 // as "hsrviz: layout: …"; a GUI test walks every lesson at both sizes and wants none.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/lesson_menu.h"
 
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lesson menu (M, or the timeline's Lessons button): the course by topic, each lesson with its difficulty and
 // what it builds on; the one playing marked, the one the arrow keys are on highlighted. A click, or Enter, opens it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // [SECTION] helpers
 // [SECTION] lesson, pseudocode, narration
 // [SECTION] timeline

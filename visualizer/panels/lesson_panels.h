@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The generic panels of a lesson (any algorithm). Each reads the session and fills in UiActions; none changes state.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Colours and placement shared by the panels.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // [SECTION] the floor plan: fitting, cells, walls and openings
 // [SECTION] what each lesson adds to the plan: the sightline being tested, or the eye and its frusta
 // [SECTION] the state panels: PVS matrix, stab tree, counts

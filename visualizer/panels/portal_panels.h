@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a cells-and-portals lesson: the floor plan (cells, portals, the sightline being tested or the eye
 // with its narrowing frusta as wedges; drag the eye and the traversal reruns at once), and the state panel with
 // the PVS matrix, the stab tree and the counts of polygons drawn and culled per reason.

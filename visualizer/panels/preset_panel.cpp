@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/preset_panel.h"
 
 #include <imgui.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // P: the presets of the lesson's algorithm over the view: its extreme cases (keys 1 … 9, or click) with what each
 // promises, a random scene from a seed (0), and the way back to the lesson (B).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/raycast_panels.h"
 
 #include <algorithm>

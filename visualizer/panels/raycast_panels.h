@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a ray-casting lesson: the image filled ray by ray (fat pixels, over the 3D view's corner) and the
 // current ray's numbers.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/report_panel.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R: error against run time for the family of the algorithm being played, over the view (state/presets.h), and
 // while it is measured, a progress bar with a Cancel button.
 #pragma once

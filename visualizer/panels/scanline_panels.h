@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a scan-line lesson: the image filled line by line with the current line, its active edges and
 // their crossings; the edge table with the active edges marked, and the in/out flags.
 #pragma once

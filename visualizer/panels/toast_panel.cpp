@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/toast_panel.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window's notes (state/toasts.h), at the top of the view, fading out.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the user asked for this frame. Panels and keys fill it in; the app carries it out in its update step,
 // so panels never change state themselves.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The frame shown while long work runs in the window (a lesson opening on a huge scene, End on a long run): what is
 // being done, how far it has come, a bar that moves while it works, and that Esc stops it.
 #pragma once

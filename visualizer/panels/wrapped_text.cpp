@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/wrapped_text.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Text wrapped at spaces only. ImGui's own wrapping also breaks after '.' and ',', which splits numbers in the
 // middle ("(-1.↵73205"); a sentence of this tool is full of numbers.
 #pragma once

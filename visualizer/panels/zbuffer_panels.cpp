@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/zbuffer_panels.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a z-buffer lesson: the fat-pixel frame buffer beside the depth buffer as a heat map, with the
 // polygon, span and pixel under way; the depth-precision diagram; and the format, near and far controls.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "panels/zmerge_panels.h"
 
 #include <algorithm>

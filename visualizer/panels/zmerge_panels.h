@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels of a z-merge lesson: part A, part B and the merged image side by side, and the pixel merged last.
 #pragma once
 

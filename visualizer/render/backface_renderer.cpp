@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/backface_renderer.h"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a back-face culling view: faces kept in their colour, culled faces dark, untested faces faint; for the
 // face just tested, its normal and the view vector from the eye (or the eye-to-plane distance).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a BSP view in world space: the polygons (faint until painted, then opaque with their painter's number),
 // the current node's splitting plane as a translucent quad, the eye, and for a 2D scene (segments in z = 0) every
 // splitting line clipped to the region of its node, the classroom picture. Reads the view; changes nothing.

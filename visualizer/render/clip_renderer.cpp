@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/clip_renderer.h"
 
 #include <array>

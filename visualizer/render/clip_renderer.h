@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a clipping view in world space: the clip volume as the camera's frustum (or box), the plane in focus as a
 // translucent face, every primitive faint as given and bold where it is visible, and the working state of the
 // primitive being clipped. Reads the view and the scene; changes neither.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/culling_renderer.h"
 
 #include <algorithm>

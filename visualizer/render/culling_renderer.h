@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The 3D view of a culling lesson, from above and behind the camera (a god's-eye view): the camera's frustum, the
 // primitives kept solid and those left out faint, the hierarchy's boxes coloured by what happened to them
 // (outside orange-red, inside bluish green, partly inside yellow, too small grey, occluded reddish purple, visible sky

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/depth_sort_renderer.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a depth-sort lesson in the canonical view volume (the viewpoint far away along −z): the polygons still to
 // draw faint, those drawn solid, the pair under examination bold (R yellow, Q blue), and for tests 3 and 4 the
 // plane they test against.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The view frustum of a camera, as lines (the four corner rays from the eye to the far plane, the near and far
 // rectangles), and the bounds of a scene and its eye.
 #pragma once

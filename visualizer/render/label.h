@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Text to show beside a point of a 3D view (drawn by the panels, which own the fonts).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/line_batch.h"
 
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Coloured lines, triangles and points in one vertex buffer, drawn with one tiny shader. Filled every frame from
 // a view (update, then draw): nothing here knows an algorithm.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/orbit_camera.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The viewer's camera in the 3D view (not the scene's camera): it orbits a target point; the mouse turns and zooms it.
 #pragma once
 

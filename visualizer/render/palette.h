@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The colours of the 3D view: the Okabe–Ito palette, safe for colour-blind viewers, on a dark background.
 #pragma once
 

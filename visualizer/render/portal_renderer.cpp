@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/portal_renderer.h"
 
 #include <algorithm>

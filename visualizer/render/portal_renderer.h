@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The 3D walk-through of a portal_render lesson: the rooms, the polygons drawn solid in their cell's colour and
 // those culled as faint outlines, the openings outlined, the eye, and the narrowed frusta as rays from the eye
 // through the corners of each opening's visible part.

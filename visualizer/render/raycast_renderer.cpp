@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/raycast_renderer.h"
 
 #include <array>

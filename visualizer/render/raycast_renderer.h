@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a ray-casting view in 3D: the scene's polygons, the view frustum, the grid's cells the current ray has
 // walked (the last one bright), the ray up to its nearest hit, and that hit.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A primitive's colour as its scene gives it (points, segments and polygons share one id space).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "render/zbuffer_renderer.h"
 
 #include <algorithm>

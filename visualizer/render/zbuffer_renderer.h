@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Draws a z-buffer lesson in 3D: the scene's polygons, the view frustum, and the frame buffer so far as an image
 // standing in the frustum behind the scene, where each fat pixel lines up with what it shows seen from the eye.
 #pragma once

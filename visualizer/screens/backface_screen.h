@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Back-face culling: each face with its normal and the view vector of the test, from the scene's camera.
 #pragma once
 

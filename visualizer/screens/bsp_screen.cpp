@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "screens/bsp_screen.h"
 
 #include <algorithm>

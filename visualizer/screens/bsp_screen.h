@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // BSP trees: the tree's splitting lines (2D) or planes (3D) over the scene; in a 2D lesson the eye, the segments'
 // ends and the ground take gestures (drag the eye or an end, Shift+drag a new segment, right-click one away).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clipping: the clip volume in 3D with the primitive being cut; a step slides from the picture before it.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Culling: a god's-eye view of the camera's frustum and the hierarchy's boxes coloured by what happened to them,
 // or the view from the scene's own camera (key V); the pipeline and the machine's panel beside it. One screen for
 // the four culling machines.

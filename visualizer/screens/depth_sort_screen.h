@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Newell's depth sort: the pair R, Q in the canonical view volume, the display list, the screen inset and the
 // image painted so far.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells and portals: the floor plan (the PVS being filled, or portal_render's frusta with a draggable eye), and for
 // portal_render the 3D walk-through (key V).
 #pragma once

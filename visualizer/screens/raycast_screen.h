@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Ray casting: the rays leaving the eye through the grid's pixels, and the image they make.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scan-line algorithm: the edge tables and the one-line z-buffer over the grid's rows.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "screens/screen.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A family's screen: what the window needs of a family beyond the common panels (lesson, pseudocode, narration,
 // timeline, questions). The primary template is declared and never defined, so a session type without a
 // screens/<family>_screen.h that specialises Screen<S> does not compile.

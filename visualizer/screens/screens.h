@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every family's screen, one per session type of state/families.h, and the one dispatch the window makes to them.
 #pragma once
 

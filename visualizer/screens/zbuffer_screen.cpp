@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "screens/zbuffer_screen.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The z-buffer: the fat pixels being filled (or the scene in 3D, key V); on the pixels a vertex drags at its depth,
 // Shift+drag draws a triangle, a right-click deletes the polygon shown there.
 #pragma once

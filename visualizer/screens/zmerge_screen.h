@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Z-merge: two frame and depth buffer pairs merged pixel by pixel.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Command-line values read strictly: a size is two whole numbers in range joined by an x ("1280x800"), a point three
 // finite numbers joined by commas. Anything else (sscanf's "4294967297x1" read as 1×1, "x", "nan,nan,nan") is
 // refused, so a typo is a usage error and never a silent other picture.

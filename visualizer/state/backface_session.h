@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A back-face culling lesson: one of the three tests over the scene's polygons, seen from its camera.
 #pragma once
 

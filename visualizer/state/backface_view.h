@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a back-face culling lesson shows: every face, its verdict once tested, and the face being tested.
 #pragma once
 

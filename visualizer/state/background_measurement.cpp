@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/background_measurement.h"
 
 #include <atomic>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // R's measurement off the window's thread: the family's rows of `hsrviz report` are measured on a thread of their
 // own while the window keeps drawing a progress bar, and a Cancel stops them before their next timed run. The
 // window asks each frame whether the rows are in (take); leaving a lesson or closing the report cancels.

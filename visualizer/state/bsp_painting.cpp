@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/bsp_painting.h"
 
 #include <unordered_map>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What DisplayBSP has painted so far, seen from the eye, for the image beside the traversal.
 //  - A 3D scene: the polygons drawn so far, in the traversal's order, each over what is there, through the scene's
 //    camera (its eye where the view's eye is).

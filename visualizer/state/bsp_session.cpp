@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/bsp_session.h"
 
 #include <chrono>

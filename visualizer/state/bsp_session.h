@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A BSP lesson being played: BuildBSP then DisplayBSP on the lesson's scene, with the lecture's pseudocode.
 // The build lesson starts at the first event; the traversal lesson starts where the tree is built.
 #pragma once

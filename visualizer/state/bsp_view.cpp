@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/bsp_view.h"
 
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a BSP lesson shows, as plain data: the polygons (inputs, then split parts as they appear), the tree as it
 // grows, and the painter's order as the traversal draws. Changed only by reduce().
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Chapters of a lesson: narration that appears when an event first happens (or at a step), may pause playback, and
 // may ask a question the machine itself answers.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The classroom side of a lesson being played: which chapter shows, the language, the questions answered and the
 // score. Playback pauses where a chapter asks it to (or asks a question); an answer is judged by the machine's own
 // event, which the player then steps to so that the student sees it.

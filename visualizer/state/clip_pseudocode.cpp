@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/clip_pseudocode.h"
 
 namespace hsr::viz {

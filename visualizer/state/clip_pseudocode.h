@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the window shows beside a clipping view: the lecture's pseudocode of each clipper, with the events that
 // light each line and whether they are a Step. UI policy: the machines know none of it.
 #pragma once

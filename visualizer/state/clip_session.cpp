@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/clip_session.h"
 
 #include "state/clip_pseudocode.h"

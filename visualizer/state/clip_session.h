@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A clipping lesson being played: the lesson, its machine behind a player, and what the panels ask of it.
 #pragma once
 

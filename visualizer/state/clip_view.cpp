@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/clip_view.h"
 
 #include "core/overloaded.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a clipping lesson shows, as plain data: every primitive with its input and (once clipped) its visible
 // part, and the working state of the primitive being clipped. Changed only by reduce(); read by the renderer,
 // the panels and the tests.

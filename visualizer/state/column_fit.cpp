@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/column_fit.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The right-hand column sized to what its boxes hold: a box with one line takes one line, the lesson text and the
 // narration grow, a table gets the rows it has; only when everything does not fit do the boxes share the height,
 // each scrolling inside its share (with its scrollbar visible).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The course: the shipped lessons in order, each with what the lesson menu shows (its topic from the lecture,
 // difficulty, prerequisites), and what `hsrviz --lesson-list` prints.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A vector stored in chunks shared between copies: copying it copies one pointer per chunk, and changing an
 // element copies only its chunk, and only while another copy still shares it. Keyframes of a view that holds
 // every primitive of a large scene then cost little more than the primitives that changed between them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // [SECTION] the world and the view
 // [SECTION] each machine's pseudocode, lines and steps
 // [SECTION] the sessions

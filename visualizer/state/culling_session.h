@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Culling lessons: a hierarchy built node by node (bounding volumes), culled against the frustum or for detail,
 // occluders and their frusta, or Cull_or_Render with the Z-pyramid. One view serves them all: what happened to
 // each node and each primitive so far. Every culling lesson also runs the whole pipeline once (the stages its

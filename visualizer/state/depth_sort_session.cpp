@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/depth_sort_session.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A depth-sort lesson: the display list as it is sorted, the pair under examination with each test tried, moves,
 // cycles and splits, and the polygons drawn back to front.
 #pragma once

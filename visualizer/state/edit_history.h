@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Undo and redo for a session's edits: the states before each edit, and those undone. A drag is many small moves;
 // recorded with `same_drag` they make one step.
 #pragma once

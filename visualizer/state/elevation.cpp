@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/elevation.h"
 
 #include <algorithm>

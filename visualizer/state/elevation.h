@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The elevation (side view) of a run of openings along a line of the plan: stand beside the plan line and look at
 // the vertical plane above it. Each opening the line crosses is a gap from its bottom to its top at the distance s
 // where the line crosses it; a 3D sightline above this plan line is a line h = a + b·s of that plane, and it passes

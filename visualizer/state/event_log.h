@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An append-only log of events, stored by type: each alternative of the variant has its own vector, and the log
 // keeps one (kind, slot) pair per event. A small event then costs its own size plus 5 bytes, not the size of the
 // variant's largest alternative, which is what lets a trace of millions of events stay small.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/families.h"
 
 namespace hsr::viz {

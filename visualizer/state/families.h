@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The families as types: one closed variant of sessions, and the one place where a lesson's algorithm becomes a
 // session type (with_family). Code that needs a family's own knowledge (its screen, its trace, its presets) visits
 // the variant; code that does not (timeline, narration, pseudocode, questions) takes the common Session.

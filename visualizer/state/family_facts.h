@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the presets (P: extreme cases, a random scene) and the window's report (R) need of a family. Each session type
 // has its own `static const FamilyFacts facts`, defined beside it; the helpers below are what those are made of.
 #pragma once

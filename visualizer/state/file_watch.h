@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Notices when the files a lesson came from change on disk (a teacher editing the lesson or its scene while the
 // window shows it), by their modification times, looked at no more than twice a second.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The characters the window's font is built with: Latin (with Latin Extended-A and -B, for the languages of Europe
 // written in Latin letters), Greek (ε, the lecture's symbols), Cyrillic, punctuation, super- and subscripts, arrows,
 // mathematical operators and geometric shapes. DejaVu, the font the window loads, has all of them. A lesson that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/label_placement.h"
 
 namespace hsr::viz {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where the labels of a view go so that none covers another: each wants the spot to the upper right of its point;
 // when that spot is taken, it tries the other corners and then spots a line further away, and takes the first free
 // one. If none is free, the first `always_shown` labels take their own spot anyway (what a small scene or the

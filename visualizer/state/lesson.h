@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A lesson file (lessons/NN_topic.toml) names an algorithm and a scene:
 //
 //   title = "3D Cohen–Sutherland line clipping"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `hsrviz check`: a lesson or scene file is read (schema, references: errors give file:line:column and what was
 // expected), played headless to its end, and its chapters held against the machine's events (kinds that exist,
 // chapters that start, questions the machine answers, answers among the choices).

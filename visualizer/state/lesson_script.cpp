@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/lesson_script.h"
 
 #include <algorithm>

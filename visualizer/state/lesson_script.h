@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A lesson's chapters against the events of its machine: where each chapter starts, which chapter is showing at a
 // step, and what each question's answer is — read from the machine's own events, never from a key in the file.
 #pragma once

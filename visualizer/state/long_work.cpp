@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/long_work.h"
 
 namespace hsr::viz {

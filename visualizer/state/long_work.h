@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Long work in the window: a lesson opening on a huge scene, End on a long run, an edit that reruns a big machine.
 // Whoever starts it (the window) puts a WorkMeter in place for as long as the work lasts; the player ticks it for
 // each event it pulls from a machine or folds into a view, so the window can show that it is busy (a progress frame)

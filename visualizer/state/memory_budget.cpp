@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/memory_budget.h"
 
 #include <sys/resource.h>

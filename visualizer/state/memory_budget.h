@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Work no classroom machine can do is refused before it starts, with the figures: a lesson on field:20000000 or a
 // render at 16384×16384 asks for many gigabytes, and running out half-way froze the window or ended in
 // "std::bad_alloc". The estimates are upper bounds measured on the machines (bytes per triangle of the ray cast's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/output_folder.h"
 
 #include <cstdio>

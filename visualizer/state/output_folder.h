@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where commands and the window write their files.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The player: an append-only event log pulled lazily from the machine, a cursor, and keyframes of the view.
 //
 // The view shown at cursor k is the fold of events [0, k) over the initial view. Stepping back never rewinds the

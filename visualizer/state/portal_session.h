@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cells-and-portals lessons: the pre-processing (stab trees filling the PVS matrix) and the runtime portal_render
 // (the eye located, its PVS row, cells visited through narrowing frusta, polygons drawn or culled). The model, its
 // cell BSP and its PVS are built once per lesson (and again when the eye is dragged into a new place: only the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scenes one click away from any lesson: the extreme cases of its algorithm (assets/scenes/extreme, each with the
 // behaviour it promises), and a random scene of its family from a seed. The window lists them (P) and plays the one
 // chosen with the lesson's algorithm.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A machine's pseudocode as the lecture prints it: one row per line, each row naming the events that light it and
 // whether each of them is a Step (→) or a Micro-step (Shift+→). This is the "table beside each view" of DESIGN.md:
 // inserting a line changes one row, and the line an event lights is looked up, never counted.

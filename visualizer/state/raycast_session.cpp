@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/raycast_session.h"
 
 namespace hsr::viz {

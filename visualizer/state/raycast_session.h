@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A ray-casting lesson: the lecture's RayCasting over a classroom-sized grid of fat pixels, ray by ray, with every
 // primitive (raycast_brute), a regular grid walked cell by cell (raycast_grid) or an octree (raycast_octree).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a ray-casting lesson shows: the image filled ray by ray, the current ray, the grid cells it has walked (or
 // the octree nodes it has entered), the primitive tested last and the nearest hit so far.
 #pragma once

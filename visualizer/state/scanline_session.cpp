@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/scanline_session.h"
 
 namespace hsr::viz {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A scan-line lesson: the edge table, the active edge table and in/out flags, with a one-line z-buffer, over a
 // classroom-sized grid of fat pixels.
 #pragma once

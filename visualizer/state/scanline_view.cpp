@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/scanline_view.h"
 
 #include <algorithm>

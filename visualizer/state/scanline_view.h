@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a scan-line lesson shows: the edge table, the active edge table on the current line with each edge
 // crossed so far (and the in/out flags it flipped), and the image filled line by line.
 #pragma once

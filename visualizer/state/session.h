@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A lesson being played, whatever its algorithm: what the timeline, narration and pseudocode panels and the
 // keyboard need. Each family (clipping, BSP, …) derives a PlayerSession with its own events, view and tables.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/text_wrap.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Text wrapped at spaces only, and lesson text reflowed: the arithmetic of the window's wrapped text, without ImGui
 // (the measure of a string is passed in), so that tests can drive it.
 #pragma once

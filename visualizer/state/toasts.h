@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Short notes in the window for what happened off screen: an export, a save, a reload, a lesson opened, a
 // measurement done. A window started from a menu has no terminal, so what is printed there is also shown here for a
 // few seconds.

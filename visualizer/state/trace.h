@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Traces: a machine's events as JSON Lines, one event per line with its step, kind, fields and sentence:
 //   {"step":0,"kind":"SegmentStarted","id":1,"p1":[…],"p2":[…],"text":"segment 1 from …"}
 // and a hash of those bytes (64-bit FNV-1a), so that "same input, same trace" is one comparison.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How an event becomes a trace line: the JSON of its fields, written by each family's <family>_trace.cpp with
 // HSR_TO_JSON, which then instantiates trace_line for its event variants with HSR_TRACE_LINES. Only those files
 // include this one (nlohmann's macros stay out of every other translation unit).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/window_settings.h"
 
 #include <algorithm>

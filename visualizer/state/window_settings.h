@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the window remembers between runs: its size and place, whether it was maximised, the width of the panel
 // column and the narration language. One small TOML file in the user's configuration folder; a missing or broken
 // file gives the defaults (and a warning naming the file, line and field), never an error.

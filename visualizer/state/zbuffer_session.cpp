@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/zbuffer_session.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A z-buffer lesson: the fill over a classroom-sized grid of fat pixels, with the depth format, near and far the
 // user can change (the machine reruns; the step stays).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The trace's fields of the z-buffer fill's events (one JSON object per event: state/trace.h).
 #include "state/trace_json.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What a z-buffer lesson shows: the frame and depth buffers of a classroom-sized viewport (fat pixels), the
 // polygon being filled, its current span, and the pixel under test with both depths.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "state/zmerge_session.h"
 
 #include "core/overloaded.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A z-merge lesson: the scene's polygons in two parts (the first half, A, and the rest, B), each z-buffered on its
 // own, then merged pixel by pixel as the lecture gives it.
 #pragma once
