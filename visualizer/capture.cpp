@@ -50,7 +50,8 @@ std::string export_lesson(const Session& s, const std::string& path, const std::
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
     const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
-                    static_cast<bool>(std::ofstream(scene) << algo::scene_toml(s.lesson().scene));
+                    static_cast<bool>(std::ofstream(scene) << "# exported by hsrviz " HSR_VERSION " at step " << s.cursor() << "\n"
+                                                            << algo::scene_toml(s.lesson().scene));
     return std::string(ok ? "exported " : "could not export all of ") + png + ", " + trace + " and " + scene;
 }
 

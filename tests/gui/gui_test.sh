@@ -184,6 +184,7 @@ case "$case" in
     grep -q "hsrviz: exported hsrviz-export/01_cohen_sutherland-step-1.png" e.txt
     "$png_check" hsrviz-export/01_cohen_sutherland-step-1.png 1280 800
     test "$(wc -l < hsrviz-export/01_cohen_sutherland.jsonl)" -eq 64
+    head -1 hsrviz-export/01_cohen_sutherland-scene.toml | grep -q "^# exported by hsrviz [0-9.]* at step"
     "$hsrviz" trace hsrviz-export/01_cohen_sutherland-scene.toml --out again.jsonl --algorithm cohen_sutherland > /dev/null
     cmp <(sed 's/"text".*//' again.jsonl) <(sed 's/"text".*//' hsrviz-export/01_cohen_sutherland.jsonl)
     "$hsrviz" check "$lesson" > check.txt
@@ -353,7 +354,9 @@ case "$case" in
       test -s "rep/$family.svg"
       grep -q "<circle" "rep/$family.svg"
       grep -q "($family.svg)" rep/report.md
+      grep -q "<!-- hsrviz [0-9.]*: $family" "rep/$family.svg"  # the version that measured
     done
+    grep -q "Written by hsrviz [0-9.]* (" rep/report.md
     test "$(wc -l < rep/report.csv)" -gt 40
     grep -q "^clipping,liang_barsky straight-line (float)," rep/report.csv ;;
   long-work)  # a long render tells how far it is on stderr and stops on Ctrl+C, exit 130, with no image written

@@ -35,11 +35,15 @@ int run_report(const ReportOptions& o) {
     }
     const auto extremes = analysis::run_extreme_cases(data_dir() + "/assets/scenes/extreme");
     const std::filesystem::path dir(o.out);
-    write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by `hsrviz report" + std::string(o.quick ? " --quick" : "") +
-                                      "`; every number comes from this run.\n\n" + analysis::report_markdown(rows) +
+    // the version that measured, in every file a person opens (the CSV stays plain rows for spreadsheets)
+    write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by hsrviz " HSR_VERSION " (`hsrviz report" +
+                                      std::string(o.quick ? " --quick" : "") + "`); every number comes from this run.\n\n" +
+                                      analysis::report_markdown(rows) +
                                       analysis::extreme_markdown(extremes));
     write_file(dir / "report.csv", analysis::report_csv(rows));
-    for (const std::string& family : analysis::families_of(rows)) write_file(dir / (family + ".svg"), analysis::error_chart_svg(rows, family));
+    for (const std::string& family : analysis::families_of(rows))
+        write_file(dir / (family + ".svg"), "<!-- hsrviz " HSR_VERSION ": " + family + ", error against run time -->\n" +
+                                                analysis::error_chart_svg(rows, family));
 
     int violations = 0;
     for (const auto& m : rows)
