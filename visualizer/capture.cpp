@@ -45,7 +45,7 @@ bool write_png(const std::string& path, int w, int h) {
 }
 
 std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
-    const std::string dir = "hsrviz-export", stem = std::filesystem::path(s.lesson().source).stem().string();
+    const std::string dir = output_folder("hsrviz-export"), stem = std::filesystem::path(s.lesson().source).stem().string();
     if (!make_folder(dir)) return "could not make the folder " + dir;
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";

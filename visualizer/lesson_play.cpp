@@ -112,8 +112,9 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
         const auto toml = random_scene_toml(session()->lesson().algorithm, two_d, next_seed);
         if (!toml) return;
         algorithm = std::string(session()->lesson().algorithm.id);
-        if (!make_folder("hsrviz-export")) return;
-        path = "hsrviz-export/random-" + *algorithm + "-seed" + std::to_string(next_seed++) + ".toml";
+        const std::string folder = output_folder("hsrviz-export");
+        if (!make_folder(folder)) return;
+        path = folder + "/random-" + *algorithm + "-seed" + std::to_string(next_seed++) + ".toml";
         std::ofstream(path) << *toml;
     } else {
         return;
@@ -186,8 +187,9 @@ void Lessonplay::tell(const std::string& text) {
 }
 
 void Lessonplay::save_edited(const algo::Scene& scene) {
-    const std::string file = "hsrviz-export/" + std::filesystem::path(path).stem().string() + "-edited.toml";
-    const bool ok = make_folder("hsrviz-export") && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
+    const std::string folder = output_folder("hsrviz-export");
+    const std::string file = folder + "/" + std::filesystem::path(path).stem().string() + "-edited.toml";
+    const bool ok = make_folder(folder) && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
     tell((ok ? "saved the edited scene to " : "could not write ") + file);
 }
 

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
     if (no_display) {
         setenv("SDL_VIDEODRIVER", "offscreen", 1);
         if (!app.screenshot && !app.record_dir && !app.gif) {
-            app.record_dir = "hsrviz-out";
+            app.record_dir = hsr::viz::output_folder("hsrviz-out");
             const std::string trace_file = *app.record_dir + "/trace.jsonl";
             std::printf("hsrviz: no display found; playing %s headless, writing frames to %s/frame_*.png and the trace to %s\n",
                         app.lesson_path.c_str(), app.record_dir->c_str(), trace_file.c_str());

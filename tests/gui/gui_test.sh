@@ -185,6 +185,12 @@ case "$case" in
     "$png_check" hsrviz-export/01_cohen_sutherland-step-1.png 1280 800
     test "$(wc -l < hsrviz-export/01_cohen_sutherland.jsonl)" -eq 64
     head -1 hsrviz-export/01_cohen_sutherland-scene.toml | grep -q "^# exported by hsrviz [0-9.]* at step"
+    # started in the home folder (as from the desktop menu): the export goes under the data home, not into $HOME
+    mkdir -p home
+    (cd home && HOME="$PWD" XDG_DATA_HOME="$PWD/data" "$hsrviz" "$lesson" --screenshot e.png --frames 4 --keys Right,E > e.txt)
+    grep -q "exported .*/home/data/hsrviz/hsrviz-export/01_cohen_sutherland-step-1.png" home/e.txt
+    test -s home/data/hsrviz/hsrviz-export/01_cohen_sutherland-scene.toml
+    test ! -e home/hsrviz-export
     "$hsrviz" trace hsrviz-export/01_cohen_sutherland-scene.toml --out again.jsonl --algorithm cohen_sutherland > /dev/null
     cmp <(sed 's/"text".*//' again.jsonl) <(sed 's/"text".*//' hsrviz-export/01_cohen_sutherland.jsonl)
     "$hsrviz" check "$lesson" > check.txt

@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 // The window's remembered settings: a round trip, the defaults when there is no file, and a broken file or field
 // named (file and line) and the rest still used.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
+#include <string>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "catch.h"
+#include "state/output_folder.h"
 #include "state/window_settings.h"
 
 using namespace hsr::viz;
@@ -65,4 +70,33 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(clamp_side(2000, 1280) == 960);
     CHECK(clamp_side(500, 500) == 320);
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the window's files go to the current directory, or under the data home when that is the home folder",
+          "[state][output]") {
+    namespace fs = std::filesystem;
+    const fs::path before = fs::current_path();
+    const fs::path root = fs::temp_directory_path() / ("hsrviz-output-" + std::to_string(::getpid()));
+    fs::create_directories(root / "home" / "work");
+    const auto saved = [](const char* v) { const char* x = std::getenv(v); return x ? std::optional<std::string>(x) : std::nullopt; };
+    const auto home_before = saved("HOME"), data_before = saved("XDG_DATA_HOME");
+    const auto restore = [&] {  // the rest of the process sees what it saw before
+        fs::current_path(before);
+        unsetenv("HSRVIZ_OUTPUT");
+        for (const auto& [v, x] : {std::pair{"HOME", home_before}, std::pair{"XDG_DATA_HOME", data_before}})
+            x ? setenv(v, x->c_str(), 1) : unsetenv(v);
+        fs::remove_all(root);
+    };
+    setenv("HOME", (root / "home").c_str(), 1);
+    setenv("XDG_DATA_HOME", (root / "data").c_str(), 1);
+    unsetenv("HSRVIZ_OUTPUT");
+    fs::current_path(root / "home" / "work");
+    CHECK(output_folder("hsrviz-export") == "hsrviz-export");  // started from a shell in a folder of one's own
+    fs::current_path(root / "home");
+    CHECK(output_folder("hsrviz-export") == (root / "data" / "hsrviz" / "hsrviz-export").string());  // from the menu
+    unsetenv("XDG_DATA_HOME");
+    CHECK(output_folder("hsrviz-out") == (root / "home" / ".local/share" / "hsrviz" / "hsrviz-out").string());
+    setenv("HSRVIZ_OUTPUT", (root / "chosen").c_str(), 1);
+    CHECK(output_folder("hsrviz-export") == (root / "chosen" / "hsrviz-export").string());
+    restore();
 }

@@ -9,4 +9,10 @@ namespace hsr::viz {
 // Makes a folder (and its parents); false, having said why on stderr, when it cannot be made.
 bool make_folder(const std::string& dir);
 
+// Where the window puts a folder of its files (`name`: hsrviz-export for E, S and random scenes, hsrviz-out for the
+// no-display fallback): in the current directory, as someone who started it from a shell expects, unless that is
+// the home folder (where a program started from the desktop menu starts: exports would litter it) or cannot be
+// written; then under $XDG_DATA_HOME/hsrviz (~/.local/share/hsrviz). HSRVIZ_OUTPUT=DIR puts it in DIR instead.
+std::string output_folder(const std::string& name);
+
 }  // namespace hsr::viz
