@@ -23,6 +23,9 @@ test -f prefix/share/doc/hsrviz/LICENSE
 grep -q "^Exec=hsrviz" prefix/share/applications/hsrviz.desktop
 grep -q '^\.TH HSRVIZ "1"' prefix/share/man/man1/hsrviz.1
 grep -q "render" prefix/share/man/man1/hsrviz.1  # the subcommands, from --help
+# ASCII only, the en dash of "Cohen–Sutherland" as groff's \[u2013] (man writes it as "-" in a C locale, not ???)
+if LC_ALL=C grep -q '[^ -~	]' prefix/share/man/man1/hsrviz.1; then echo "the man page is not ASCII"; exit 1; fi
+grep -qF 'Cohen\[u2013]Sutherland' prefix/share/man/man1/hsrviz.1
 
 # The installation moved elsewhere still finds its own lessons (not the source tree's)
 mv prefix moved
