@@ -22,7 +22,6 @@
 #include <vector>
 
 #include "capture.h"
-#include "cli/commands.h"
 #include "state/output_folder.h"
 #include "frame_panels.h"
 #include "gif_writer.h"

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli/commands.h"
 #include "state/output_folder.h"
-#include "cli/png_io.h"
+#include "state/trace_file.h"
+#include "state/png_io.h"
 #include "render/gl.h"
 #include "scene/save_scene.h"
 

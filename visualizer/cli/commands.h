@@ -6,16 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "state/trace_file.h"  // run_trace: `hsrviz trace`
+
 namespace hsr::viz {
-
-struct TraceOptions {
-    std::string input;                     // a lesson or a scene file
-    std::string out;                       // the JSON Lines file
-    std::optional<std::string> algorithm;  // overrides the lesson's
-};
-
-// Runs the machine to completion, writes the trace, prints the event count and the trace hash. Exit code.
-int run_trace(const TraceOptions& o);
 
 // --lesson-list: the shipped lessons, one line each (file, difficulty, algorithm, title); exit code.
 int print_lesson_list();

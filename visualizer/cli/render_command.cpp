@@ -15,7 +15,7 @@
 
 #include "scene/input_file.h"
 #include "analysis/painters.h"
-#include "cli/png_io.h"
+#include "state/png_io.h"
 #include "state/arguments.h"
 #include "state/memory_budget.h"
 #include "raster/image.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "cli/png_io.h"
+#include "state/png_io.h"
 
 #include <cstdio>
 #include <vector>
