@@ -13,6 +13,7 @@
 #include <imgui_impl_sdl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -138,6 +139,12 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, 0, px(layout.width), px(layout.height));
 }
 
+// SDL's offscreen driver: no display paces the frames (the window finishes each frame's GL work itself).
+bool offscreen_driver() {
+    const char* driver = SDL_GetCurrentVideoDriver();
+    return driver && std::string(driver) == "offscreen";
+}
+
 // A frame drawn from inside long work (the meter's teller, five times a second once it has lasted 0.3 s): the
 // progress box over an empty view. The input is only looked at, not taken: Esc stops the work, closing the window
 // stops it and quits, and every event stays queued for the frame after the work (a key pressed meanwhile is not
@@ -151,7 +158,7 @@ void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const Ap
     SDL_Event e;
     if (next_key < o.keys.size() && o.keys[next_key] == "Escape" && key_event("Escape", e)) SDL_PushEvent(&e), ++next_key;
     SDL_PumpEvents();
-    std::vector<SDL_Event> keys_down(64);
+    std::array<SDL_Event, 64> keys_down;
     const int n = SDL_PeepEvents(keys_down.data(), int(keys_down.size()), SDL_PEEKEVENT, SDL_KEYDOWN, SDL_KEYDOWN);
     for (int k = 0; k < n; ++k)
         if (keys_down[std::size_t(k)].key.keysym.sym == SDLK_ESCAPE) lp.stopped_by = "Esc", lp.stop_work = true;
@@ -167,7 +174,7 @@ void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const Ap
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     SDL_GL_SwapWindow(w.window);
-    if (std::string(SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "") == "offscreen") glFinish();
+    if (offscreen_driver()) glFinish();
 }
 
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
@@ -243,7 +250,7 @@ int run_app(const AppOptions& o) {
         std::uint64_t awake_until = SDL_GetTicks64() + 1000;  // ms: until when frames are drawn without waiting for input
         std::vector<double> frame_ms;  // --frame-log
         std::uint64_t frame_start = SDL_GetPerformanceCounter();
-        const bool offscreen = SDL_GetCurrentVideoDriver() && std::string(SDL_GetCurrentVideoDriver()) == "offscreen";
+        const bool offscreen = offscreen_driver();
         while (running && !quit) {
             // Input: scripted keys and gestures first (through the same queue), then every event
             UiActions actions;

@@ -31,7 +31,6 @@ public:
 
 private:
     algo::WorkMeter* outer_;
-    double outer_steps_;
 };
 
 }  // namespace hsr::viz
