@@ -9,8 +9,7 @@
 
 #include <SDL.h>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
-#include <imgui_impl_sdl.h>
+#include "imgui_backends.h"
 
 #include <algorithm>
 #include <array>

@@ -2,8 +2,7 @@
 #include "window.h"
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
-#include <imgui_impl_sdl.h>
+#include "imgui_backends.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -61,9 +61,9 @@ TEST_CASE("clipping: double within 1e-14 of the exact answer, float about 1e-7 o
     const auto rows = analysis::measure_clipping(quick);
     for (const char* algorithm : {"cohen_sutherland", "liang_barsky", "sutherland_hodgman"}) {
         INFO(algorithm);
-        const Measurement& machine = row(rows, std::string(algorithm) + " machine (double)");
-        const Measurement& dbl = row(rows, std::string(algorithm) + " straight-line (double)");
-        const Measurement& flt = row(rows, std::string(algorithm) + " straight-line (float)");
+        const Measurement machine = row(rows, std::string(algorithm) + " machine (double)");
+        const Measurement dbl = row(rows, std::string(algorithm) + " straight-line (double)");
+        const Measurement flt = row(rows, std::string(algorithm) + " straight-line (float)");
         CHECK(machine.error < 1e-14);
         CHECK(machine.error > 0);  // the intersections round: an error of exactly 0 would mean nothing was measured
         CHECK(machine.wrong == 0);

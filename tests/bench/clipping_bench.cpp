@@ -52,7 +52,7 @@ void BM_ClipCost(benchmark::State& state) {
             events = 0;
             auto m = clip_scene(job, algorithm);
             for (const auto& e : m) events += 1 + 0 * e.index();
-            benchmark::DoNotOptimize(m.result());
+            benchmark::DoNotOptimize(&m.result());  // a pointer: Benchmark 1.8 deprecates const references
         });
         const double recorded = median_ms([&] {
             ClipPlayer player(clip_scene(job, algorithm), initial_view(job, algorithm));

@@ -78,7 +78,7 @@ void seek_benchmark(benchmark::State& state, const ClipJob& job, ClipAlgorithm a
             t = std::chrono::steady_clock::now();
             player.step_back();
             back_ms.push_back(ms_since(t));
-            benchmark::DoNotOptimize(player.view().active);
+            benchmark::DoNotOptimize(&player.view().active);
         }
         state.counters["events"] = double(n);
         state.counters["log_bytes_per_event"] = double(player.log().bytes()) / double(n);
@@ -107,7 +107,7 @@ void BM_DrainCohenSutherland(benchmark::State& state) {
     std::size_t i = 0;
     for (auto _ : state) {
         auto m = cohen_sutherland(segments[i++ % segments.size()]);
-        benchmark::DoNotOptimize(m.run_to_end());
+        benchmark::DoNotOptimize(&m.run_to_end());
     }
 }
 

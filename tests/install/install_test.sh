@@ -20,6 +20,8 @@ test -f prefix/share/hsrviz/assets/scenes/cs_segments.toml
 test -f prefix/share/applications/hsrviz.desktop
 test -f prefix/share/icons/hicolor/scalable/apps/hsrviz.svg
 test -f prefix/share/doc/hsrviz/LICENSE
+# the CMake package (headers, archive) only on request: tests/install/cmake_package_test.sh
+if [ -e prefix/include/hsrviz ] || [ -e prefix/lib/cmake/hsrviz ]; then echo "a plain install has the development files"; exit 1; fi
 grep -q "^Exec=hsrviz" prefix/share/applications/hsrviz.desktop
 grep -q '^\.TH HSRVIZ "1"' prefix/share/man/man1/hsrviz.1
 grep -q "render" prefix/share/man/man1/hsrviz.1  # the subcommands, from --help

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Projection of whole batches on every core: the same answers, in the same order, as polygon after polygon, and
 // the first bad polygon named as a loop in order would name it.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <limits>
 #include <random>

@@ -2,7 +2,7 @@
 // Snapping to sub-pixels must not make a convex polygon lose pixels: a short edge that turns the wrong way after
 // snapping, or vertices that fall together, would let one edge's half-plane cut a wedge off its neighbour. The
 // z-buffer (and the painters, which share the fill) must cover what the double-precision ray cast sees.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <cmath>
 

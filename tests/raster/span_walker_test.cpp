@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The span walker steps span_on_row's divisions by additions: its spans must be span_on_row's, row for row.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <cmath>
 #include <random>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // R's measurement on a thread of its own: rows come in once, a cancel ends it before its next timed run, an error is
 // an outcome (not a crash), and the progress grows while it runs.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <chrono>
 #include <stdexcept>

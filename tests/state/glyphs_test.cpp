@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The window's font ranges and the check that warns about characters outside them.
-#include <catch2/catch.hpp>
+#include "catch.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include "state/glyphs.h"
@@ -30,7 +31,8 @@ TEST_CASE("the font covers Latin, Latin Extended, Greek, Cyrillic and the maths 
 }
 
 TEST_CASE("hsrviz check warns about characters the font lacks, naming the field, and still passes the lesson", "[glyphs][lesson]") {
-    const std::string path = "glyph_lesson.toml";
+    // in the temporary folder, not wherever the test runs (a run from the source root once committed it)
+    const std::string path = (std::filesystem::temp_directory_path() / "hsrviz_glyph_lesson.toml").string();
     std::ofstream(path) << "title = \"Clipping 中\"\nalgorithm = \"cohen_sutherland\"\nscene = \"" HSR_SOURCE_DIR
                            "/assets/scenes/cs_segments.toml\"\nlanguages = [\"en\", \"ru\"]\n[[chapters]]\ntitle = \"x\"\n"
                            "step = 1\nnarration.en = \"fine\"\nnarration.ru = \"Отсечение ✓\"\n";
@@ -39,6 +41,7 @@ TEST_CASE("hsrviz check warns about characters the font lacks, naming the field,
     REQUIRE(r.warnings.size() == 2);
     CHECK(r.warnings[0] == path + ": title: U+4E2D 中 is not in the window's font (the window draws � instead)");
     CHECK(r.warnings[1] == path + ": chapters[0].narration.ru: U+2713 ✓ is not in the window's font (the window draws � instead)");
+    std::filesystem::remove(path);
 }
 
 TEST_CASE("no shipped lesson uses a character the font lacks", "[glyphs][lesson]") {

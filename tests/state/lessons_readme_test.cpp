@@ -2,7 +2,7 @@
 // lessons/README.md is the course's index for a teacher: it must say what the lesson files say. Every shipped lesson
 // has a row, and each row's algorithm, difficulty, prerequisites, chapter and question counts and languages are the
 // lesson's own (a lesson listed with chapters it lacks, or a question count that is out of date, fails here).
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <algorithm>
 #include <filesystem>

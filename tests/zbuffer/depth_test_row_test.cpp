@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The depth test along a row, pixel by pixel and four pixels at a time (AVX2, integer formats): the same buffers,
 // the same count, for every format, span length and alignment, with depths on rounding ties and beyond [0, 1].
-#include <catch2/catch.hpp>
+#include "catch.h"
 
 #include <random>
 
