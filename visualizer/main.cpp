@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "state/output_folder.h"
 #include "cli/render_command.h"
+#include "cli/practice_command.h"
 #include "cli/report_command.h"
 #include "state/arguments.h"
 #include "state/lesson.h"
@@ -67,6 +68,12 @@ int main(int argc, char** argv) {
     report_cmd->add_option("--out", report.out, "Folder to write report.md, report.csv and one chart per family into");
     report_cmd->add_flag("--quick", report.quick, "Small scenes and three repeats (about a minute)");
     report_cmd->add_option("--repeats", report.repeats, "Runs per measurement; the median is reported")->check(CLI::PositiveNumber);
+    hsr::viz::PracticeOptions practice;
+    CLI::App* practice_cmd = cli.add_subcommand("practice", "Print exercises of a topic as JSON Lines: the same seed, the same exercises");
+    practice_cmd->add_option("topic", practice.topic, "Topic (cohen_sutherland, liang_barsky, sutherland_hodgman, backface, …; 'list' lists them)")->required();
+    practice_cmd->add_option("--seed", practice.seed, "Series of exercises (a teacher hands out its number)");
+    practice_cmd->add_option("--count", practice.count, "How many exercises")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+    practice_cmd->add_option("--level", practice.level, "1 easy, 2 medium, 3 hard (close to degenerate)")->check(CLI::Range(1, 3));
     cli.set_version_flag("--version", "hsrviz " HSR_VERSION);
     try {
         cli.parse(argc, argv);
@@ -83,6 +90,7 @@ int main(int argc, char** argv) {
     if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());
     if (*render_cmd) return hsr::viz::run_render(render);
     if (*report_cmd) return hsr::viz::run_report(report);
+    if (*practice_cmd) return hsr::viz::run_practice(practice);
 
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();

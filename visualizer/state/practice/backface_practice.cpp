@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// Practice for back-face culling: is a triangle front- or back-facing from an eye (by the view-vector test or the
+// plane-equation test of the notes), and how far is the eye from its plane (N · eye + D with N of unit length)?
+// Every answer is the FaceTested event of the machine run on the exercise's triangle and eye.
+#include <cmath>
+#include <cstdio>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "culling/backface.h"
+#include "state/practice/practice.h"
+#include "state/practice/practice_random.h"
+
+namespace hsr::viz::practice {
+namespace {
+
+using algo::Vec3;
+
+std::string point_text(const Vec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%g, %g, %g)", p.x, p.y, p.z);
+    std::string t = text;
+    for (std::size_t at = t.find('-'); at != std::string::npos; at = t.find('-', at)) t.replace(at, 1, "−");
+    return t;
+}
+nlohmann::json numbers(const Vec3& p) { return nlohmann::json::array({p.x, p.y, p.z}); }
+
+Vec3 draw_corner(Dice& d, Level l) {
+    const double step = l == Level::easy ? 1 : 0.5;
+    return {d.grid(-3, 3, 1) * step, d.grid(-3, 3, 1) * step, d.grid(-3, 3, 1) * step};
+}
+
+struct Drawn {
+    Vec3 a, b, c, eye;
+};
+
+// A triangle with room to see its winding, and an eye on a grid (easy, medium) or a few hundredths from the
+// triangle's plane (hard: the sign is all that is left to read).
+std::optional<Drawn> draw(Dice& d, Level l) {
+    Drawn t{draw_corner(d, l), draw_corner(d, l), draw_corner(d, l), {}};
+    const Vec3 n = glm::cross(t.b - t.a, t.c - t.a);
+    if (glm::length(n) < 0.5) return std::nullopt;
+    if (l == Level::hard) {
+        const double u = d.grid(0, 10, 1) / 10, v = d.grid(0, 10, 1) / 10, off = d.grid(1, 9, 1) / 100 * (d.coin() ? 1 : -1);
+        t.eye = t.a + u * (t.b - t.a) + v * (t.c - t.a) + off * glm::normalize(n);
+        t.eye = glm::round(t.eye * 1000.0) / 1000.0;  // three decimals, as the question prints it
+    } else {
+        const double step = l == Level::easy ? 1 : 0.5;
+        t.eye = {d.grid(-10, 10, 1) * step, d.grid(-10, 10, 1) * step, d.grid(-10, 10, 1) * step};
+    }
+    if (std::abs(glm::dot(t.eye - t.a, glm::normalize(n))) < 0.005) return std::nullopt;  // edge-on, or nearly
+    if (glm::length(t.eye - (t.a + t.b + t.c) / 3.0) < 0.5) return std::nullopt;
+    return t;
+}
+
+// The triangle's test event: the machine's only FaceTested for face 1.
+std::optional<std::pair<algo::FaceTested, std::string>> run(const Drawn& t, algo::BackfaceTest test) {
+    algo::Camera camera;
+    camera.eye = t.eye;
+    camera.target = (t.a + t.b + t.c) / 3.0;
+    auto machine = algo::cull_back_faces({algo::Face{1, {t.a, t.b, t.c}}}, camera, test);
+    while (const algo::CullEvent* e = machine.next())
+        if (const auto* f = std::get_if<algo::FaceTested>(e)) return std::pair{*f, algo::describe(*e)};
+    return std::nullopt;
+}
+
+std::string triangle_text(const Drawn& t) {
+    return "A = " + point_text(t.a) + ", B = " + point_text(t.b) + ", C = " + point_text(t.c);
+}
+nlohmann::json given(const Drawn& t, const char* kind) {
+    return {{"kind", kind}, {"a", numbers(t.a)}, {"b", numbers(t.b)}, {"c", numbers(t.c)}, {"eye", numbers(t.eye)}};
+}
+
+const std::vector<std::string> facing_choices = {"front-facing: kept", "back-facing: culled"};
+
+std::optional<Exercise> facing_exercise(Dice& d, Level l) {
+    const auto t = draw(d, l);
+    if (!t) return std::nullopt;
+    const algo::BackfaceTest test = d.coin() ? algo::BackfaceTest::view_vector : algo::BackfaceTest::plane_equation;
+    const auto tested = run(*t, test);
+    if (!tested || tested->first.facing == algo::Facing::edge_on) return std::nullopt;
+    Exercise x;
+    x.question = "Back-face culling by the " + std::string(algo::to_string(test)) + " test: the eye is at " +
+                 point_text(t->eye) + "; the triangle " + triangle_text(*t) +
+                 " is wound counter-clockwise seen from its front. Is it front-facing or back-facing?";
+    x.choices = facing_choices;
+    x.answer = tested->first.facing == algo::Facing::front ? facing_choices[0] : facing_choices[1];
+    x.deciding = tested->second;
+    x.deciding_step = 0;
+    x.given = given(*t, "facing");
+    return x;
+}
+
+std::optional<Exercise> distance_exercise(Dice& d, Level l) {
+    const auto t = draw(d, l);
+    if (!t) return std::nullopt;
+    const auto tested = run(*t, algo::BackfaceTest::plane_equation);
+    if (!tested) return std::nullopt;
+    Exercise x;
+    x.question = "Back-face culling by the plane equation: the triangle " + triangle_text(*t) +
+                 " is wound counter-clockwise seen from its front, and N = (B − A) × (C − A) scaled to unit length, "
+                 "D = −N · A. The eye is at " + point_text(t->eye) +
+                 ". What is N · eye + D (its signed distance from the plane)? Two decimals are enough.";
+    x.answer = decimal_text(tested->first.value, 4);
+    x.tolerance = 0.005;
+    x.deciding = tested->second;
+    x.deciding_step = 0;
+    x.given = given(*t, "distance");
+    return x;
+}
+
+}  // namespace
+
+std::vector<Topic> backface_topics() {
+    return {{"backface", "Back-face culling: facing and the plane equation", [](Draw draw) {
+                 Dice d(draw.seed);
+                 return d.coin() ? facing_exercise(d, draw.level) : distance_exercise(d, draw.level);
+             }}};
+}
+
+}  // namespace hsr::viz::practice

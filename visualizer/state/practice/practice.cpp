@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "state/practice/practice.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "state/practice/practice_random.h"
+
+namespace hsr::viz::practice {
+
+std::span<const Topic> topics() {
+    static const std::vector<Topic> all = [] {
+        std::vector<Topic> t;
+        for (auto family : {clipping_topics, backface_topics})
+            for (Topic& topic : family()) t.push_back(std::move(topic));
+        return t;
+    }();
+    return all;
+}
+
+const Topic* find_topic(std::string_view id) {
+    for (const Topic& t : topics())
+        if (t.id == id) return &t;
+    return nullptr;
+}
+
+Exercise exercise(const Topic& topic, std::uint64_t series, std::uint64_t index, Level level) {
+    // A drawn scene may be degenerate (a point on a plane, a triangle with no area) or its question empty (no
+    // stage that cuts): draw again from the next seed. The makers reject a few draws in ten; 200 in a row is a bug.
+    constexpr int redraws = 200;
+    std::uint64_t seed = exercise_seed(series, index);
+    for (int attempt = 0; attempt < redraws; ++attempt) {
+        if (std::optional<Exercise> e = topic.make({seed, level})) {
+            e->topic = std::string(topic.id);
+            e->series = series;
+            e->index = index;
+            e->level = level;
+            return *e;
+        }
+        seed = Dice(seed).next();
+    }
+    throw std::runtime_error("practice " + std::string(topic.id) + ": no exercise after " + std::to_string(redraws) +
+                             " draws (series " + std::to_string(series) + ", exercise " + std::to_string(index) + ")");
+}
+
+namespace {
+std::string_view trimmed(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+std::optional<double> number(std::string_view s) {
+    std::string text(s);
+    for (char& c : text)
+        if (c == ',') c = '.';  // 0,25 as German and many other languages write it
+    if (text.rfind("−", 0) == 0) text.replace(0, std::string("−").size(), "-");
+    double v = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+}  // namespace
+
+bool grade(const Exercise& e, std::string_view reply) {
+    reply = trimmed(reply);
+    if (e.choices.empty()) {
+        const auto got = number(reply), want = number(e.answer);
+        return got && want && std::abs(*got - *want) <= e.tolerance + 1e-9;
+    }
+    // a reply that is a choice is that choice (an outcode such as 000001 is no choice's number)
+    if (std::find(e.choices.begin(), e.choices.end(), reply) != e.choices.end()) return reply == e.answer;
+    int k = 0;
+    const auto [end, error] = std::from_chars(reply.data(), reply.data() + reply.size(), k);
+    return error == std::errc() && end == reply.data() + reply.size() && k >= 1 && std::size_t(k) <= e.choices.size() &&
+           e.choices[std::size_t(k - 1)] == e.answer;
+}
+
+std::string decimal_text(double v, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    std::string t = text;
+    if (t.find('.') != std::string::npos) {
+        while (t.back() == '0') t.pop_back();
+        if (t.back() == '.') t.pop_back();
+    }
+    return t == "-0" ? "0" : t;
+}
+
+nlohmann::ordered_json to_json(const Exercise& e) {
+    nlohmann::ordered_json j;
+    j["topic"] = e.topic;
+    j["series"] = e.series;
+    j["exercise"] = e.index;
+    j["level"] = int(e.level);
+    j["question"] = e.question;
+    if (!e.choices.empty()) j["choices"] = e.choices;
+    j["answer"] = e.answer;
+    if (e.choices.empty()) j["tolerance"] = e.tolerance;
+    j["deciding_step"] = e.deciding_step;
+    j["deciding"] = e.deciding;
+    j["given"] = e.given;
+    return j;
+}
+
+}  // namespace hsr::viz::practice

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// Practice that never runs out: for every topic an endless series of exercises, each a small random scene drawn
+// from a seed, run through the very machine the lessons animate, and a question whose answer is one of that run's
+// events. A teacher hands out "series 1234"; every student, the window and `hsrviz practice` see the same exercises.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace hsr::viz::practice {
+
+enum class Level : std::uint8_t { easy = 1, medium = 2, hard = 3 };  // hard: close to degenerate, never on it
+
+struct Exercise {
+    std::string topic;
+    std::uint64_t series = 0;
+    std::uint64_t index = 0;            // exercise `index` of the series
+    Level level = Level::easy;
+    std::string question;
+    std::vector<std::string> choices;   // the answer is one of them; empty when the answer is a number
+    std::string answer;                 // a choice, or the number as the machine computed it ("0.25")
+    double tolerance = 0;               // how far a typed number may be from the answer and still be right
+    std::string deciding;               // the sentence of the machine's event that decides the answer
+    std::size_t deciding_step = 0;      // that event's step in the run
+    nlohmann::json given;               // the question's data (points, planes, …) as numbers, for answer sheets and tests
+};
+
+// A topic's exercise maker: the exercise for one seed, or nothing when the scene drawn was degenerate or the question
+// it asks is unanswerable (the series then draws again, a bounded number of times).
+struct Draw {
+    std::uint64_t seed;
+    Level level;
+};
+using MakeExercise = std::function<std::optional<Exercise>(Draw)>;
+
+struct Topic {
+    std::string_view id;      // as `hsrviz practice` names it
+    std::string_view title;
+    MakeExercise make;
+};
+
+std::span<const Topic> topics();
+const Topic* find_topic(std::string_view id);
+
+// Exercise `index` of series `series`. Throws std::runtime_error if every redraw was degenerate (a bug: the makers
+// reject rarely).
+Exercise exercise(const Topic& topic, std::uint64_t series, std::uint64_t index, Level level);
+
+// Is this reply right? A choice must be given as written (or by its number, 1 …); a number within the tolerance.
+bool grade(const Exercise& e, std::string_view reply);
+
+// A number as an answer: at most `digits` decimals, no trailing zeros ("0.4839", "0.8", "-3").
+std::string decimal_text(double v, int digits);
+
+// One line of `hsrviz practice`'s JSON Lines.
+nlohmann::ordered_json to_json(const Exercise& e);
+
+// Each family's topics, in their own files (clip_practice.cpp, backface_practice.cpp, …).
+std::vector<Topic> clipping_topics();
+std::vector<Topic> backface_topics();
+
+}  // namespace hsr::viz::practice
