@@ -67,6 +67,11 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
         case SDLK_m: a.toggle_menu = true; break;
+        case SDLK_x: a.toggle_practice = true; break;
+        case SDLK_PERIOD:
+        case SDLK_KP_PERIOD: a.typed = '.'; break;
+        case SDLK_COMMA: a.typed = ','; break;
+        case SDLK_BACKSPACE: a.typed = '\b'; break;
         case SDLK_UP: a.up_down = -1, a.forward = +1; break;
         case SDLK_DOWN: a.up_down = +1, a.forward = -1; break;
         case SDLK_RETURN:
@@ -79,6 +84,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_MINUS:
         case SDLK_KP_MINUS:
             if (e.key.keysym.mod & KMOD_CTRL) a.scale_step = -1;
+            else a.typed = '-';  // a practice answer's sign
             break;
         case SDLK_0:
             if (e.key.keysym.mod & KMOD_CTRL) a.scale_reset = true;

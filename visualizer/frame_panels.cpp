@@ -7,6 +7,7 @@
 #include "panels/chapter_panels.h"
 #include "panels/keys_panel.h"
 #include "panels/lesson_menu.h"
+#include "panels/practice_panel.h"
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "panels/toast_panel.h"
@@ -58,7 +59,8 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
     if (s.lesson().chapters.empty()) lesson_panel(s, detail, layout);
     else chapter_lesson_panel(s, lp.classroom, detail, layout);
     pseudocode_panel(s, layout);
-    question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
+    if (lp.practice.open && lp.path == lp.practice_scene) practice_panel(lp.practice, layout, actions);
+    else question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
     if (lp.show_report)
         report_panel(lp.report, lp.measuring.running() ? std::optional(lp.measuring.fraction()) : std::nullopt, layout, actions);
     if (lp.show_keys) keys_panel(layout);

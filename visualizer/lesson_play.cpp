@@ -126,6 +126,79 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
     tell("playing " + path + " with " + algorithm.value_or("the lesson's algorithm"));
 }
 
+void Lessonplay::toggle_practice(const AppOptions& o) {
+    practice.open = !practice.open;
+    if (practice.open) {
+        show_presets = show_menu = show_report = false;
+        if (!practice.current && session())  // the first time: the topic of the lesson playing, if it has one
+            if (const auto topic = practice::PracticeMode::topic_of(session()->lesson().algorithm.id))
+                practice.choose(*topic, practice.level(), practice.series());
+        if (!practice.waiting()) return play_exercise(o);
+        path = practice_scene, algorithm = practice.current->algorithm;  // the exercise left unanswered
+    } else {
+        path = home, algorithm = home == o.lesson_path ? o.algorithm : std::nullopt;
+    }
+    place_before_error.reset();
+    family.reset();
+    load(o);
+}
+
+void Lessonplay::play_exercise(const AppOptions& o) {
+    const practice::Exercise* e = nullptr;
+    try {
+        e = &practice.next();
+    } catch (const std::exception& failure) {  // a maker that never found a scene: a bug, said, not a crash
+        tell(std::string("practice: ") + failure.what());
+        return;
+    }
+    const std::string folder = output_folder("hsrviz-export");
+    const std::string file = folder + "/practice-" + e->topic + "-series" + std::to_string(e->series) + "-" +
+                             std::to_string(e->index + 1) + ".toml";
+    if (!make_folder(folder) || !(std::ofstream(file) << algo::scene_toml(e->scene) << std::flush)) {
+        tell("practice: could not write " + file);
+        return;
+    }
+    practice_scene = path = file;
+    algorithm = e->algorithm;
+    place_before_error.reset();
+    family.reset();  // the exercise starts at its first step
+    classroom = Classroom{};
+    load(o);
+    std::printf("hsrviz: practice %s, series %llu, exercise %llu: %s\n", e->topic.c_str(), (unsigned long long)e->series,
+                (unsigned long long)(e->index + 1), e->question.c_str());
+}
+
+bool Lessonplay::practice_input(const UiActions& a, const AppOptions& o) {
+    if (a.practice_choice) {
+        practice.choose(a.practice_choice->topic, practice::Level(a.practice_choice->level), a.practice_choice->series);
+        play_exercise(o);
+        return true;
+    }
+    if (!practice.waiting()) {
+        if (a.practice_next || a.enter) {
+            play_exercise(o);
+            return true;
+        }
+        return false;
+    }
+    const practice::Exercise& e = *practice.current;
+    std::optional<std::string> reply = a.answer;
+    if (a.digit) {
+        if (e.choices.empty()) practice.type(char('0' + *a.digit));
+        else if (*a.digit >= 1 && std::size_t(*a.digit) <= e.choices.size()) reply = e.choices[std::size_t(*a.digit - 1)];
+    }
+    if (a.typed) practice.type(*a.typed);
+    if (a.enter && e.choices.empty() && !practice.typed.empty()) reply = practice.typed;
+    if (reply) {
+        const bool right = practice.answer(*reply).value_or(false);
+        std::printf("hsrviz: practice answered \"%s\": %s, the machine says \"%s\" at step %zu\n", reply->c_str(),
+                    right ? "right" : "wrong", e.answer.c_str(), e.deciding_step + 1);
+        if (session() && path == practice_scene) session()->seek(e.deciding_step + 1);  // the deciding event, shown
+        playback.playing = false;
+    }
+    return a.digit || a.typed || a.enter || a.answer;
+}
+
 void Lessonplay::switch_lesson(int step, const AppOptions& o) {
     const std::vector<std::string> lessons = shipped_lessons();
     if (lessons.empty()) return;
@@ -138,6 +211,7 @@ void Lessonplay::switch_lesson(int step, const AppOptions& o) {
 
 void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     home = path = lesson, algorithm.reset();
+    practice.open = false;  // its exercise stays, unanswered, for X to come back to
     place_before_error.reset();
     family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
     classroom = Classroom{};
@@ -223,6 +297,8 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         if (a.close_overlays) show_menu = false;
         return;
     }
+    if (a.toggle_practice) toggle_practice(o);
+    if (practice.open && practice_input(a, o)) return;  // its keys are its own while it shows
     if (a.toggle_presets) show_presets = !show_presets;
     if (a.toggle_report) toggle_report(data_dir() + "/assets/scenes");
     if (a.cancel_measurement) cancel_report();
@@ -308,6 +384,12 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
         if (questions_hold && p.cursor() > cursor)
             if (const auto hold = classroom.hold(cursor); hold && p.cursor() > *hold) {
+                p.seek(*hold);
+                playback.playing = false;
+            }
+        // nor, in practice, the event that decides the exercise before it is answered
+        if (path == practice_scene)
+            if (const auto hold = practice.hold(); hold && p.cursor() > *hold) {
                 p.seek(*hold);
                 playback.playing = false;
             }

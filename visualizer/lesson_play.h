@@ -22,6 +22,7 @@
 #include "state/file_watch.h"
 #include "state/presets.h"
 #include "state/background_measurement.h"
+#include "state/practice/practice_mode.h"
 
 namespace hsr::viz {
 
@@ -56,6 +57,8 @@ struct Lessonplay {
     BackgroundMeasurement measuring;      // R's measurement while it runs (a progress bar; closing R cancels it)
     std::vector<Preset> presets;          // of the lesson's algorithm
     std::uint32_t next_seed = 1;          // of the next random scene
+    practice::PracticeMode practice;      // X: exercises the machine grades, each played in the view
+    std::string practice_scene;           // the file of the exercise playing (held before its deciding event)
     // Long work (a lesson opening on a huge scene, End on a long run, an edit that reruns a big machine): the window
     // shows it while it lasts and stops it on Esc (or when it is closed), by setting stop_work and saying why.
     algo::WorkMeter::Teller show_work;
@@ -79,6 +82,13 @@ struct Lessonplay {
     void switch_lesson(int step, const AppOptions& o);
     // A lesson chosen in the menu, from its start.
     void open_lesson(const std::string& lesson, const AppOptions& o);
+    // X: practice opens on the lesson's topic and plays an exercise, or closes, back to the lesson.
+    void toggle_practice(const AppOptions& o);
+    // Plays practice's next exercise: its scene, written to the output folder, with its algorithm, from step 0.
+    void play_exercise(const AppOptions& o);
+    // Practice's keys and clicks while its box shows (choices, the number typed, Enter, another series); true when
+    // they were practice's.
+    bool practice_input(const UiActions& a, const AppOptions& o);
     // The lesson after the one playing in the course, if there is one.
     const CourseLesson* next_in_course() const;
     // S: the scene as edited, to hsrviz-export/NAME-edited.toml

@@ -425,6 +425,37 @@ case "$case" in
     test "$rc" -ne 137
     grep -q "opening huge.toml was stopped (the window closing)" out.txt
     test "$SECONDS" -lt 120 ;;
+  practice)  # X: an exercise of the lesson's topic, held before its deciding event until answered; the command line's series
+    lesson="$src/lessons/01_cohen_sutherland.toml"
+    want=$("$hsrviz" practice cohen_sutherland --seed 1 --count 1 | sed 's/.*"deciding_step":\([0-9]*\).*/\1/')
+    at() { echo "$1" | sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p'; }
+    out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,End,End)
+    echo "$out"
+    echo "$out" | grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 1: "
+    test -f hsrviz-export/practice-cohen_sutherland-series1-1.toml
+    test "$(at "$out")" -eq "$want"
+    # answered with key 1: right or wrong, the player shows the deciding event
+    out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1)
+    echo "$out" | grep -q '^hsrviz: practice answered ".*": [a-z]*, the machine says'
+    test "$(at "$out")" -eq $((want + 1))
+    # Enter: the series' next exercise
+    out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1,Return)
+    echo "$out" | grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 2: "
+    # a number typed key by key, Enter answers (Liang–Barsky's lesson practises its own topic)
+    out=$("$hsrviz" "$src/lessons/02_liang_barsky.toml" --screenshot p.png --frames 6 --keys X,0,.,5,Return)
+    echo "$out" | grep -q '^hsrviz: practice answered "0.5": '
+    # the command line: the same series, the same bytes; another series, others; usage errors exit 2
+    "$hsrviz" practice sutherland_hodgman --seed 1234 --count 25 --level 3 > a.jsonl
+    "$hsrviz" practice sutherland_hodgman --seed 1234 --count 25 --level 3 > b.jsonl
+    cmp a.jsonl b.jsonl
+    test "$(wc -l < a.jsonl)" -eq 25
+    "$hsrviz" practice sutherland_hodgman --seed 1235 --count 25 --level 3 > c.jsonl
+    if cmp -s a.jsonl c.jsonl; then echo "another series gave the same exercises"; exit 1; fi
+    rc=0; "$hsrviz" practice nothing 2> err.txt || rc=$?
+    test "$rc" -eq 2
+    grep -q liang_barsky err.txt
+    rc=0; "$hsrviz" practice backface --level 4 2> err.txt || rc=$?
+    test "$rc" -eq 2 ;;
   *) echo "unknown case $case"; exit 2 ;;
 esac
 echo "gui_test $case: ok"

@@ -5,13 +5,20 @@
 #include <gmpxx.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <set>
 
 #include "analysis/exact_clip.h"
 #include "catch.h"
 #include "core/numeric.h"
+#include "scene/save_scene.h"
+#include "state/lesson.h"
 #include "state/practice/practice.h"
+#include "state/practice/practice_mode.h"
+#include "state/trace.h"
 
 namespace {
 
@@ -208,4 +215,72 @@ TEST_CASE("practice grading: numbers with a comma or a minus sign, choices by nu
     CHECK_FALSE(grade(choice, "3"));
     CHECK_FALSE(grade(choice, "0"));
     CHECK_FALSE(grade(choice, "back"));
+}
+
+TEST_CASE("practice: the exercise's scene, saved and played as the window plays it, decides at the step it names", "[practice]") {
+    namespace p = hsr::viz::practice;
+    const std::string path = (std::filesystem::temp_directory_path() / "hsrviz_practice_scene.toml").string();
+    for (const p::Topic& topic : p::topics())
+        for (std::uint64_t i = 0; i < 12; ++i) {
+            const Exercise e = p::exercise(topic, 77, i, Level(1 + i % 3));
+            INFO(topic.id << " exercise " << i << ": " << e.question);
+            std::ofstream(path) << hsr::algo::scene_toml(e.scene);
+            const hsr::viz::Lesson lesson = hsr::viz::load_lesson(path, e.algorithm);
+            std::ostringstream trace;
+            hsr::viz::trace_lesson(lesson, &trace);
+            std::istringstream lines(trace.str());
+            std::string line;
+            for (std::size_t step = 0; step <= e.deciding_step; ++step) REQUIRE(std::getline(lines, line));
+            const nlohmann::json event = nlohmann::json::parse(line);
+            CHECK(event["step"] == e.deciding_step);
+            CHECK(event["text"] == e.deciding);
+        }
+    std::filesystem::remove(path);
+}
+
+TEST_CASE("the window's practice: a series from its first exercise, held before the deciding step, scored per topic", "[practice]") {
+    namespace p = hsr::viz::practice;
+    p::PracticeMode mode;
+    const auto backface = p::PracticeMode::topic_of("backface_plane_equation");
+    REQUIRE(backface);
+    CHECK(p::topics()[*backface].id == "backface");
+    CHECK(p::PracticeMode::topic_of("liang_barsky") != p::PracticeMode::topic_of("cohen_sutherland"));
+    CHECK_FALSE(p::PracticeMode::topic_of("depth_sort_nothing"));
+    CHECK_FALSE(mode.answer("1"));  // nothing waits for an answer yet
+
+    // series 1234's first exercise is the command line's `--seed 1234`'s first
+    mode.choose(*backface, Level::medium, 1234);
+    const Exercise first = mode.next();
+    CHECK(p::to_json(first).dump() == p::to_json(p::exercise(p::topics()[*backface], 1234, 0, Level::medium)).dump());
+    CHECK(mode.waiting());
+    CHECK(mode.hold() == first.deciding_step);
+
+    // a wrong answer, then the right one to the next: the streak starts again
+    const std::string wrong = first.choices.empty() ? p::decimal_text(std::stod(first.answer) + 1, 4)
+                                                    : (first.choices[0] == first.answer ? first.choices[1] : first.choices[0]);
+    CHECK(mode.answer(wrong) == false);
+    CHECK_FALSE(mode.waiting());
+    CHECK_FALSE(mode.hold());
+    CHECK_FALSE(mode.answer(first.answer));  // answered once only
+    const Exercise second = mode.next();
+    CHECK(second.index == 1);
+    CHECK(mode.answer(second.answer) == true);
+    CHECK(mode.score().answered == 2);
+    CHECK(mode.score().right == 1);
+    CHECK(mode.score().streak == 1);
+    CHECK(mode.score().best_streak == 1);
+
+    // a number is typed key by key: digits, one sign at the front, a comma or a point, Backspace
+    mode.choose(*p::PracticeMode::topic_of("liang_barsky"), Level::easy, 5);
+    const Exercise t = mode.next();
+    REQUIRE(t.choices.empty());
+    for (char c : std::string("-0-,5x")) mode.type(c);
+    CHECK(mode.typed == "-0,5");
+    mode.type('\b');
+    mode.type('\b');
+    CHECK(mode.typed == "-0");
+    CHECK(mode.score().answered == 0);  // scores are per topic
+    // another series starts from its first exercise
+    mode.choose(mode.topic(), Level::easy, 5);
+    CHECK(mode.next().index == 0);
 }

@@ -13,6 +13,7 @@ void keys_panel(const PanelLayout& l) {
         {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
         {"PageDown  PageUp", "next / previous chapter"}, {"N  Shift+N", "next / previous lesson"}, {"1 … 9", "answer the open question"},
         {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
+        {"X", "practice: exercises the machine grades (1 … 9 or a typed number, Enter: next)"},
         {"R", "error against run time for this algorithm's family"},       {"V", "the other view: 3D, the camera's, the walk-through; in a 2D BSP plan, drive the eye with the arrows"},
         {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
         {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},

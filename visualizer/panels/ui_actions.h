@@ -64,6 +64,16 @@ struct UiActions {
     int up_down = 0;                                               // ↑ −1, ↓ +1 (the menu's highlight)
     int forward = 0, left = 0;  // ↑ +1 ↓ −1, ← +1 → −1: a screen's drive mode (2D BSP) takes them instead of the steps
     bool enter = false;                                            // Enter (opens the highlighted lesson)
+    // X: practice; a key for the number being typed ('.', ',', '-', '\b' for Backspace; digits come as `digit`)
+    bool toggle_practice = false;
+    std::optional<char> typed;
+    struct PracticeChoice {
+        std::size_t topic;
+        int level;
+        std::uint64_t series;
+    };
+    std::optional<PracticeChoice> practice_choice;                 // another topic, level or series in the practice box
+    bool practice_next = false;                                    // the practice box's Next exercise button
 };
 
 struct PlaybackState {

@@ -54,15 +54,34 @@ std::optional<Drawn> draw(Dice& d, Level l) {
     return t;
 }
 
-// The triangle's test event: the machine's only FaceTested for face 1.
-std::optional<std::pair<algo::FaceTested, std::string>> run(const Drawn& t, algo::BackfaceTest test) {
-    algo::Camera camera;
-    camera.eye = t.eye;
-    camera.target = (t.a + t.b + t.c) / 3.0;
-    auto machine = algo::cull_back_faces({algo::Face{1, {t.a, t.b, t.c}}}, camera, test);
-    while (const algo::CullEvent* e = machine.next())
-        if (const auto* f = std::get_if<algo::FaceTested>(e)) return std::pair{*f, algo::describe(*e)};
+// The exercise's scene as the window plays it: the triangle, and a camera at the eye looking at it.
+algo::Scene scene_of(const Drawn& t) {
+    algo::Scene scene;
+    scene.name = "a triangle and an eye";
+    scene.camera.eye = t.eye;
+    scene.camera.target = (t.a + t.b + t.c) / 3.0;
+    scene.camera.near = 0.1;
+    scene.camera.far = 100;
+    scene.polygons.push_back({1, {86, 180, 233}, {glm::dvec4(t.a, 1), glm::dvec4(t.b, 1), glm::dvec4(t.c, 1)}});
+    return scene;
+}
+
+struct Tested {
+    algo::FaceTested event;
+    std::string sentence;
+    std::size_t step;
+};
+
+// The triangle's test event in the machine the window plays on the scene: its only FaceTested.
+std::optional<Tested> run(const algo::Scene& scene, algo::BackfaceTest test) {
+    auto machine = algo::cull_back_faces(algo::faces_of(scene), scene.camera, test);
+    std::size_t step = 0;
+    for (const algo::CullEvent* e = machine.next(); e; e = machine.next(), ++step)
+        if (const auto* f = std::get_if<algo::FaceTested>(e)) return Tested{*f, algo::describe(*e), step};
     return std::nullopt;
+}
+std::string algorithm_id(algo::BackfaceTest test) {
+    return test == algo::BackfaceTest::view_vector ? "backface_view_vector" : "backface_plane_equation";
 }
 
 std::string triangle_text(const Drawn& t) {
@@ -78,42 +97,49 @@ std::optional<Exercise> facing_exercise(Dice& d, Level l) {
     const auto t = draw(d, l);
     if (!t) return std::nullopt;
     const algo::BackfaceTest test = d.coin() ? algo::BackfaceTest::view_vector : algo::BackfaceTest::plane_equation;
-    const auto tested = run(*t, test);
-    if (!tested || tested->first.facing == algo::Facing::edge_on) return std::nullopt;
+    algo::Scene scene = scene_of(*t);
+    const auto tested = run(scene, test);
+    if (!tested || tested->event.facing == algo::Facing::edge_on) return std::nullopt;
     Exercise x;
     x.question = "Back-face culling by the " + std::string(algo::to_string(test)) + " test: the eye is at " +
                  point_text(t->eye) + "; the triangle " + triangle_text(*t) +
                  " is wound counter-clockwise seen from its front. Is it front-facing or back-facing?";
     x.choices = facing_choices;
-    x.answer = tested->first.facing == algo::Facing::front ? facing_choices[0] : facing_choices[1];
-    x.deciding = tested->second;
-    x.deciding_step = 0;
+    x.answer = tested->event.facing == algo::Facing::front ? facing_choices[0] : facing_choices[1];
+    x.deciding = tested->sentence;
+    x.deciding_step = tested->step;
     x.given = given(*t, "facing");
+    x.scene = std::move(scene);
+    x.algorithm = algorithm_id(test);
     return x;
 }
 
 std::optional<Exercise> distance_exercise(Dice& d, Level l) {
     const auto t = draw(d, l);
     if (!t) return std::nullopt;
-    const auto tested = run(*t, algo::BackfaceTest::plane_equation);
+    algo::Scene scene = scene_of(*t);
+    const auto tested = run(scene, algo::BackfaceTest::plane_equation);
     if (!tested) return std::nullopt;
     Exercise x;
     x.question = "Back-face culling by the plane equation: the triangle " + triangle_text(*t) +
                  " is wound counter-clockwise seen from its front, and N = (B − A) × (C − A) scaled to unit length, "
                  "D = −N · A. The eye is at " + point_text(t->eye) +
                  ". What is N · eye + D (its signed distance from the plane)? Two decimals are enough.";
-    x.answer = decimal_text(tested->first.value, 4);
+    x.answer = decimal_text(tested->event.value, 4);
     x.tolerance = 0.005;
-    x.deciding = tested->second;
-    x.deciding_step = 0;
+    x.deciding = tested->sentence;
+    x.deciding_step = tested->step;
     x.given = given(*t, "distance");
+    x.scene = std::move(scene);
+    x.algorithm = algorithm_id(algo::BackfaceTest::plane_equation);
     return x;
 }
 
 }  // namespace
 
 std::vector<Topic> backface_topics() {
-    return {{"backface", "Back-face culling: facing and the plane equation", [](Draw draw) {
+    return {{"backface", "Back-face culling: facing and the plane equation",
+             {"backface_view_vector", "backface_plane_equation", "backface_screen_winding"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return d.coin() ? facing_exercise(d, draw.level) : distance_exercise(d, draw.level);
              }}};

@@ -11,9 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "clipping/clip_events.h"
-#include "clipping/cohen_sutherland.h"
-#include "clipping/liang_barsky.h"
-#include "clipping/sutherland_hodgman.h"
+#include "clipping/clip_scene.h"
 #include "state/practice/practice.h"
 #include "state/practice/practice_random.h"
 
@@ -45,6 +43,29 @@ bool near_a_plane(const Vec4& p, ClipSpace s) {
     for (int k = 0; k < algo::plane_count(s); ++k)
         if (std::abs(algo::boundary_value(p, algo::all_planes[std::size_t(k)], s)) < reading_margin) return true;
     return false;
+}
+
+// The exercise's scene, as the window plays it: the segment or polygon in clip space, seen in the cube setting by
+// an orthographic camera and in clip space by a perspective one (clip_job's rule).
+algo::Scene exercise_scene(ClipSpace s, std::vector<Vec4> primitive, const std::string& name) {
+    algo::Scene scene;
+    scene.name = name;
+    scene.coordinates = algo::Coordinates::clip;
+    scene.camera.projection = s == ClipSpace::cube ? algo::Projection::orthographic : algo::Projection::perspective;
+    scene.camera.near = 1;
+    scene.camera.far = s == ClipSpace::cube ? 3 : 5;  // the cube drawn as a cube (its box is 2 × 2 wide and high)
+    const algo::Color orange{230, 159, 0};
+    if (primitive.size() == 2) scene.segments.push_back({1, orange, primitive[0], primitive[1]});
+    else scene.polygons.push_back({1, orange, std::move(primitive)});
+    return scene;
+}
+
+// The events of the machine the window plays on the scene: their index is the step a student sees.
+std::vector<ClipEvent> play(const algo::Scene& scene, algo::ClipAlgorithm algorithm) {
+    std::vector<ClipEvent> events;
+    auto machine = algo::clip_scene(algo::clip_job(scene), algorithm);
+    while (const ClipEvent* e = machine.next()) events.push_back(*e);
+    return events;
 }
 
 // One coordinate, for a point whose w is given: on a grid of halves (easy) or tenths (medium) between −2.5w and
@@ -99,9 +120,10 @@ std::optional<Exercise> outcode_exercise(Dice& d, Level l) {
     const Vec4 p1 = draw_point(d, l, s), p2 = draw_point(d, l, s);
     if (near_a_plane(p1, s) || near_a_plane(p2, s)) return std::nullopt;
     const algo::Endpoint asked = d.coin() ? algo::Endpoint::p1 : algo::Endpoint::p2;
-    auto machine = algo::cohen_sutherland({1, p1, p2}, {.space = s});
-    std::size_t step = 0;
-    for (const ClipEvent* e = machine.next(); e; e = machine.next(), ++step) {
+    algo::Scene scene = exercise_scene(s, {p1, p2}, "an outcode");
+    const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::cohen_sutherland);
+    for (std::size_t step = 0; step < events.size(); ++step) {
+        const ClipEvent* e = &events[step];
         const auto* o = std::get_if<algo::OutcodeComputed>(e);
         if (!o || o->round != 1 || o->endpoint != asked) continue;
         const std::string name = asked == algo::Endpoint::p1 ? "p1" : "p2";
@@ -113,6 +135,8 @@ std::optional<Exercise> outcode_exercise(Dice& d, Level l) {
         x.deciding = algo::describe(*e, s);
         x.deciding_step = step;
         x.given = {{"kind", "outcode"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"}, {"point", numbers(o->p)}};
+        x.scene = std::move(scene);
+        x.algorithm = "cohen_sutherland";
         return x;
     }
     return std::nullopt;
@@ -131,9 +155,10 @@ std::optional<Exercise> trivial_test_exercise(Dice& d, Level l) {
         p2[axis] = side * (std::abs(p2[axis]) + std::abs(p2.w) * 1.2);
     }
     if (near_a_plane(p1, s) || near_a_plane(p2, s)) return std::nullopt;
-    auto machine = algo::cohen_sutherland({1, p1, p2}, {.space = s});
-    std::size_t step = 0;
-    for (const ClipEvent* e = machine.next(); e; e = machine.next(), ++step) {
+    algo::Scene scene = exercise_scene(s, {p1, p2}, "the trivial tests");
+    const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::cohen_sutherland);
+    for (std::size_t step = 0; step < events.size(); ++step) {
+        const ClipEvent* e = &events[step];
         const auto* c = std::get_if<algo::CodesCompared>(e);
         if (!c) continue;
         Exercise x;
@@ -147,6 +172,8 @@ std::optional<Exercise> trivial_test_exercise(Dice& d, Level l) {
         x.deciding_step = step;
         x.given = {{"kind", "trivial_test"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                    {"p1", numbers(p1)}, {"p2", numbers(p2)}};
+        x.scene = std::move(scene);
+        x.algorithm = "cohen_sutherland";
         return x;
     }
     return std::nullopt;
@@ -156,19 +183,23 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     const ClipSpace s = space_for(l);
     const Vec4 p1 = draw_point(d, l, s), p2 = draw_point(d, l, s);
     if (near_a_plane(p1, s) || near_a_plane(p2, s)) return std::nullopt;
-    auto machine = algo::liang_barsky({1, p1, p2}, {.space = s});
-    std::size_t step = 0, steps[2] = {0, 0};
+    algo::Scene scene = exercise_scene(s, {p1, p2}, "where the visible part starts and ends");
+    const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::liang_barsky);
+    std::size_t steps[2] = {0, 0};
     std::optional<algo::ParameterUpdated> last[2];
     std::string sentence[2];
-    for (const ClipEvent* e = machine.next(); e; e = machine.next(), ++step)
-        if (const auto* u = std::get_if<algo::ParameterUpdated>(e)) {
+    bool clipped = false;
+    for (std::size_t step = 0; step < events.size(); ++step) {
+        // an update that changes nothing (a second plane through the same point) does not decide the answer
+        if (const auto* u = std::get_if<algo::ParameterUpdated>(&events[step]); u && u->after != u->before) {
             const std::size_t k = u->which == algo::Parameter::t_enter ? 0 : 1;
             last[k] = *u;
             steps[k] = step;
-            sentence[k] = algo::describe(*e, s);
+            sentence[k] = algo::describe(events[step], s);
         }
-    const algo::SegmentClip& clip = machine.result();
-    if (clip.outcome != algo::ClipOutcome::clipped) return std::nullopt;  // no visible part to ask about, or all of it
+        if (const auto* f = std::get_if<algo::SegmentFinished>(&events[step])) clipped = f->outcome == algo::ClipOutcome::clipped;
+    }
+    if (!clipped) return std::nullopt;  // no visible part to ask about, or all of it
     std::size_t k = d.coin() ? 0 : 1;
     if (!last[k]) k = 1 - k;
     const double t_enter = last[0] ? last[0]->after : 0.0, t_leave = last[1] ? last[1]->after : 1.0;
@@ -183,6 +214,8 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     x.deciding_step = steps[k];
     x.given = {{"kind", k == 0 ? "t_enter" : "t_leave"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                {"p1", numbers(p1)}, {"p2", numbers(p2)}};
+    x.scene = std::move(scene);
+    x.algorithm = "liang_barsky";
     return x;
 }
 
@@ -235,7 +268,8 @@ std::optional<Exercise> edge_case_exercise(Dice& d, Level l) {
     const ClipSpace s = space_for(l);
     const auto polygon = draw_polygon(d, l, s);
     if (!polygon) return std::nullopt;
-    auto machine = algo::sutherland_hodgman({1, *polygon}, {.space = s});
+    algo::Scene scene = exercise_scene(s, *polygon, "an edge's case");
+    const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::sutherland_hodgman);
     std::vector<Vec4> input = *polygon, output;
     struct Candidate {
         algo::EdgeClassified edge;
@@ -245,8 +279,8 @@ std::optional<Exercise> edge_case_exercise(Dice& d, Level l) {
     };
     std::vector<Candidate> cut_edges;  // edges of stages that cut something: in→in everywhere teaches nothing
     std::vector<Candidate> stage;
-    std::size_t step = 0;
-    for (const ClipEvent* e = machine.next(); e; e = machine.next(), ++step) {
+    for (std::size_t step = 0; step < events.size(); ++step) {
+        const ClipEvent* e = &events[step];
         if (std::get_if<algo::StageStarted>(e)) {
             output.clear();
             stage.clear();
@@ -275,6 +309,8 @@ std::optional<Exercise> edge_case_exercise(Dice& d, Level l) {
     x.deciding_step = c.step;
     x.given = {{"kind", "edge_case"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                {"plane", std::string(algo::plane_name(c.edge.plane))}, {"s", numbers(c.from)}, {"e", numbers(c.to)}};
+    x.scene = std::move(scene);
+    x.algorithm = "sutherland_hodgman";
     return x;
 }
 
@@ -282,7 +318,8 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     const ClipSpace s = space_for(l);
     const auto polygon = draw_polygon(d, l, s);
     if (!polygon) return std::nullopt;
-    auto machine = algo::sutherland_hodgman({1, *polygon}, {.space = s});
+    algo::Scene scene = exercise_scene(s, *polygon, "a stage's vertex count");
+    const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::sutherland_hodgman);
     struct Candidate {
         algo::StageFinished stage;
         std::size_t step;
@@ -290,11 +327,11 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     };
     std::vector<Candidate> changed;  // stages whose count differs from their input's
     std::uint32_t input = 0;
-    std::size_t step = 0;
     // A vertex on a plane (an earlier stage's intersection can land on it: the edge crosses z = −1 where y = 1)
     // is in or out by a rounding: the counts from that stage on are no question to ask.
     bool clear = true;
-    for (const ClipEvent* e = machine.next(); e && clear; e = machine.next(), ++step) {
+    for (std::size_t step = 0; step < events.size() && clear; ++step) {
+        const ClipEvent* e = &events[step];
         if (const auto* started = std::get_if<algo::StageStarted>(e)) input = started->input_vertices;
         if (const auto* c = std::get_if<algo::EdgeClassified>(e))
             clear = std::abs(c->bc_from) >= reading_margin && std::abs(c->bc_to) >= reading_margin;
@@ -313,6 +350,8 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     x.deciding_step = c.step;
     x.given = {{"kind", "stage_count"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                {"plane", std::string(algo::plane_name(c.stage.plane))}, {"polygon", polygon_numbers(*polygon)}};
+    x.scene = std::move(scene);
+    x.algorithm = "sutherland_hodgman";
     return x;
 }
 
@@ -328,13 +367,13 @@ MakeExercise either(std::optional<Exercise> (*a)(Dice&, Level), std::optional<Ex
 
 std::vector<Topic> clipping_topics() {
     return {
-        {"cohen_sutherland", "Cohen–Sutherland: outcodes and the trivial tests", either(outcode_exercise, trivial_test_exercise)},
-        {"liang_barsky", "Liang–Barsky: where the visible part starts and ends",
+        {"cohen_sutherland", "Cohen–Sutherland: outcodes and the trivial tests", {"cohen_sutherland"}, either(outcode_exercise, trivial_test_exercise)},
+        {"liang_barsky", "Liang–Barsky: where the visible part starts and ends", {"liang_barsky"},
          [](Draw draw) {
              Dice d(draw.seed);
              return parameter_exercise(d, draw.level);
          }},
-        {"sutherland_hodgman", "Sutherland–Hodgman: edge cases and vertex counts", either(edge_case_exercise, stage_count_exercise)},
+        {"sutherland_hodgman", "Sutherland–Hodgman: edge cases and vertex counts", {"sutherland_hodgman"}, either(edge_case_exercise, stage_count_exercise)},
     };
 }
 

@@ -99,6 +99,7 @@ nlohmann::ordered_json to_json(const Exercise& e) {
     if (!e.choices.empty()) j["choices"] = e.choices;
     j["answer"] = e.answer;
     if (e.choices.empty()) j["tolerance"] = e.tolerance;
+    j["algorithm"] = e.algorithm;
     j["deciding_step"] = e.deciding_step;
     j["deciding"] = e.deciding;
     j["given"] = e.given;

@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/scene.h"
+
 namespace hsr::viz::practice {
 
 enum class Level : std::uint8_t { easy = 1, medium = 2, hard = 3 };  // hard: close to degenerate, never on it
@@ -30,6 +32,8 @@ struct Exercise {
     std::string deciding;               // the sentence of the machine's event that decides the answer
     std::size_t deciding_step = 0;      // that event's step in the run
     nlohmann::json given;               // the question's data (points, planes, …) as numbers, for answer sheets and tests
+    algo::Scene scene;                  // what the window plays, with `algorithm` (a registry id): the deciding
+    std::string algorithm;              // event is its step `deciding_step`
 };
 
 // A topic's exercise maker: the exercise for one seed, or nothing when the scene drawn was degenerate or the question
@@ -43,6 +47,7 @@ using MakeExercise = std::function<std::optional<Exercise>(Draw)>;
 struct Topic {
     std::string_view id;      // as `hsrviz practice` names it
     std::string_view title;
+    std::vector<std::string_view> algorithms;  // whose lessons practise this topic (registry ids)
     MakeExercise make;
 };
 
