@@ -7,11 +7,16 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "bsp/bsp_events.h"
+#include "registry.h"
 #include "state/lesson.h"
 
 using hsr::viz::Lesson;
@@ -68,4 +73,26 @@ TEST_CASE("lessons/README.md lists every lesson as its file says it is", "[lesso
         CHECK(row[6] == std::to_string(questions));
         CHECK(row[7] == joined(l.languages, ", "));
     }
+}
+
+// A lesson that tells the student to try `--algorithm X` or `--splitter Y` names something the command line takes
+// (lesson 04 once sent students to `--algorithm` for the splitter rules, which it refuses).
+TEST_CASE("the command lines the lessons quote name real algorithms and splitter rules", "[lesson]") {
+    const std::regex algorithm_option(R"((render[^.;"]*?)?--algorithm\s+([a-z_-]+))"), splitter_option(R"(--splitter\s+([a-z_-]+))");
+    const std::set<std::string> render_algorithms = {"bsp", "zbuffer", "scanline", "raycast", "depth-sort"};
+    int quoted = 0;
+    for (const std::string& file : hsr::viz::shipped_lessons()) {
+        std::ifstream in(file);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        for (auto m = std::sregex_iterator(text.begin(), text.end(), algorithm_option); m != std::sregex_iterator(); ++m, ++quoted) {
+            INFO(file << ": " << m->str());
+            if ((*m)[1].matched) CHECK(render_algorithms.contains((*m)[2].str()));
+            else CHECK(hsr::algo::find_algorithm((*m)[2].str()).has_value());
+        }
+        for (auto m = std::sregex_iterator(text.begin(), text.end(), splitter_option); m != std::sregex_iterator(); ++m, ++quoted) {
+            INFO(file << ": " << m->str());
+            CHECK(hsr::algo::parse_splitter_rule((*m)[1].str()).has_value());
+        }
+    }
+    CHECK(quoted >= 4);  // the lessons do quote them (06, 09, 20, 04)
 }

@@ -136,6 +136,22 @@ std::string reference_answer(const Exercise& e) {
         const Q length2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
         return std::to_string(side.get_d() / std::sqrt(length2.get_d()));
     }
+    if (kind == "wall_side" || kind == "eye_side") {  // the left of wall 1's a → b is its front
+        const auto& walls = g["walls"];
+        auto side = [&](const nlohmann::json& p) {
+            const Q ax(walls[0][0][0].get<double>()), ay(walls[0][0][1].get<double>());
+            const Q bx(walls[0][1][0].get<double>()), by(walls[0][1][1].get<double>());
+            const Q cross = (bx - ax) * (Q(p[1].get<double>()) - ay) - (by - ay) * (Q(p[0].get<double>()) - ax);
+            return sgn(cross);
+        };
+        if (kind == "eye_side") return e.choices[side(g["eye"]) > 0 ? 0 : 1];
+        const auto& wall = walls[g["wall"].get<std::size_t>() - 1];
+        const int s1 = side(wall[0]), s2 = side(wall[1]);
+        if (s1 == 0 && s2 == 0) return "coplanar";
+        if (s1 >= 0 && s2 >= 0) return "front";
+        if (s1 <= 0 && s2 <= 0) return "back";
+        return "spanning";
+    }
     FAIL("no reference for " << kind);
     return "";
 }

@@ -70,5 +70,6 @@ nlohmann::ordered_json to_json(const Exercise& e);
 // Each family's topics, in their own files (clip_practice.cpp, backface_practice.cpp, …).
 std::vector<Topic> clipping_topics();
 std::vector<Topic> backface_topics();
+std::vector<Topic> bsp_topics();
 
 }  // namespace hsr::viz::practice
