@@ -332,8 +332,10 @@ std::vector<Case> catalogue() {
     const std::vector<std::tuple<std::string, std::string, std::string>> meshes{
         {"face past the vertices", tri + "f 1 2 100000000\n", "names vertex 100000000"},
         {"face index 99", tri + "f 1 2 99\n", "names vertex 99"},
-        {"negative indices past the start", tri + "f -5 -6 -7\n", "m.obj: face 1"},
-        {"index 0", tri + "f 0 1 2\n", "zero value for face index"},
+        // Debian 12's tinyobjloader lets our check name the face ("m.obj: face 1 names …"); Debian 13's refuses the
+        // line itself ("cannot read m.obj: Failed to parse `f' line … Line 4"), with "vertex index" for "face index"
+        {"negative indices past the start", tri + "f -5 -6 -7\n", "m.obj"},
+        {"index 0", tri + "f 0 1 2\n", "zero value for"},
         {"a NaN vertex", "v 0 nan 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1: vertex coordinate 'nan'"},
         {"an infinite vertex", "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 'inf'"},
         {"1e999", "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "line 3: vertex coordinate '1e999'"},

@@ -35,7 +35,7 @@ case "$case" in
     # Ctrl+= makes type and column larger (the column's right edge is the window's, its left edge moves left)
     small=$("$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot a.png --frames 4 --keys Right)
     large=$("$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot b.png --frames 6 --keys Right,Ctrl+=,Ctrl+=)
-    echo "$large" | grep -q "at step"
+    grep -q "at step" <<< "$large"
     test "$(echo "$small" | grep -c layout:)" -eq 0
     test "$(echo "$large" | grep -c layout:)" -eq 0
     ! cmp -s a.png b.png ;;
@@ -98,9 +98,9 @@ case "$case" in
     "$png_check" --ids back_ids.png 160 100 1 2 3
     out=$("$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --out fan.png)
     echo "$out"
-    echo "$out" | grep -q "after 5 splits"
+    grep -q "after 5 splits" <<< "$out"
     out=$("$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --splitter fewest-splits --out fan.png)
-    echo "$out" | grep -q "after 0 splits"
+    grep -q "after 0 splits" <<< "$out"
     if "$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --splitter nonsense --out x.png 2>/dev/null; then exit 1; fi
     if "$hsrviz" render "$src/assets/scenes/bsp_fan.toml" --size 0x5 --out x.png 2>/dev/null; then exit 1; fi ;;
   render-hsr)  # z-buffer, scan-line and ray cast (three ways) give the same id image as the BSP painter
@@ -148,7 +148,7 @@ case "$case" in
     run() { "$hsrviz" "$lesson" --screenshot q.png --frames "$1" --keys "$2" | grep '^hsrviz: at step'; }
     held=$(run 14 Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right)
     echo "twelve steps: $held"
-    echo "$held" | grep -q ", paused, question open$"
+    grep -q ", paused, question open$" <<< "$held"
     step=$(echo "$held" | sed 's/^hsrviz: at step \([0-9]*\) .*/\1/')
     test "$(run 3 End)" = "$held"
     test "$(run 4 Space,End)" = "$held"
@@ -157,7 +157,7 @@ case "$case" in
     # an answer shows the deciding event and closes the question; the next → moves on
     answered=$(run 15 Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,Right,1)
     echo "answered: $answered"
-    echo "$answered" | grep -q "^hsrviz: at step [0-9]* of [0-9]*, paused$"
+    grep -q "^hsrviz: at step [0-9]* of [0-9]*, paused$" <<< "$answered"
     test "$(echo "$answered" | sed 's/^hsrviz: at step \([0-9]*\) .*/\1/')" -gt "$step"
     # number keys answer only an open question: at the start they do nothing
     "$hsrviz" "$lesson" --screenshot q.png --frames 4 --keys 1,3 > none.txt
@@ -428,22 +428,23 @@ case "$case" in
   practice)  # X: an exercise of the lesson's topic, held before its deciding event until answered; the command line's series
     lesson="$src/lessons/01_cohen_sutherland.toml"
     want=$("$hsrviz" practice cohen_sutherland --seed 1 --count 1 | sed 's/.*"deciding_step":\([0-9]*\).*/\1/')
-    at() { echo "$1" | sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p'; }
+    # here-strings, not echo | grep -q: grep quits at its match, and under pipefail echo's SIGPIPE failed the case
+    at() { sed -n 's/^hsrviz: at step \([0-9]*\) .*/\1/p' <<< "$1"; }
     out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,End,End)
     echo "$out"
-    echo "$out" | grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 1: "
+    grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 1: " <<< "$out"
     test -f hsrviz-export/practice-cohen_sutherland-series1-1.toml
     test "$(at "$out")" -eq "$want"
     # answered with key 1: right or wrong, the player shows the deciding event
     out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1)
-    echo "$out" | grep -q '^hsrviz: practice answered ".*": [a-z]*, the machine says'
+    grep -q '^hsrviz: practice answered ".*": [a-z]*, the machine says' <<< "$out"
     test "$(at "$out")" -eq $((want + 1))
     # Enter: the series' next exercise
     out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1,Return)
-    echo "$out" | grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 2: "
+    grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 2: " <<< "$out"
     # a number typed key by key, Enter answers (Liang–Barsky's lesson practises its own topic)
     out=$("$hsrviz" "$src/lessons/02_liang_barsky.toml" --screenshot p.png --frames 6 --keys X,0,.,5,Return)
-    echo "$out" | grep -q '^hsrviz: practice answered "0.5": '
+    grep -q '^hsrviz: practice answered "0.5": ' <<< "$out"
     # the command line: the same series, the same bytes; another series, others; usage errors exit 2
     "$hsrviz" practice sutherland_hodgman --seed 1234 --count 25 --level 3 > a.jsonl
     "$hsrviz" practice sutherland_hodgman --seed 1234 --count 25 --level 3 > b.jsonl

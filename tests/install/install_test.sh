@@ -50,9 +50,9 @@ cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/deb" > cpack.log
 deb=$(ls deb/hsrviz_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-echo "$depends" | grep -q "libsdl2-2.0-0"
-echo "$depends" | grep -q "fonts-dejavu-core"
-if echo "$depends" | grep -q -- "-dev"; then echo "a -dev package among the .deb's dependencies"; exit 1; fi
+grep -q "libsdl2-2.0-0" <<< "$depends"
+grep -q "fonts-dejavu-core" <<< "$depends"
+if grep -q -- "-dev" <<< "$depends"; then echo "a -dev package among the .deb's dependencies"; exit 1; fi
 dpkg-deb -f "$deb" Section | grep -q education
 dpkg -x "$deb" root
 test -f root/usr/share/applications/hsrviz.desktop

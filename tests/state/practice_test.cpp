@@ -152,6 +152,28 @@ std::string reference_answer(const Exercise& e) {
         if (s1 <= 0 && s2 <= 0) return "back";
         return "spanning";
     }
+    if (kind == "depth_test" || kind == "visible") {  // pixel centres in exact rationals; the nearer depth wins
+        const Q cx = Q(g["pixel"][0].get<int>()) + Q(1, 2), cy = Q(g["pixel"][1].get<int>()) + Q(1, 2);
+        auto covers = [&](const nlohmann::json& t) {
+            int signs[3];
+            for (int k = 0; k < 3; ++k) {
+                const auto& a = t["corners"][k];
+                const auto& b = t["corners"][(k + 1) % 3];
+                const Q ax(a[0].get<double>()), ay(a[1].get<double>()), bx(b[0].get<double>()), by(b[1].get<double>());
+                signs[k] = sgn(Q((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
+            }
+            return (signs[0] > 0 && signs[1] > 0 && signs[2] > 0) || (signs[0] < 0 && signs[1] < 0 && signs[2] < 0);
+        };
+        const auto& triangles = g["triangles"];
+        const std::size_t last = kind == "visible" ? triangles.size() : g["triangle"].get<std::size_t>() - 1;
+        std::optional<std::size_t> nearest;  // among the triangles drawn before `last` (all of them for "visible")
+        for (std::size_t k = 0; k < last; ++k)
+            if (covers(triangles[k]) && (!nearest || triangles[k]["depth"].get<double>() < triangles[*nearest]["depth"].get<double>())) nearest = k;
+        if (kind == "visible") return nearest ? e.choices[*nearest] : e.choices.back();
+        const bool passes = !nearest || triangles[last]["depth"].get<double>() < triangles[*nearest]["depth"].get<double>();
+        REQUIRE(covers(triangles[last]));
+        return e.choices[passes ? 0 : 1];
+    }
     FAIL("no reference for " << kind);
     return "";
 }
@@ -169,6 +191,7 @@ TEST_CASE("every practice topic: 200 exercises agree with an independent referen
             INFO(topic.id << " exercise " << i << ": " << e.question << " → " << e.answer);
             CHECK(e.topic == topic.id);
             CHECK(!e.deciding.empty());
+            CHECK(e.hold_at.value_or(e.deciding_step) <= e.deciding_step);
             const std::string want = reference_answer(e);
             if (e.choices.empty()) {
                 CHECK(std::abs(std::stod(e.answer) - std::stod(want)) <= 1e-4);  // the answer to 4 decimals
@@ -269,7 +292,7 @@ TEST_CASE("the window's practice: a series from its first exercise, held before 
     const Exercise first = mode.next();
     CHECK(p::to_json(first).dump() == p::to_json(p::exercise(p::topics()[*backface], 1234, 0, Level::medium)).dump());
     CHECK(mode.waiting());
-    CHECK(mode.hold() == first.deciding_step);
+    CHECK(mode.hold() == first.hold_at.value_or(first.deciding_step));
 
     // a wrong answer, then the right one to the next: the streak starts again
     const std::string wrong = first.choices.empty() ? p::decimal_text(std::stod(first.answer) + 1, 4)

@@ -185,7 +185,8 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     if (near_a_plane(p1, s) || near_a_plane(p2, s)) return std::nullopt;
     algo::Scene scene = exercise_scene(s, {p1, p2}, "where the visible part starts and ends");
     const std::vector<ClipEvent> events = play(scene, algo::ClipAlgorithm::liang_barsky);
-    std::size_t steps[2] = {0, 0};
+    std::size_t steps[2] = {0, 0}, tested_at[2] = {0, 0};
+    std::optional<std::size_t> last_boundary;  // the plane's test (its q/p) comes just before its update
     std::optional<algo::ParameterUpdated> last[2];
     std::string sentence[2];
     bool clipped = false;
@@ -195,9 +196,11 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
             const std::size_t k = u->which == algo::Parameter::t_enter ? 0 : 1;
             last[k] = *u;
             steps[k] = step;
+            tested_at[k] = last_boundary.value_or(step);
             sentence[k] = algo::describe(events[step], s);
         }
         if (const auto* f = std::get_if<algo::SegmentFinished>(&events[step])) clipped = f->outcome == algo::ClipOutcome::clipped;
+        if (std::holds_alternative<algo::BoundaryTested>(events[step])) last_boundary = step;
     }
     if (!clipped) return std::nullopt;  // no visible part to ask about, or all of it
     std::size_t k = d.coin() ? 0 : 1;
@@ -212,6 +215,7 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     x.tolerance = 0.005;
     x.deciding = sentence[k];
     x.deciding_step = steps[k];
+    x.hold_at = tested_at[k];
     x.given = {{"kind", k == 0 ? "t_enter" : "t_leave"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                {"p1", numbers(p1)}, {"p2", numbers(p2)}};
     x.scene = std::move(scene);
@@ -324,7 +328,9 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
         algo::StageFinished stage;
         std::size_t step;
         std::string sentence;
+        std::size_t started;  // the stage's first event: its edges count the answer out one by one
     };
+    std::size_t started = 0;
     std::vector<Candidate> changed;  // stages whose count differs from their input's
     std::uint32_t input = 0;
     // A vertex on a plane (an earlier stage's intersection can land on it: the edge crosses z = −1 where y = 1)
@@ -332,11 +338,11 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     bool clear = true;
     for (std::size_t step = 0; step < events.size() && clear; ++step) {
         const ClipEvent* e = &events[step];
-        if (const auto* started = std::get_if<algo::StageStarted>(e)) input = started->input_vertices;
+        if (const auto* stage = std::get_if<algo::StageStarted>(e)) input = stage->input_vertices, started = step;
         if (const auto* c = std::get_if<algo::EdgeClassified>(e))
             clear = std::abs(c->bc_from) >= reading_margin && std::abs(c->bc_to) >= reading_margin;
         if (const auto* f = std::get_if<algo::StageFinished>(e); f && f->output_vertices != input)
-            changed.push_back({*f, step, algo::describe(*e, s)});
+            changed.push_back({*f, step, algo::describe(*e, s), started});
     }
     if (changed.empty()) return std::nullopt;
     const Candidate& c = changed[std::size_t(d.below(int(changed.size())))];
@@ -348,6 +354,7 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     x.tolerance = 0;
     x.deciding = c.sentence;
     x.deciding_step = c.step;
+    x.hold_at = c.started;
     x.given = {{"kind", "stage_count"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
                {"plane", std::string(algo::plane_name(c.stage.plane))}, {"polygon", polygon_numbers(*polygon)}};
     x.scene = std::move(scene);

@@ -31,6 +31,8 @@ struct Exercise {
     double tolerance = 0;               // how far a typed number may be from the answer and still be right
     std::string deciding;               // the sentence of the machine's event that decides the answer
     std::size_t deciding_step = 0;      // that event's step in the run
+    std::optional<std::size_t> hold_at; // where the window holds before the answer, when an earlier event gives it
+                                        // away (Liang–Barsky's q/p before t_enter moves); else deciding_step
     nlohmann::json given;               // the question's data (points, planes, …) as numbers, for answer sheets and tests
     algo::Scene scene;                  // what the window plays, with `algorithm` (a registry id): the deciding
     std::string algorithm;              // event is its step `deciding_step`
@@ -71,5 +73,6 @@ nlohmann::ordered_json to_json(const Exercise& e);
 std::vector<Topic> clipping_topics();
 std::vector<Topic> backface_topics();
 std::vector<Topic> bsp_topics();
+std::vector<Topic> zbuffer_topics();
 
 }  // namespace hsr::viz::practice

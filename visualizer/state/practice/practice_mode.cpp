@@ -54,7 +54,7 @@ void PracticeMode::type(char c) {
 
 std::optional<std::size_t> PracticeMode::hold() const {
     if (!waiting()) return std::nullopt;
-    return current->deciding_step;
+    return current->hold_at.value_or(current->deciding_step);
 }
 
 std::optional<std::size_t> PracticeMode::topic_of(std::string_view algorithm) {
