@@ -14,6 +14,9 @@
 #include "panels/wrapped_text.h"
 
 namespace hsr::viz {
+namespace {
+const ImVec4 front_branch(0.35f, 0.75f, 0.55f, 1), back_branch(0.85f, 0.5f, 0.3f, 1);
+}  // namespace
 
 void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, "BSP tree");
@@ -22,6 +25,11 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     std::snprintf(stats, sizeof stats, "%zu polygons in · %zu in the tree after %u splits · %zu nodes · depth %u · built in %.3f ms",
                   st.polygons_in, st.polygons_after, st.splits, st.nodes, st.depth, st.build_ms);
     wrapped_text(stats, dim_text);
+    ImGui::TextColored(front_branch, "Left: front");
+    ImGui::SameLine();
+    ImGui::TextColored(dim_text, "(the normal's side) ·");
+    ImGui::SameLine();
+    ImGui::TextColored(back_branch, "Right: back");
 
     // Layout: x by in-order position, y by depth.
     const BspView& v = s.view();
@@ -29,9 +37,10 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     int column = 0;
     const std::function<void(int)> place_node = [&](int n) {
         if (n < 0 || std::size_t(n) >= v.nodes.size()) return;
-        place_node(v.nodes[std::size_t(n)].back);  // back subtree on the left, as the lecture's Right/Left read
-        x[std::size_t(n)] = float(column++);
+        // the front subtree on the left: it is the notes' BSPnode->Left (their 'left' subspace is the plane's front)
         place_node(v.nodes[std::size_t(n)].front);
+        x[std::size_t(n)] = float(column++);
+        place_node(v.nodes[std::size_t(n)].back);
     };
     if (!v.nodes.empty()) place_node(0);
 
@@ -55,8 +64,7 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
         const BspNodeView& node = v.nodes[n];
         if (node.parent >= 0)
             d->AddLine(at(node.parent), at(int(n)),
-                       ImGui::GetColorU32(node.side_of_parent == algo::Side::front ? ImVec4(0.35f, 0.75f, 0.55f, 1)
-                                                                                    : ImVec4(0.85f, 0.5f, 0.3f, 1)),
+                       ImGui::GetColorU32(node.side_of_parent == algo::Side::front ? front_branch : back_branch),
                        canvas_px(2));
     }
     for (std::size_t n = 0; n < v.nodes.size(); ++n) {

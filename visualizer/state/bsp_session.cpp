@@ -19,7 +19,7 @@ using namespace hsr::algo;
 // The lecture's BuildBSP ("BSP Algorithm (2)"); Left is the front of P_i, Right its back.
 const Pseudocode<BspEvent> build_lines = {
     {"BuildBSP(BSPnode, polygonDB);", {step<BuildStarted>(), step<BspBoundReached>()}},
-    {"{", {}},
+    {"{ /* L, Left: front (the normal's side); R: back */", {}},
     {"  Select a polygon (plane) Pi from polygonDB;", {micro<CandidateScored>()}},
     {"  Assign Pi to BSPnode;", {step<SplitterChosen>([](const SplitterChosen& e) { return e.parent < 0; })}},
     {"  /* Partition scene polygons into those on either side", {}},
@@ -34,7 +34,7 @@ const Pseudocode<BspEvent> build_lines = {
 // The lecture's DisplayBSP, back to front.
 const Pseudocode<BspEvent> display_lines = {
     {"DisplayBSP (BSPnode, v);", {step<BspBoundReached>()}},
-    {"{", {}},
+    {"{ /* left: front, the normal's side; right: back */", {}},
     {"  if IsLeaf (BSPnode) Render (BSPnode->Polygon)", {step<PolygonDrawn>([](const PolygonDrawn& e) { return e.leaf; })}},
     {"  else if (v in 'left' subspace of BSPnode->Polygon) {",
      {micro<EyeClassified>([](const EyeClassified& e) { return e.side != Side::back; })}},
