@@ -152,7 +152,7 @@ std::string reference_answer(const Exercise& e) {
         if (s1 <= 0 && s2 <= 0) return "back";
         return "spanning";
     }
-    if (kind == "depth_test" || kind == "visible") {  // pixel centres in exact rationals; the nearer depth wins
+    if (kind == "depth_test" || kind == "visible" || kind == "hits") {  // pixel centres in exact rationals; the nearer depth wins
         const Q cx = Q(g["pixel"][0].get<int>()) + Q(1, 2), cy = Q(g["pixel"][1].get<int>()) + Q(1, 2);
         auto covers = [&](const nlohmann::json& t) {
             int signs[3];
@@ -165,6 +165,11 @@ std::string reference_answer(const Exercise& e) {
             return (signs[0] > 0 && signs[1] > 0 && signs[2] > 0) || (signs[0] < 0 && signs[1] < 0 && signs[2] < 0);
         };
         const auto& triangles = g["triangles"];
+        if (kind == "hits") {
+            int hits = 0;
+            for (const auto& t : triangles) hits += covers(t);
+            return std::to_string(hits);
+        }
         const std::size_t last = kind == "visible" ? triangles.size() : g["triangle"].get<std::size_t>() - 1;
         std::optional<std::size_t> nearest;  // among the triangles drawn before `last` (all of them for "visible")
         for (std::size_t k = 0; k < last; ++k)

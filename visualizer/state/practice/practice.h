@@ -74,5 +74,6 @@ std::vector<Topic> clipping_topics();
 std::vector<Topic> backface_topics();
 std::vector<Topic> bsp_topics();
 std::vector<Topic> zbuffer_topics();
+std::vector<Topic> raycast_topics();
 
 }  // namespace hsr::viz::practice
