@@ -179,6 +179,17 @@ std::string reference_answer(const Exercise& e) {
         REQUIRE(covers(triangles[last]));
         return e.choices[passes ? 0 : 1];
     }
+    if (kind == "node_outcome") {  // an axis-aligned cell against an axis-aligned volume, exactly
+        const auto& v = g["volume"];
+        const auto& c = g["cell"];
+        bool inside = true, outside = false;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const Q vlo(v[0][a].get<double>()), vhi(v[1][a].get<double>()), clo(c[0][a].get<double>()), chi(c[1][a].get<double>());
+            outside = outside || chi < vlo || clo > vhi;
+            inside = inside && clo >= vlo && chi <= vhi;
+        }
+        return e.choices[outside ? 1 : inside ? 0 : 2];
+    }
     FAIL("no reference for " << kind);
     return "";
 }
@@ -221,6 +232,18 @@ TEST_CASE("every practice topic: 200 exercises agree with an independent referen
             INFO(kind);
             CHECK(seen.size() >= 2);
         }
+    }
+}
+
+TEST_CASE("practice topics: ids the command line takes, titles that fit the practice box's chooser", "[practice]") {
+    std::set<std::string_view> ids;
+    for (const auto& topic : hsr::viz::practice::topics()) {
+        INFO(topic.id);
+        CHECK(ids.insert(topic.id).second);
+        CHECK(topic.id.find(' ') == std::string_view::npos);
+        CHECK(!topic.algorithms.empty());
+        // the chooser is as wide as the panel column at its narrowest (a culling title of 63 characters was cut)
+        CHECK(topic.title.size() <= 54);
     }
 }
 

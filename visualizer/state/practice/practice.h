@@ -75,5 +75,6 @@ std::vector<Topic> backface_topics();
 std::vector<Topic> bsp_topics();
 std::vector<Topic> zbuffer_topics();
 std::vector<Topic> raycast_topics();
+std::vector<Topic> culling_topics();
 
 }  // namespace hsr::viz::practice

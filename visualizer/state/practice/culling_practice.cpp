@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// Practice for hierarchical view-frustum culling: small squares scattered around an orthographic camera's view volume
+// (a box in world coordinates, so a student can read it), an octree over them, culled top-down with the notes'
+// IntersectionTest. Is a node's cell wholly inside, wholly outside or partly inside the view volume? Every answer is a
+// NodeCulled event of the culling lesson's own machine on the exercise's scene.
+#include <cmath>
+#include <cstdio>
+
+#include "culling/culling_events.h"
+#include "culling/hierarchy.h"
+#include "state/practice/practice.h"
+#include "state/practice/practice_random.h"
+
+namespace hsr::viz::practice {
+namespace {
+
+using algo::Vec3;
+
+// The camera: orthographic, at z = 10 looking down −z, so the view volume is x ∈ [−3.5, 3.5], y ∈ [−2.5, 2.5],
+// z ∈ [10 − far, 10 − near] = [−6, 6] in world coordinates.
+constexpr double half_width = 3.5, half_height = 2.5, eye_z = 10, near_plane = 4, far_plane = 16;
+const Vec3 volume_lo(-half_width, -half_height, eye_z - far_plane), volume_hi(half_width, half_height, eye_z - near_plane);
+
+std::string number_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    std::string t = text;
+    if (t.front() == '-') t.replace(0, 1, "−");
+    return t;
+}
+std::string point_text(const Vec3& p) { return "(" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + ")"; }
+
+algo::Scene squares_scene(Dice& d, Level l) {
+    algo::Scene scene;
+    scene.name = "squares around a view volume";
+    scene.camera.projection = algo::Projection::orthographic;
+    scene.camera.eye = {0, 0, eye_z};
+    scene.camera.target = {0, 0, 0};
+    scene.camera.near = near_plane;
+    scene.camera.far = far_plane;
+    scene.camera.box[0] = -half_width, scene.camera.box[1] = half_width, scene.camera.box[2] = -half_height, scene.camera.box[3] = half_height;
+    const int count = l == Level::easy ? 9 : l == Level::medium ? 12 : 16;
+    for (int k = 0; k < count; ++k) {
+        const double x = d.grid(-16, 16, 1) / 2, y = d.grid(-12, 12, 1) / 2, z = d.grid(-16, 16, 1) / 2, s = d.grid(1, 3, 1) / 2;
+        algo::ScenePolygon p{algo::SceneId(k + 1), {200, 200, 200}, {}};
+        p.vertices = {{x, y, z, 1}, {x + s, y, z, 1}, {x + s, y + s, z, 1}, {x, y + s, z, 1}};
+        scene.polygons.push_back(p);
+    }
+    return scene;
+}
+
+// A cell face within a twentieth of a face of the volume would be decided by which side of the plane 0 falls on.
+bool touches_the_volume(const algo::Aabb& b) {
+    for (int a = 0; a < 3; ++a)
+        for (double face : {b.lo[a], b.hi[a]})
+            if (std::abs(face - volume_lo[a]) < 0.05 || std::abs(face - volume_hi[a]) < 0.05) return true;
+    return false;
+}
+
+const std::vector<std::string> outcome_choices = {"wholly inside: accepted, with everything below it",
+                                                  "wholly outside: rejected, with everything below it",
+                                                  "partly inside: its primitives kept, its children tested"};
+
+std::optional<Exercise> node_exercise(Dice& d, Level l) {
+    algo::Scene scene = squares_scene(d, l);
+    // as the culling lesson does: an octree over the polygons' boxes, culled against the camera's frustum
+    const algo::Hierarchy tree = algo::build_hierarchy(algo::polygon_boxes(scene), {.kind = algo::HierarchyKind::octree}).run_to_end();
+    std::vector<algo::HierarchyCullEvent> events;
+    auto machine = algo::cull_hierarchy(&tree, scene.camera, {.frustum = true});
+    while (const algo::HierarchyCullEvent* e = machine.next()) events.push_back(*e);
+    std::vector<std::size_t> asked;  // the steps of nodes a student can decide, below the root when there are any
+    for (std::size_t step = 0; step < events.size(); ++step)
+        if (const auto* c = std::get_if<algo::NodeCulled>(&events[step]); c && !touches_the_volume(tree.nodes[c->node].box))
+            asked.push_back(step);
+    if (asked.empty() || touches_the_volume(tree.nodes[0].box)) return std::nullopt;
+    if (asked.size() > 1 && l != Level::easy) asked.erase(asked.begin());  // the root is the easy level's question
+    const std::size_t step = asked[std::size_t(d.below(int(asked.size())))];
+    const auto& c = std::get<algo::NodeCulled>(events[step]);
+    const algo::Aabb& box = tree.nodes[c.node].box;
+    Exercise x;
+    x.question = "Hierarchical view-frustum culling, an orthographic camera: its view volume is the box from " + point_text(volume_lo) +
+                 " to " + point_text(volume_hi) + " in world coordinates. Octree node " + std::to_string(c.node) + "'s cell runs from " +
+                 point_text(box.lo) + " to " + point_text(box.hi) + ". Against the view volume, it is:";
+    x.choices = outcome_choices;
+    switch (c.outcome) {
+        case algo::NodeOutcome::inside: x.answer = outcome_choices[0]; break;
+        case algo::NodeOutcome::outside: x.answer = outcome_choices[1]; break;
+        case algo::NodeOutcome::partial: x.answer = outcome_choices[2]; break;
+        case algo::NodeOutcome::too_small: return std::nullopt;  // not with detail culling off
+    }
+    x.deciding = algo::describe(events[step]);
+    x.deciding_step = step;
+    x.given = {{"kind", "node_outcome"},
+               {"volume", {{volume_lo.x, volume_lo.y, volume_lo.z}, {volume_hi.x, volume_hi.y, volume_hi.z}}},
+               {"cell", {{box.lo.x, box.lo.y, box.lo.z}, {box.hi.x, box.hi.y, box.hi.z}}}};
+    x.scene = std::move(scene);
+    x.algorithm = "cull_frustum";
+    return x;
+}
+
+}  // namespace
+
+std::vector<Topic> culling_topics() {
+    return {{"culling", "View-frustum culling: inside, outside, partly", {"cull_frustum", "cull_bounds"},
+             [](Draw draw) {
+                 Dice d(draw.seed);
+                 return node_exercise(d, draw.level);
+             }}};
+}
+
+}  // namespace hsr::viz::practice
