@@ -39,12 +39,21 @@ algo::Scene squares_scene(Dice& d, Level l) {
     scene.camera.near = near_plane;
     scene.camera.far = far_plane;
     scene.camera.box[0] = -half_width, scene.camera.box[1] = half_width, scene.camera.box[2] = -half_height, scene.camera.box[3] = half_height;
-    const int count = l == Level::easy ? 9 : l == Level::medium ? 12 : 16;
-    for (int k = 0; k < count; ++k) {
-        const double x = d.grid(-16, 16, 1) / 2, y = d.grid(-12, 12, 1) / 2, z = d.grid(-16, 16, 1) / 2, s = d.grid(1, 3, 1) / 2;
-        algo::ScenePolygon p{algo::SceneId(k + 1), {200, 200, 200}, {}};
-        p.vertices = {{x, y, z, 1}, {x + s, y, z, 1}, {x + s, y + s, z, 1}, {x, y + s, z, 1}};
-        scene.polygons.push_back(p);
+    // clusters of five squares, some inside the volume and some beside it: the octree splits each cluster's region
+    // into cells small enough to lie wholly inside or wholly outside (scattered squares give only large cells that
+    // are partly inside)
+    const int clusters = l == Level::easy ? 3 : l == Level::medium ? 4 : 5;
+    algo::SceneId id = 1;
+    for (int c = 0; c < clusters; ++c) {
+        const bool inside = d.coin();
+        const double cx = inside ? d.grid(-4, 4, 1) / 2 : (d.coin() ? 1 : -1) * d.grid(10, 16, 1) / 2;
+        const double cy = d.grid(-3, 3, 1) / 2, cz = d.grid(-8, 8, 1) / 2;
+        for (int k = 0; k < 5; ++k) {
+            const double x = cx + d.grid(-2, 2, 1) / 2, y = cy + d.grid(-2, 2, 1) / 2, z = cz + d.grid(-2, 2, 1) / 2, s = 0.5;
+            algo::ScenePolygon p{id++, {200, 200, 200}, {}};
+            p.vertices = {{x, y, z, 1}, {x + s, y, z, 1}, {x + s, y + s, z, 1}, {x, y + s, z, 1}};
+            scene.polygons.push_back(p);
+        }
     }
     return scene;
 }
@@ -68,13 +77,19 @@ std::optional<Exercise> node_exercise(Dice& d, Level l) {
     std::vector<algo::HierarchyCullEvent> events;
     auto machine = algo::cull_hierarchy(&tree, scene.camera, {.frustum = true});
     while (const algo::HierarchyCullEvent* e = machine.next()) events.push_back(*e);
-    std::vector<std::size_t> asked;  // the steps of nodes a student can decide, below the root when there are any
+    // the steps of nodes a student can decide, by outcome: an outcome first, then a node, so that "partly inside"
+    // (the large cells near the top) does not crowd out the others; the root only at the easy level
+    std::vector<std::size_t> by_outcome[3];
     for (std::size_t step = 0; step < events.size(); ++step)
-        if (const auto* c = std::get_if<algo::NodeCulled>(&events[step]); c && !touches_the_volume(tree.nodes[c->node].box))
-            asked.push_back(step);
-    if (asked.empty() || touches_the_volume(tree.nodes[0].box)) return std::nullopt;
-    if (asked.size() > 1 && l != Level::easy) asked.erase(asked.begin());  // the root is the easy level's question
-    const std::size_t step = asked[std::size_t(d.below(int(asked.size())))];
+        if (const auto* c = std::get_if<algo::NodeCulled>(&events[step]);
+            c && c->outcome != algo::NodeOutcome::too_small && (c->node != 0 || l == Level::easy) && !touches_the_volume(tree.nodes[c->node].box))
+            by_outcome[std::size_t(c->outcome)].push_back(step);
+    std::vector<const std::vector<std::size_t>*> present;
+    for (const auto& steps : by_outcome)
+        if (!steps.empty()) present.push_back(&steps);
+    if (present.empty()) return std::nullopt;
+    const std::vector<std::size_t>& pick = *present[std::size_t(d.below(int(present.size())))];
+    const std::size_t step = pick[std::size_t(d.below(int(pick.size())))];
     const auto& c = std::get<algo::NodeCulled>(events[step]);
     const algo::Aabb& box = tree.nodes[c.node].box;
     Exercise x;
