@@ -236,6 +236,7 @@ int run_app(const AppOptions& o) {
         bool quit = false;         // the window was closed while long work ran
         lp.show_work = [&](const algo::WorkProgress& p) { work_frame(p, w, lp, o, next_key, quit); };
         lp.side = settings.side;
+        lp.practice.restore(settings.practice);
         lp.scale = lp.first_scale = initial_scale(o);
         lp.load(o);
         float applied_scale = lp.scale;
@@ -396,6 +397,7 @@ int run_app(const AppOptions& o) {
         WindowSettings keep = settings;
         keep.side = lp.side;
         keep.language = lp.classroom.language();
+        keep.practice = lp.practice.records();
         if (interactive(o) && !o.projector) {
             const Uint32 flags = SDL_GetWindowFlags(w.window);
             keep.maximized = (flags & SDL_WINDOW_MAXIMIZED) != 0;

@@ -442,6 +442,8 @@ case "$case" in
     # Enter: the series' next exercise
     out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1,Return)
     grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 2: " <<< "$out"
+    # the score is kept between runs: two runs answered one exercise each
+    grep -A3 '^\[practice.cohen_sutherland\]' window.toml | grep -q '^answered = 2$'
     # a number typed key by key, Enter answers (Liang–Barsky's lesson practises its own topic)
     out=$("$hsrviz" "$src/lessons/02_liang_barsky.toml" --screenshot p.png --frames 6 --keys X,0,.,5,Return)
     grep -q '^hsrviz: practice answered "0.5": ' <<< "$out"

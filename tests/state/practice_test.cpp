@@ -350,4 +350,16 @@ TEST_CASE("the window's practice: a series from its first exercise, held before 
     // another series starts from its first exercise
     mode.choose(mode.topic(), Level::easy, 5);
     CHECK(mode.next().index == 0);
+
+    // the scores the window keeps between runs: the streak starts again, its best stays
+    const auto kept = mode.records();
+    REQUIRE(kept.contains("backface"));
+    CHECK(kept.at("backface") == hsr::viz::PracticeRecord{2, 1, 1});
+    p::PracticeMode again;
+    again.restore(kept);
+    again.choose(*backface, Level::easy, 1);
+    CHECK(again.score().answered == 2);
+    CHECK(again.score().right == 1);
+    CHECK(again.score().streak == 0);
+    CHECK(again.score().best_streak == 1);
 }

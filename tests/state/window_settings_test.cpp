@@ -24,7 +24,8 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(read_window_settings(path, warning) == WindowSettings{});
     CHECK(warning.empty());
 
-    const WindowSettings s{.width = 1600, .height = 900, .x = 40, .y = -20, .maximized = true, .side = 620, .language = "de"};
+    const WindowSettings s{.width = 1600, .height = 900, .x = 40, .y = -20, .maximized = true, .side = 620, .language = "de",
+                           .practice = {{"bsp", {7, 5, 3}}, {"cohen_sutherland", {2, 0, 0}}}};
     REQUIRE(write_window_settings(path, s).empty());
     CHECK(read_window_settings(path, warning) == s);
     CHECK(warning.empty());
@@ -35,6 +36,14 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(partly.height == 800);  // the default: the field is named
     CHECK(partly.side == 700);
     CHECK(warning.find("window.toml:2: field 'height'") != std::string::npos);
+
+    // a practice score that cannot be (more right than answered), a topic named oddly: skipped and named, the rest kept
+    std::ofstream(path) << "[practice.bsp]\nanswered = 4\nright = 3\nbest_streak = 2\n[practice.zbuffer]\nanswered = 1\nright = 5\n"
+                           "best_streak = 0\n[practice.\"../x\"]\nanswered = 1\nright = 1\nbest_streak = 1\n";
+    const WindowSettings scores = read_window_settings(path, warning);
+    CHECK(scores.practice.size() == 1);
+    CHECK(scores.practice.at("bsp") == PracticeRecord{4, 3, 2});
+    CHECK(warning.find("field 'practice.") != std::string::npos);
 
     std::ofstream(path) << "width = 15e20\nheight = 900.0\n";  // floats are not whole numbers (15e20 was undefined behaviour)
     const WindowSettings floats = read_window_settings(path, warning);

@@ -25,7 +25,7 @@ std::string window_settings_path() {
 namespace {
 
 constexpr std::size_t settings_limit = 64 << 10;  // a settings file is a few lines
-const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language"};
+const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language", "practice"};
 
 // The first key a settings file does not have, if any: such a file is someone else's (a lesson, say) and is
 // neither used nor overwritten.
@@ -79,6 +79,25 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
     if (const auto side = integer("side", 200, 4000)) s.side = float(*side);
     if (const auto m = t["maximized"].value<bool>()) s.maximized = *m;
     if (const auto l = t["language"].value<std::string>(); l && l->size() <= 16) s.language = *l;
+    // [practice.TOPIC] answered, right, best_streak: a topic with a bad field is skipped and named
+    if (const toml::table* practice = t["practice"].as_table())
+        for (const auto& [topic, node] : *practice) {
+            const toml::table* record = node.as_table();
+            const std::string name(topic.str());
+            const bool named_well = !name.empty() && name.size() <= 32 &&
+                                    std::all_of(name.begin(), name.end(), [](char c) { return (c >= 'a' && c <= 'z') || c == '_'; });
+            const auto count = [&](const char* key) -> std::optional<int> {
+                const auto v = record ? (*record)[key].value_exact<std::int64_t>() : std::nullopt;
+                return v && *v >= 0 && *v <= 1'000'000'000 ? std::optional<int>(int(*v)) : std::nullopt;
+            };
+            const auto answered = count("answered"), right = count("right"), best = count("best_streak");
+            if (!named_well || !answered || !right || !best || *right > *answered || *best > *right) {
+                warning = path + ":" + std::to_string(node.source().begin.line) + ": field 'practice." + algo::printable(name, 40) +
+                          "': expected answered ≥ right ≥ best_streak, whole numbers; ignored";
+                continue;
+            }
+            s.practice[name] = {*answered, *right, *best};
+        }
     return s;
 }
 
@@ -97,6 +116,12 @@ std::string write_window_settings(const std::string& path, const WindowSettings&
     toml::table t{{"width", s.width}, {"height", s.height}, {"maximized", s.maximized}, {"side", int(s.side)}, {"language", s.language}};
     if (s.x) t.insert("x", *s.x);
     if (s.y) t.insert("y", *s.y);
+    if (!s.practice.empty()) {
+        toml::table practice;
+        for (const auto& [topic, r] : s.practice)
+            practice.insert(topic, toml::table{{"answered", r.answered}, {"right", r.right}, {"best_streak", r.best_streak}});
+        t.insert("practice", std::move(practice));
+    }
     // A new file, then renamed over the old one: a full disk or a crash mid-write leaves the old settings whole.
     const std::string temporary = path + ".new";
     {

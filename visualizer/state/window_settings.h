@@ -1,13 +1,20 @@
 // SPDX-License-Identifier: MIT
 // What the window remembers between runs: its size and place, whether it was maximised, the width of the panel
-// column and the narration language. One small TOML file in the user's configuration folder; a missing or broken
+// column, the narration language and the practice scores. One small TOML file in the user's configuration folder; a missing or broken
 // file gives the defaults (and a warning naming the file, line and field), never an error.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 
 namespace hsr::viz {
+
+// A practice topic's score, kept between runs (the streak starts again each run; its best is kept).
+struct PracticeRecord {
+    int answered = 0, right = 0, best_streak = 0;
+    bool operator==(const PracticeRecord&) const = default;
+};
 
 struct WindowSettings {
     int width = 1280, height = 800;
@@ -15,6 +22,7 @@ struct WindowSettings {
     bool maximized = false;
     float side = 500;         // the panel column's width, in points
     std::string language;     // the narration language last chosen ("" for the lesson's first)
+    std::map<std::string, PracticeRecord> practice;  // by topic id ([practice.TOPIC] tables)
     bool operator==(const WindowSettings&) const = default;
 };
 

@@ -57,6 +57,16 @@ std::optional<std::size_t> PracticeMode::hold() const {
     return current->hold_at.value_or(current->deciding_step);
 }
 
+std::map<std::string, PracticeRecord> PracticeMode::records() const {
+    std::map<std::string, PracticeRecord> r;
+    for (const auto& [topic, s] : scores_) r[topic] = {s.answered, s.right, s.best_streak};
+    return r;
+}
+
+void PracticeMode::restore(const std::map<std::string, PracticeRecord>& records) {
+    for (const auto& [topic, r] : records) scores_[topic] = {r.answered, r.right, 0, r.best_streak};
+}
+
 std::optional<std::size_t> PracticeMode::topic_of(std::string_view algorithm) {
     for (std::size_t k = 0; k < topics().size(); ++k)
         for (std::string_view a : topics()[k].algorithms)

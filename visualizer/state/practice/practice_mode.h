@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "state/practice/practice.h"
+#include "state/window_settings.h"
 
 namespace hsr::viz::practice {
 
@@ -46,6 +47,10 @@ public:
     bool waiting() const { return current && !right; }
     // Where a move forward stops while the exercise waits for its answer: before its deciding event.
     std::optional<std::size_t> hold() const;
+
+    // The scores as the window keeps them between runs (the streak starts again: its best is kept).
+    std::map<std::string, PracticeRecord> records() const;
+    void restore(const std::map<std::string, PracticeRecord>& records);
 
     // The topic whose exercises play this algorithm (the lesson's), if there is one.
     static std::optional<std::size_t> topic_of(std::string_view algorithm);
