@@ -87,6 +87,12 @@ std::vector<std::pair<int, int>> pixels_covered(const std::vector<PixelTriangle>
     return at;
 }
 
+std::optional<std::pair<int, int>> pick_pixel(Dice& d, const std::vector<PixelTriangle>& t, int at_least) {
+    const auto pixels = pixels_covered(t, at_least);
+    if (pixels.empty()) return std::nullopt;
+    return pixels[std::size_t(d.below(int(pixels.size())))];
+}
+
 std::string pixel_triangles_text(const std::vector<PixelTriangle>& t) {
     std::string s;
     for (std::size_t k = 0; k < t.size(); ++k) {

@@ -37,6 +37,9 @@ bool near_an_edge(const PixelTriangle& t, glm::dvec2 p);
 // Pixels whose centre lies inside at least `at_least` triangles and a hair from no edge.
 std::vector<std::pair<int, int>> pixels_covered(const std::vector<PixelTriangle>& t, int at_least);
 
+// One of those pixels, by the dice; nothing when there is none.
+std::optional<std::pair<int, int>> pick_pixel(Dice& d, const std::vector<PixelTriangle>& t, int at_least);
+
 // "triangle 1 ((20, 15), (2, 9), (27, 14), depth 5), then triangle 2 (…)", and what the grid's numbers mean.
 std::string pixel_triangles_text(const std::vector<PixelTriangle>& t);
 nlohmann::json pixel_triangles_given(const std::vector<PixelTriangle>& t, const char* kind, int x, int y, std::size_t triangle);

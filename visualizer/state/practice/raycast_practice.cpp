@@ -32,59 +32,63 @@ std::optional<RayAt> ray_at(const std::vector<algo::RayCastEvent>& events, int x
     return ray && ray->finished ? ray : std::nullopt;
 }
 
-// A pixel covered by at least one triangle (one time in three by none: a ray that hits nothing is a fair question).
-std::optional<std::tuple<std::vector<PixelTriangle>, int, int>> draw(Dice& d, Level l) {
-    const auto t = draw_pixel_triangles(d, l);
-    if (!t) return std::nullopt;
-    const auto pixels = pixels_covered(*t, d.below(3) == 0 ? 0 : 1);
-    if (pixels.empty()) return std::nullopt;
-    const auto [x, y] = pixels[std::size_t(d.below(int(pixels.size())))];
-    return std::tuple{*t, x, y};
-}
+// Triangles, a pixel, and the cast of the scene with that pixel's ray found in it.
+struct Cast {
+    std::vector<PixelTriangle> triangles;
+    int x, y;
+    algo::Scene scene;
+    std::vector<algo::RayCastEvent> events;
+    RayAt ray;
+};
 
-std::optional<Exercise> hits_exercise(Dice& d, Level l) {
-    const auto drawn = draw(d, l);
-    if (!drawn) return std::nullopt;
-    const auto& [t, x, y] = *drawn;
-    algo::Scene scene = pixel_triangle_scene(t);
-    const std::vector<algo::RayCastEvent> events = play(scene);
+// A pixel covered by at least one triangle (one time in three by none: a ray that hits nothing is a fair question).
+std::optional<Cast> cast(Dice& d, Level l) {
+    auto t = draw_pixel_triangles(d, l);
+    if (!t) return std::nullopt;
+    const auto pixel = pick_pixel(d, *t, d.below(3) == 0 ? 0 : 1);
+    if (!pixel) return std::nullopt;
+    const auto [x, y] = *pixel;
+    algo::Scene scene = pixel_triangle_scene(*t);
+    std::vector<algo::RayCastEvent> events = play(scene);
     const auto ray = ray_at(events, x, y);
     if (!ray) return std::nullopt;
+    return Cast{std::move(*t), x, y, std::move(scene), std::move(events), *ray};
+}
+
+// What both questions share: the scene, where the ray starts (the hold) and where it ends (the deciding event).
+Exercise exercise_on(Cast& c, const std::string& asked, const char* kind) {
     Exercise e;
-    e.question = "Ray casting, every triangle tested: " + pixel_triangles_text(t) + " How many of the triangles does the ray through pixel (" +
-                 std::to_string(x) + ", " + std::to_string(y) + ") hit?";
-    e.answer = std::to_string(ray->hits);
-    e.tolerance = 0;
-    e.deciding = algo::describe(events[ray->finished]);
-    e.deciding_step = ray->finished;
-    e.hold_at = ray->started;
-    e.given = pixel_triangles_given(t, "hits", x, y, 0);
-    e.scene = std::move(scene);
+    e.question = "Ray casting, every triangle tested: " + pixel_triangles_text(c.triangles) + " " + asked;
+    e.deciding = algo::describe(c.events[c.ray.finished]);
+    e.deciding_step = c.ray.finished;
+    e.hold_at = c.ray.started;
+    e.given = pixel_triangles_given(c.triangles, kind, c.x, c.y, 0);
+    e.scene = std::move(c.scene);
     e.algorithm = "raycast_brute";
     return e;
 }
 
+std::string through(const Cast& c) { return "the ray through pixel (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
+
+std::optional<Exercise> hits_exercise(Dice& d, Level l) {
+    auto c = cast(d, l);
+    if (!c) return std::nullopt;
+    const int hits = c->ray.hits;
+    Exercise e = exercise_on(*c, "How many of the triangles does " + through(*c) + " hit?", "hits");
+    e.answer = std::to_string(hits);
+    e.tolerance = 0;
+    return e;
+}
+
 std::optional<Exercise> nearest_exercise(Dice& d, Level l) {
-    const auto drawn = draw(d, l);
-    if (!drawn) return std::nullopt;
-    const auto& [t, x, y] = *drawn;
-    algo::Scene scene = pixel_triangle_scene(t);
-    const std::vector<algo::RayCastEvent> events = play(scene);
-    const auto ray = ray_at(events, x, y);
-    if (!ray) return std::nullopt;
-    const auto& finished = std::get<algo::RayFinished>(events[ray->finished]);
-    Exercise e;
-    e.question = "Ray casting, every triangle tested: " + pixel_triangles_text(t) + " Which triangle does the ray through pixel (" +
-                 std::to_string(x) + ", " + std::to_string(y) + ") see?";
-    for (std::size_t k = 0; k < t.size(); ++k) e.choices.push_back("triangle " + std::to_string(k + 1));
+    auto c = cast(d, l);
+    if (!c) return std::nullopt;
+    const auto index = std::get<algo::RayFinished>(c->events[c->ray.finished]).index;
+    const std::size_t triangles = c->triangles.size();
+    Exercise e = exercise_on(*c, "Which triangle does " + through(*c) + " see?", "visible");
+    for (std::size_t k = 0; k < triangles; ++k) e.choices.push_back("triangle " + std::to_string(k + 1));
     e.choices.push_back("none: the background");
-    e.answer = finished.index < 0 ? e.choices.back() : e.choices[std::size_t(finished.index)];
-    e.deciding = algo::describe(events[ray->finished]);
-    e.deciding_step = ray->finished;
-    e.hold_at = ray->started;
-    e.given = pixel_triangles_given(t, "visible", x, y, 0);
-    e.scene = std::move(scene);
-    e.algorithm = "raycast_brute";
+    e.answer = index < 0 ? e.choices.back() : e.choices[std::size_t(index)];
     return e;
 }
 

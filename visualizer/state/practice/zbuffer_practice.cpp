@@ -28,9 +28,9 @@ const std::vector<std::string> test_choices = {"it passes: the triangle is neare
 std::optional<Exercise> depth_test_exercise(Dice& d, Level l) {
     const auto t = draw_pixel_triangles(d, l);
     if (!t) return std::nullopt;
-    const auto pixels = pixels_covered(*t, 2);
-    if (pixels.empty()) return std::nullopt;
-    const auto [x, y] = pixels[std::size_t(d.below(int(pixels.size())))];
+    const auto pixel = pick_pixel(d, *t, 2);
+    if (!pixel) return std::nullopt;
+    const auto [x, y] = *pixel;
     algo::Scene scene = pixel_triangle_scene(*t);
     const std::vector<algo::ZBufferEvent> events = play(scene);
     // the last test at the pixel: by a triangle that found another already there
@@ -59,9 +59,9 @@ std::optional<Exercise> depth_test_exercise(Dice& d, Level l) {
 std::optional<Exercise> visible_exercise(Dice& d, Level l) {
     const auto t = draw_pixel_triangles(d, l);
     if (!t) return std::nullopt;
-    const auto pixels = pixels_covered(*t, 2);
-    if (pixels.empty()) return std::nullopt;
-    const auto [x, y] = pixels[std::size_t(d.below(int(pixels.size())))];
+    const auto pixel = pick_pixel(d, *t, 2);
+    if (!pixel) return std::nullopt;
+    const auto [x, y] = *pixel;
     algo::Scene scene = pixel_triangle_scene(*t);
     const std::vector<algo::ZBufferEvent> events = play(scene);
     // the first comparison at the pixel (a triangle finding another there) is where the answer starts to show
