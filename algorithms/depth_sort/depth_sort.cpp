@@ -240,11 +240,11 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
                 co_yield PolygonMoved{q, r};
                 break;
             }
-            // Q was moved before: a cycle, or no order could be shown. Split Q by R's plane if that cuts it, else R by
-            // Q's plane.
-            std::uint32_t cut = q, by = r;
+            // Q was moved before: a cycle, or no order could be shown. As the notes say, split R by Q's plane; if that
+            // plane does not cut R, split Q by R's.
+            std::uint32_t cut = r, by = q;
             std::optional<Plane> across;  // a plane along the view rays, when no polygon's plane cuts the cycle
-            if (classify(ext[r].plane, out.polygons[q].vertices, tol) != PolygonSide::spanning) cut = r, by = q;
+            if (classify(ext[q].plane, out.polygons[r].vertices, tol) != PolygonSide::spanning) cut = q, by = r;
             if (!cuts(ext[by], out.polygons[cut])) {
                 // Neither cuts the other, and Q must go first: that is an order, not a cycle of these two (Q's mark is
                 // from another R): move it again. But only while this round has moved fewer polygons than the list

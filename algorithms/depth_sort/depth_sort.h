@@ -9,7 +9,8 @@
 //         3. R is wholly behind Q's plane (away from the viewpoint), or 4. Q is wholly in front of R's plane, or
 //         5. the projections of R and Q do not overlap
 //       if none holds, swap the roles and retry 3 and 4: if one holds, Q moves to the head of the list;
-//       if not, or if Q has moved before (a cycle), split a polygon by the plane of the other and carry on
+//       if not, or if Q has moved before (a cycle), split R by the plane of Q (or Q by R's, if Q's does not cut R)
+//       and carry on
 //     display the polygons in the order of the list (back to front)
 //
 // It works in the canonical view volume, after clipping in homogeneous clip space and the divide by w, for

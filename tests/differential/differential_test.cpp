@@ -64,23 +64,28 @@ TEST_CASE("the classes are not vacuous: a polygon missing from an image is unexp
 TEST_CASE("depth sort: a cycle of five no plane of theirs cuts is cut across, and painted right", "[differential][depth_sort]") {
     // Found by the differential test (cyclic bars, seed 4): the pairs of a five-member cycle are each ordered by a
     // plane test, yet no member's plane cuts another. The sort used to give up and draw R first (the list's order):
-    // 16 pixels at 192×144 of a bar painted over the one in front of it.
+    // 16 pixels at 192×144 of a bar painted over the one in front of it. Since the sort splits R by Q's plane, as
+    // the notes do (it split Q by R's), seed 4 breaks its cycles by the planes; seed 482 is one of the 10 seeds in
+    // 1,500 that still meets a cycle no plane of its members cuts.
     const algo::Viewport vp{192, 144};
     const auto& families = test::scene_families();
     const auto cyclic = std::find_if(families.begin(), families.end(), [](const auto& f) { return f.name == "cyclic"; });
     REQUIRE(cyclic != families.end());
-    const algo::Scene scene = cyclic->make(4, 4.0 / 3);
     const auto renderers = test::cpu_renderers();
     const auto depth_sort = std::find_if(renderers.begin(), renderers.end(), [](const auto& r) { return r.name == "depth-sort"; });
     REQUIRE(depth_sort != renderers.end());
-    const test::Tally t = against_ray_cast(scene, *depth_sort, vp);
-    CHECK(t.unexplained == 0);
-    // and the machine says how it broke the cycle
-    auto machine = algo::depth_sort(algo::sort_polygons(scene));
-    int across = 0;
-    for (const auto& e : machine)
-        if (const auto* cut = std::get_if<algo::PolygonCut>(&e)) across += cut->across;
-    CHECK(across >= 1);
+    for (const std::uint32_t seed : {4u, 482u}) {
+        INFO("seed " << seed);
+        const algo::Scene scene = cyclic->make(seed, 4.0 / 3);
+        const test::Tally t = against_ray_cast(scene, *depth_sort, vp);
+        CHECK(t.unexplained == 0);
+        // and the machine says how it broke the cycle
+        auto machine = algo::depth_sort(algo::sort_polygons(scene));
+        int across = 0;
+        for (const auto& e : machine)
+            if (const auto* cut = std::get_if<algo::PolygonCut>(&e)) across += cut->across;
+        if (seed == 482) CHECK(across >= 1);
+    }
 }
 
 TEST_CASE("occlusion culling: orthographic cameras and occluders reaching behind the eye hide nothing visible",

@@ -95,6 +95,61 @@ double parameter_of(const hsr::analysis::ExactPoint& x, const QPoint& p1, const 
     return Q((x.c[longest] - p1[longest]) / (p2[longest] - p1[longest])).get_d();
 }
 
+// The notes' depth-sort tests for the first pair, from the corners (x, y, depth) in exact rationals: the viewer is
+// at depth −∞, so its side of a plane is the side of (0, 0, −1) from it.
+std::string settling_test(const Exercise& e) {
+    const auto& g = e.given;
+    using QP = std::array<Q, 3>;
+    auto corners = [&](std::size_t k) {
+        std::array<QP, 3> c;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t a = 0; a < 3; ++a) c[i][a] = Q(g["triangles"][k][i][a].get<double>());
+        return c;
+    };
+    const auto r = corners(g["r"].get<std::size_t>() - 1), q = corners(g["q"].get<std::size_t>() - 1);
+    auto apart = [](const std::array<QP, 3>& a, const std::array<QP, 3>& b, std::size_t axis) {
+        Q alo = a[0][axis], ahi = alo, blo = b[0][axis], bhi = blo;
+        for (const QP& p : a) alo = std::min(alo, p[axis]), ahi = std::max(ahi, p[axis]);
+        for (const QP& p : b) blo = std::min(blo, p[axis]), bhi = std::max(bhi, p[axis]);
+        return ahi <= blo || bhi <= alo;
+    };
+    // the sign of the side of `p` from the plane of `t`, and the viewer's side
+    auto side = [](const std::array<QP, 3>& t, const QP& p) {
+        const QP u{t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]}, v{t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]};
+        const QP n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        return sgn(Q(n[0] * (p[0] - t[0][0]) + n[1] * (p[1] - t[0][1]) + n[2] * (p[2] - t[0][2])));
+    };
+    auto viewer = [&](const std::array<QP, 3>& t) { return side(t, {t[0][0], t[0][1], t[0][2] - 1}); };
+    // every corner of `a` on the viewer's side of b's plane or on it (toward = true), or on the far side or on it
+    auto wholly = [&](const std::array<QP, 3>& a, const std::array<QP, 3>& b, bool toward) {
+        const int v = viewer(b);
+        return std::all_of(a.begin(), a.end(), [&](const QP& p) { return side(b, p) == 0 || (side(b, p) == v) == toward; });
+    };
+    auto projections_apart = [&] {  // separating axes of two triangles; touching is apart
+        for (const auto* t : {&r, &q})
+            for (std::size_t k = 0; k < 3; ++k) {
+                const QP& a = (*t)[k];
+                const QP& b = (*t)[(k + 1) % 3];
+                auto along = [&](const QP& p) { return Q((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])); };
+                Q lo[2], hi[2];
+                for (int s = 0; s < 2; ++s) {
+                    const auto& poly = s == 0 ? r : q;
+                    lo[s] = hi[s] = along(poly[0]);
+                    for (const QP& p : poly) lo[s] = std::min(lo[s], along(p)), hi[s] = std::max(hi[s], along(p));
+                }
+                if (hi[0] <= lo[1] || hi[1] <= lo[0]) return true;
+            }
+        return false;
+    };
+    if (apart(r, q, 0)) return e.choices[0];
+    if (apart(r, q, 1)) return e.choices[1];
+    if (wholly(r, q, false)) return e.choices[2];
+    if (wholly(q, r, true)) return e.choices[3];
+    if (projections_apart()) return e.choices[4];
+    if (wholly(q, r, false) || wholly(r, q, true)) return e.choices[5];
+    return e.choices[6];
+}
+
 // The reference's answer to an exercise, from its given numbers only.
 std::string reference_answer(const Exercise& e) {
     const nlohmann::json& g = e.given;
@@ -190,6 +245,7 @@ std::string reference_answer(const Exercise& e) {
         }
         return e.choices[outside ? 1 : inside ? 0 : 2];
     }
+    if (kind == "settling_test") return settling_test(e);
     FAIL("no reference for " << kind);
     return "";
 }

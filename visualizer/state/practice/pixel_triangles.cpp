@@ -39,10 +39,9 @@ std::optional<std::vector<PixelTriangle>> draw_pixel_triangles(Dice& d, Level l)
     return t;
 }
 
-algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles) {
-    static const algo::Color colours[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}};
+algo::Scene pixel_grid_scene(std::string name) {
     algo::Scene scene;
-    scene.name = "triangles on fat pixels";
+    scene.name = std::move(name);
     scene.camera.projection = algo::Projection::orthographic;
     scene.camera.eye = {0, 0, eye_z};
     scene.camera.target = {0, 0, 0};
@@ -50,9 +49,17 @@ algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles) {
     scene.camera.far = eye_z;
     // eye space x = pixel x, eye space y = −pixel y: the box is the grid
     scene.camera.box[0] = 0, scene.camera.box[1] = pixel_grid.width, scene.camera.box[2] = -pixel_grid.height, scene.camera.box[3] = 0;
+    return scene;
+}
+
+glm::dvec4 pixel_point(dvec2 at, double depth) { return {at.x, -at.y, eye_z - depth, 1}; }
+
+algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles) {
+    static const algo::Color colours[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}};
+    algo::Scene scene = pixel_grid_scene("triangles on fat pixels");
     for (std::size_t k = 0; k < triangles.size(); ++k) {
         algo::ScenePolygon p{algo::SceneId(k + 1), colours[k % 3], {}};
-        for (const dvec2& c : triangles[k].corner) p.vertices.emplace_back(c.x, -c.y, eye_z - triangles[k].depth, 1);
+        for (const dvec2& c : triangles[k].corner) p.vertices.push_back(pixel_point(c, triangles[k].depth));
         scene.polygons.push_back(p);
     }
     return scene;

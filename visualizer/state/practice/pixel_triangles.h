@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
 #include "raster/screen_polygon.h"
@@ -30,6 +31,11 @@ struct PixelTriangle {
 // never equal), none thinner than 20 pixels²; nothing when the dice drew a thin one.
 std::optional<std::vector<PixelTriangle>> draw_pixel_triangles(Dice& d, Level l);
 algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles);
+
+// The grid's scene with no polygons yet (an orthographic camera whose box is the grid, near 1, far 10), and the
+// homogeneous world point of a pixel position at a depth in [1, 10]: for exercises whose polygons are not at one depth.
+algo::Scene pixel_grid_scene(std::string name);
+glm::dvec4 pixel_point(glm::dvec2 at, double depth);
 
 // Is the point inside the triangle (strictly)? Is it a hair (a tenth of a pixel) from an edge's line?
 bool covers(const PixelTriangle& t, glm::dvec2 p);

@@ -76,5 +76,6 @@ std::vector<Topic> bsp_topics();
 std::vector<Topic> zbuffer_topics();
 std::vector<Topic> raycast_topics();
 std::vector<Topic> culling_topics();
+std::vector<Topic> depth_sort_topics();
 
 }  // namespace hsr::viz::practice
