@@ -246,6 +246,19 @@ std::string reference_answer(const Exercise& e) {
         return e.choices[outside ? 1 : inside ? 0 : 2];
     }
     if (kind == "settling_test") return settling_test(e);
+    if (kind == "fight" || kind == "codes_apart") {  // the notes' codes, round((2^N − 1)(a + b/z)), exactly
+        const Q n(g["near"].get<double>()), f(g["far"].get<double>());
+        const Q levels = Q(mpz_class(1) << g["bits"].get<int>()) - 1;
+        auto code = [&](double z) {
+            const Q scaled = levels * (f / (f - n) + f * n / ((n - f) * Q(z)));
+            mpz_class rounded;
+            mpz_fdiv_q(rounded.get_mpz_t(), Q(scaled + Q(1, 2)).get_num_mpz_t(), Q(scaled + Q(1, 2)).get_den_mpz_t());
+            return rounded;
+        };
+        const mpz_class apart = code(g["farther"].get<double>()) - code(g["nearer"].get<double>());
+        if (kind == "codes_apart") return apart.get_str();
+        return e.choices[apart > 0 ? 0 : 1];
+    }
     FAIL("no reference for " << kind);
     return "";
 }

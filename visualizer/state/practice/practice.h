@@ -77,5 +77,6 @@ std::vector<Topic> zbuffer_topics();
 std::vector<Topic> raycast_topics();
 std::vector<Topic> culling_topics();
 std::vector<Topic> depth_sort_topics();
+std::vector<Topic> precision_topics();
 
 }  // namespace hsr::viz::practice
