@@ -256,6 +256,11 @@ std::string reference_answer(const Exercise& e) {
             return rounded;
         };
         const mpz_class apart = code(g["farther"].get<double>()) - code(g["nearer"].get<double>());
+        for (const char* square : {"farther", "nearer"}) {  // the student computes from the question's numbers
+            char text[32];
+            std::snprintf(text, sizeof text, "z = %.10g", g[square].get<double>());
+            CHECK_THAT(e.question, Catch::Contains(text));
+        }
         if (kind == "codes_apart") return apart.get_str();
         return e.choices[apart > 0 ? 0 : 1];
     }

@@ -17,7 +17,7 @@ constexpr algo::DepthFormat format = algo::DepthFormat::int24;
 
 std::string number_text(double v) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
+    std::snprintf(text, sizeof text, "%.10g", v);  // 39.999953 must not print as 40
     return text;
 }
 
