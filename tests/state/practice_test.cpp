@@ -246,6 +246,24 @@ std::string reference_answer(const Exercise& e) {
         return e.choices[outside ? 1 : inside ? 0 : 2];
     }
     if (kind == "settling_test") return settling_test(e);
+    if (kind == "active_edges" || kind == "enter_x") {  // the line through the pixel centres, y + 1/2, exactly
+        const Q line = Q(g["pixel"][1].get<int>()) + Q(1, 2);
+        int active = 0;
+        std::optional<Q> enter;
+        for (std::size_t k = 0; k < g["triangles"].size(); ++k)
+            for (std::size_t c = 0; c < 3; ++c) {
+                const auto& a = g["triangles"][k]["corners"][c];
+                const auto& b = g["triangles"][k]["corners"][(c + 1) % 3];
+                const Q ax(a[0].get<double>()), ay(a[1].get<double>()), bx(b[0].get<double>()), by(b[1].get<double>());
+                if (!(std::min(ay, by) < line && line < std::max(ay, by))) continue;
+                ++active;
+                const Q x = ax + (bx - ax) * (line - ay) / (by - ay);
+                if (k + 1 == g["triangle"].get<std::size_t>() && (!enter || x < *enter)) enter = x;
+            }
+        if (kind == "active_edges") return std::to_string(active);
+        REQUIRE(enter);
+        return std::to_string(enter->get_d());
+    }
     if (kind == "fight" || kind == "codes_apart") {  // the notes' codes, round((2^N − 1)(a + b/z)), exactly
         const Q n(g["near"].get<double>()), f(g["far"].get<double>());
         const Q levels = Q(mpz_class(1) << g["bits"].get<int>()) - 1;

@@ -78,5 +78,6 @@ std::vector<Topic> raycast_topics();
 std::vector<Topic> culling_topics();
 std::vector<Topic> depth_sort_topics();
 std::vector<Topic> precision_topics();
+std::vector<Topic> scanline_topics();
 
 }  // namespace hsr::viz::practice
