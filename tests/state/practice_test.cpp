@@ -246,6 +246,19 @@ std::string reference_answer(const Exercise& e) {
         return e.choices[outside ? 1 : inside ? 0 : 2];
     }
     if (kind == "settling_test") return settling_test(e);
+    if (kind == "hiz_occluded") {  // every pixel of the footprint holds something drawn nearer than the box
+        const auto& f = g["footprint"];
+        for (int y = f[1].get<int>(); y < f[3].get<int>(); ++y)
+            for (int x = f[0].get<int>(); x < f[2].get<int>(); ++x) {
+                double depth = 10;  // the background
+                for (const auto& r : g["drawn"])
+                    if (r["pixels"][0].get<int>() <= x && x < r["pixels"][2].get<int>() && r["pixels"][1].get<int>() <= y &&
+                        y < r["pixels"][3].get<int>())
+                        depth = std::min(depth, r["depth"].get<double>());
+                if (!(depth < g["near"].get<double>())) return e.choices[1];
+            }
+        return e.choices[0];
+    }
     if (kind == "active_edges" || kind == "enter_x") {  // the line through the pixel centres, y + 1/2, exactly
         const Q line = Q(g["pixel"][1].get<int>()) + Q(1, 2);
         int active = 0;

@@ -79,5 +79,6 @@ std::vector<Topic> culling_topics();
 std::vector<Topic> depth_sort_topics();
 std::vector<Topic> precision_topics();
 std::vector<Topic> scanline_topics();
+std::vector<Topic> hiz_topics();
 
 }  // namespace hsr::viz::practice
