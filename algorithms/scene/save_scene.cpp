@@ -64,7 +64,8 @@ std::string scene_toml(const Scene& s) {
         for (const auto& p : f.portals) {
             toml::table portal{{"between", toml::array{p.between[0], p.between[1]}}, {"from", vec2(p.from)}, {"to", vec2(p.to)}};
             if (p.shape.empty()) {
-                portal.insert("bottom", p.bottom), portal.insert("top", p.top);
+                portal.insert("bottom", p.bottom);
+                if (p.top > 0) portal.insert("top", p.top);  // 0, as a plan made in code may say: up to the ceiling
             } else {
                 toml::array shape;
                 for (const auto& q : p.shape) shape.push_back(vec2(q));

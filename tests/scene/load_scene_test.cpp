@@ -153,6 +153,17 @@ TEST_CASE("every scene saved to TOML loads back the same, to the last bit", "[sc
     CHECK(scenes > 20);
 }
 
+TEST_CASE("a floor plan made in code, its openings up to the ceiling (top 0), saves as a file that loads", "[scene]") {
+    Scene made;
+    made.floor_plan.height = 2.5;
+    made.floor_plan.cells = {{"A", {{0, 0}, {2, 0}, {2, 2}, {0, 2}}, 0}, {"B", {{2, 0}, {4, 0}, {4, 2}, {2, 2}}, 0}};
+    made.floor_plan.portals = {{{"A", "B"}, {2, 0.5}, {2, 1}, 0, 0, {}, 0}};
+    const Scene loaded = load_scene_text("made.toml", scene_toml(made));
+    REQUIRE(loaded.floor_plan.portals.size() == 1);
+    CHECK(loaded.floor_plan.portals[0].top == 2.5);  // as a file without `top` says: the ceiling
+    CHECK(loaded.floor_plan.portals[0].to == glm::dvec2(2, 1));
+}
+
 TEST_CASE("an OBJ mesh whose face names a vertex past the list is refused, naming the face", "[scene][errors][mesh]") {
     const auto dir = std::filesystem::temp_directory_path() / "hsrviz_mesh_test";
     std::filesystem::create_directories(dir);

@@ -246,6 +246,28 @@ std::string reference_answer(const Exercise& e) {
         return e.choices[outside ? 1 : inside ? 0 : 2];
     }
     if (kind == "settling_test") return settling_test(e);
+    if (kind == "farthest_visible") {  // the PVS by sampled rays: lines through points inside the first opening and
+        const auto& o = g["openings"];   // inside the last, strictly inside every opening between
+        auto sees_through = [&](std::size_t last) {
+            constexpr int samples = 96;
+            const double xa = o[0][0], xb = o[last][0];
+            for (int i = 0; i < samples; ++i)
+                for (int j = 0; j < samples; ++j) {
+                    const double ya = o[0][1].get<double>() + (o[0][2].get<double>() - o[0][1].get<double>()) * (i + 0.5) / samples;
+                    const double yb = o[last][1].get<double>() + (o[last][2].get<double>() - o[last][1].get<double>()) * (j + 0.5) / samples;
+                    bool through = true;
+                    for (std::size_t k = 1; k < last && through; ++k) {
+                        const double y = ya + (yb - ya) * (o[k][0].get<double>() - xa) / (xb - xa);
+                        through = o[k][1].get<double>() < y && y < o[k][2].get<double>();
+                    }
+                    if (through) return true;
+                }
+            return false;
+        };
+        std::size_t farthest = 0;  // room B, behind the first opening, is always seen
+        while (farthest + 1 < o.size() && sees_through(farthest + 1)) ++farthest;
+        return e.choices[farthest];
+    }
     if (kind == "hiz_occluded") {  // every pixel of the footprint holds something drawn nearer than the box
         const auto& f = g["footprint"];
         for (int y = f[1].get<int>(); y < f[3].get<int>(); ++y)

@@ -15,7 +15,8 @@ std::span<const Topic> topics() {
     static const std::vector<Topic> all = [] {
         std::vector<Topic> t;
         for (auto family : {clipping_topics, backface_topics, bsp_topics, zbuffer_topics, precision_topics, scanline_topics, raycast_topics,
-                            culling_topics, hiz_topics, depth_sort_topics})
+                            culling_topics, hiz_topics, depth_sort_topics,
+                            portal_topics})
             for (Topic& topic : family()) t.push_back(std::move(topic));
         return t;
     }();

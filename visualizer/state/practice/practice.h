@@ -80,5 +80,6 @@ std::vector<Topic> depth_sort_topics();
 std::vector<Topic> precision_topics();
 std::vector<Topic> scanline_topics();
 std::vector<Topic> hiz_topics();
+std::vector<Topic> portal_topics();
 
 }  // namespace hsr::viz::practice
