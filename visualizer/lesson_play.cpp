@@ -164,6 +164,9 @@ void Lessonplay::play_exercise(const AppOptions& o) {
     family.reset();  // the exercise starts at its first step
     classroom = Classroom{};
     load(o);
+    // open where the question is asked: the picture it is about, every event before the one that decides it (Left
+    // and Home step back through them)
+    if (const auto hold = practice.hold(); hold && session()) session()->seek(*hold);
     std::printf("hsrviz: practice %s, series %llu, exercise %llu: %s\n", e->topic.c_str(), (unsigned long long)e->series,
                 (unsigned long long)(e->index + 1), e->question.c_str());
 }

@@ -103,13 +103,13 @@ std::string triangle_text(const SortTriangle& t) {
 }
 
 const std::vector<std::string> settling_choices = {
-    "1. the x extents are apart",
-    "2. the y extents are apart",
-    "3. R is wholly behind Q's plane",
-    "4. Q is wholly in front of R's plane",
-    "5. the projections are apart",
-    "none of 1–5; swapped, 3 or 4 holds: Q moves ahead of R",
-    "none: one triangle is split by the other's plane",
+    "test 1: the x extents are apart",
+    "test 2: the y extents are apart",
+    "test 3: R is wholly behind Q's plane",
+    "test 4: Q is wholly in front of R's plane",
+    "test 5: the projections are apart",
+    "swapped, 3 or 4 holds: Q moves ahead of R",
+    "none: a triangle is split by the other's plane",
 };
 
 std::optional<Exercise> settling_exercise(Dice& d, Level l) {
