@@ -152,9 +152,11 @@ void Lessonplay::play_exercise(const AppOptions& o) {
         return;
     }
     const std::string folder = output_folder("hsrviz-export");
-    const std::string file = folder + "/practice-" + e->topic + "-series" + std::to_string(e->series) + "-" +
-                             std::to_string(e->index + 1) + ".toml";
-    if (!make_folder(folder) || !(std::ofstream(file) << algo::scene_toml(e->scene) << std::flush)) {
+    // the exercise's scene, and a lesson beside it naming the algorithm and (culling) the stages
+    const std::string name = "practice-" + e->topic + "-series" + std::to_string(e->series) + "-" + std::to_string(e->index + 1);
+    const std::string scene_file = folder + "/" + name + ".toml", file = folder + "/" + name + "-lesson.toml";
+    if (!make_folder(folder) || !(std::ofstream(scene_file) << algo::scene_toml(e->scene) << std::flush) ||
+        !(std::ofstream(file) << practice::lesson_toml(*e, name + ".toml") << std::flush)) {
         tell("practice: could not write " + file);
         return;
     }

@@ -167,6 +167,12 @@ Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* h, Came
             for (std::uint32_t c : h->nodes[n].children) stack.push_back(c);
         }
     };
+    const auto candidate = [&](std::uint32_t p) { return o.candidates.empty() || o.candidates[p] != 0; };
+    const auto candidates_below = [&](std::uint32_t top) {
+        std::uint32_t count = 0;
+        each_below(top, [&](std::uint32_t p) { count += candidate(p); });
+        return count;
+    };
     std::vector<std::pair<std::uint32_t, std::uint8_t>> stack;  // node, the planes still to test (clip flags)
     if (!h->nodes.empty()) stack.push_back({0, std::uint8_t(o.frustum ? 0x3f : 0)});
     while (!stack.empty()) {
@@ -184,25 +190,26 @@ Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* h, Came
             if (side > 0) e.mask_after = std::uint8_t(e.mask_after & ~(1 << k));
         }
         if (e.outcome == NodeOutcome::outside) {
-            out.outside += node.subtree_primitives;
+            out.outside += candidates_below(n);
             co_yield e;
             continue;
         }
         // Detail culling: too small on the screen to matter
         if (o.detail_pixels > 0 && (e.pixels = projected_pixels(node.box, camera, o.viewport_height)) < o.detail_pixels) {
             e.outcome = NodeOutcome::too_small;
-            out.too_small += node.subtree_primitives;
+            out.too_small += candidates_below(n);
             co_yield e;
             continue;
         }
         if (o.frustum && e.mask_after == 0) e.outcome = NodeOutcome::inside;
         co_yield e;
         if (e.outcome == NodeOutcome::inside && o.detail_pixels <= 0) {  // accepted with its subtree, no more tests
-            each_below(n, [&](std::uint32_t p) { out.kept[p] = 1; });
+            each_below(n, [&](std::uint32_t p) { out.kept[p] = candidate(p); });
             continue;
         }
         // the node's own primitives: each box against the planes still to test
         for (std::uint32_t p : node.primitives) {
+            if (!candidate(p)) continue;  // left out before this stage
             const bool in = box_passes(h->boxes[p], frustum, e.mask_after, &out.plane_tests);
             out.kept[p] = in;
             out.outside += !in;

@@ -53,12 +53,15 @@ struct HierarchyCullOptions {
     bool frustum = true;
     double detail_pixels = 0;    // leave out nodes projected smaller than this many pixels across (0: off)
     int viewport_height = 600;   // pixels, for the projected size
+    // per primitive: did it reach this stage (earlier stages of a pipeline kept it)? Empty: all did. The others are
+    // neither kept nor counted as outside or too small.
+    std::vector<std::uint8_t> candidates;
 };
 
 struct HierarchyCull {
     std::vector<std::uint8_t> kept;  // per primitive
     std::uint32_t nodes_tested = 0, plane_tests = 0;
-    std::uint32_t outside = 0, too_small = 0;  // primitives left out by each
+    std::uint32_t outside = 0, too_small = 0;  // primitives left out by each (candidates only)
 };
 
 // The hierarchy must outlive the machine.

@@ -178,7 +178,9 @@ Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZB
         std::sort(children.begin(), children.end(), [&](std::uint32_t a, std::uint32_t b) { return distance(a) < distance(b); });
         for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(*it);
     }
-    co_yield HizFinished{nodes, out.occluded_nodes, rendered, std::uint32_t(h->boxes.size()) - rendered};
+    // left out: of the primitives that reached this stage (the enabled ones), those not rendered
+    const auto reached = enabled.empty() ? std::uint32_t(h->boxes.size()) : std::uint32_t(std::count(enabled.begin(), enabled.end(), 1));
+    co_yield HizFinished{nodes, out.occluded_nodes, rendered, reached - rendered};
     co_return out;
 }
 

@@ -66,6 +66,7 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
     for (const Stage stage : all_stages) {
         StageReport r{stage};
         r.in = std::uint32_t(std::count(out.kept.begin(), out.kept.end(), 1));
+        r.candidates = out.kept;
         if (!wanted(stage) || (stage == Stage::hse && rendered) || (stage == Stage::portals && !model)) {
             r.passed = r.in;
             out.stages.push_back(r);
@@ -89,9 +90,10 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
                     if (scene.polygons[i].id == front[k]) keep[i] = 1, ++k;
                 break;
             }
-            case Stage::frustum: keep = cull_hierarchy(&hierarchy, scene.camera, {.frustum = true}).run_to_end().kept; break;
+            case Stage::frustum: keep = cull_hierarchy(&hierarchy, scene.camera, {.frustum = true, .candidates = out.kept}).run_to_end().kept; break;
             case Stage::detail:
-                keep = cull_hierarchy(&hierarchy, scene.camera, {.frustum = false, .detail_pixels = o.detail_pixels, .viewport_height = o.viewport.height})
+                keep = cull_hierarchy(&hierarchy, scene.camera,
+                                      {.frustum = false, .detail_pixels = o.detail_pixels, .viewport_height = o.viewport.height, .candidates = out.kept})
                            .run_to_end()
                            .kept;
                 break;

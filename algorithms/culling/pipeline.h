@@ -40,6 +40,9 @@ struct StageReport {
     bool ran = false;
     std::uint32_t in = 0, left_out = 0, passed = 0;
     double milliseconds = 0;
+    // per polygon: reached this stage (kept by every stage before it). A stage counts what it leaves out among
+    // these only, so that a lesson's machine run on them says the number the pipeline says.
+    std::vector<std::uint8_t> candidates;
 };
 
 struct PipelineResult {

@@ -434,6 +434,7 @@ case "$case" in
     echo "$out"
     grep -q "^hsrviz: practice cohen_sutherland, series 1, exercise 1: " <<< "$out"
     test -f hsrviz-export/practice-cohen_sutherland-series1-1.toml
+    grep -q "^algorithm = \"cohen_sutherland\"$" hsrviz-export/practice-cohen_sutherland-series1-1-lesson.toml
     test "$(at "$out")" -eq "$want"
     # answered with key 1: right or wrong, the player shows the deciding event
     out=$("$hsrviz" "$lesson" --screenshot p.png --frames 6 --keys X,1)

@@ -414,12 +414,14 @@ TEST_CASE("practice grading: numbers with a comma or a minus sign, choices by nu
 TEST_CASE("practice: the exercise's scene, saved and played as the window plays it, decides at the step it names", "[practice]") {
     namespace p = hsr::viz::practice;
     const std::string path = (std::filesystem::temp_directory_path() / "hsrviz_practice_scene.toml").string();
+    const std::string lesson_path = (std::filesystem::temp_directory_path() / "hsrviz_practice_lesson.toml").string();
     for (const p::Topic& topic : p::topics())
         for (std::uint64_t i = 0; i < 12; ++i) {
             const Exercise e = p::exercise(topic, 77, i, Level(1 + i % 3));
             INFO(topic.id << " exercise " << i << ": " << e.question);
             std::ofstream(path) << hsr::algo::scene_toml(e.scene);
-            const hsr::viz::Lesson lesson = hsr::viz::load_lesson(path, e.algorithm);
+            std::ofstream(lesson_path) << p::lesson_toml(e, "hsrviz_practice_scene.toml");
+            const hsr::viz::Lesson lesson = hsr::viz::load_lesson(lesson_path);
             std::ostringstream trace;
             hsr::viz::trace_lesson(lesson, &trace);
             std::istringstream lines(trace.str());
@@ -430,6 +432,7 @@ TEST_CASE("practice: the exercise's scene, saved and played as the window plays 
             CHECK(event["text"] == e.deciding);
         }
     std::filesystem::remove(path);
+    std::filesystem::remove(lesson_path);
 }
 
 TEST_CASE("the window's practice: a series from its first exercise, held before the deciding step, scored per topic", "[practice]") {

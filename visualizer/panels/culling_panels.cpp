@@ -90,6 +90,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     const CullingView& v = s.culling_view();
     std::string header = std::string(to_string(s.culling_machine())) + ": " + std::to_string(v.kept) + " kept, " +
                          std::to_string(v.left_out) + " left out so far";
+    if (v.earlier > 0) header += " (and " + std::to_string(v.earlier) + " by the stages before)";
     if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + std::to_string(v.plane_tests) + " plane tests";
     if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + std::to_string(v.texels) + " texels tested";
     wrapped_text(header + " · V: god's eye / camera", dim_text);

@@ -59,7 +59,7 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
         else if (!many)
             for (std::size_t k = 0; k < p.vertices.size(); ++k)
                 out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
-                               c * glm::vec4(1, 1, 1, m == PrimitiveMark::left_out ? 0.12f : 0.35f));
+                               c * glm::vec4(1, 1, 1, m == PrimitiveMark::left_out || m == PrimitiveMark::earlier ? 0.12f : 0.35f));
     }
     // the hierarchy's boxes, by what happened to them: the node under test bold, the nodes on its way down from the
     // root in full colour, what is settled dimmed; a node decided whole (rejected, accepted, too small, occluded)

@@ -23,7 +23,8 @@ void mark_subtree(CullingView& v, std::uint32_t node, NodeMark mark, PrimitiveMa
         const std::uint32_t n = stack.back();
         stack.pop_back();
         v.nodes[n] = mark;
-        for (std::uint32_t p : h.nodes[n].primitives) v.primitives[p] = prims;
+        for (std::uint32_t p : h.nodes[n].primitives)
+            if (v.primitives[p] != PrimitiveMark::earlier) v.primitives[p] = prims;
         for (std::uint32_t c : h.nodes[n].children) stack.push_back(c);
     }
 }
@@ -31,6 +32,7 @@ void mark_subtree(CullingView& v, std::uint32_t node, NodeMark mark, PrimitiveMa
 void count(CullingView& v) {
     v.kept = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::kept));
     v.left_out = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::left_out));
+    v.earlier = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::earlier));
 }
 
 }  // namespace
@@ -48,6 +50,19 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     w->pipeline = run_pipeline(w->scene, {.stages = parse_stages(lesson.cull), .viewport = lesson.grid, .hierarchy = kind,
                                           .detail_pixels = w->detail_pixels})
                       .stages;
+    // the stage the lesson's machine is: it starts from what the stages before it kept
+    const std::optional<Stage> stage = [&]() -> std::optional<Stage> {
+        switch (machine_of<CullingMachine>(lesson)) {
+            case CullingMachine::frustum: return Stage::frustum;
+            case CullingMachine::detail: return Stage::detail;
+            case CullingMachine::occluders: return Stage::occluders;
+            case CullingMachine::hiz: return Stage::hiz;
+            case CullingMachine::bounds: break;
+        }
+        return std::nullopt;
+    }();
+    for (const StageReport& r : w->pipeline)
+        if (stage && r.stage == *stage) w->candidates = r.candidates;
     return w;
 }
 
@@ -88,7 +103,8 @@ void reduce(CullingView& v, const HierarchyCullEvent& event) {
                                const auto& node = v.world->hierarchy.nodes[e.node];
                                // its own primitives: kept unless their boxes fail a plane still to test
                                for (std::uint32_t p : node.primitives)
-                                   v.primitives[p] = box_passes(v.world->hierarchy.boxes[p], v.world->frustum, e.mask_after)
+                                   if (v.primitives[p] != PrimitiveMark::earlier)
+                                       v.primitives[p] = box_passes(v.world->hierarchy.boxes[p], v.world->frustum, e.mask_after)
                                                          ? PrimitiveMark::kept
                                                          : PrimitiveMark::left_out;
                                break;
@@ -136,6 +152,7 @@ void reduce(CullingView& v, const HizEvent& event) {
                        if (e.outcome == HizOutcome::rendered) {
                            v.nodes[e.node] = NodeMark::visible;
                            for (std::uint32_t p : v.world->hierarchy.nodes[e.node].primitives) {
+                               if (v.primitives[p] == PrimitiveMark::earlier) continue;  // as the machine skips it
                                v.primitives[p] = PrimitiveMark::kept;
                                v.rendered.push_back(p);
                            }
@@ -207,6 +224,9 @@ CullingView initial_view(const std::shared_ptr<const CullingWorld>& world) {
     v.world = world;
     v.nodes.assign(world->hierarchy.nodes.size(), NodeMark::untouched);
     v.primitives.assign(world->scene.polygons.size(), PrimitiveMark::untouched);
+    for (std::size_t p = 0; p < world->candidates.size(); ++p)
+        if (!world->candidates[p]) v.primitives[p] = PrimitiveMark::earlier;
+    count(v);
     return v;
 }
 
@@ -216,16 +236,16 @@ Steps<HierarchyEvent, Hierarchy> steps_of(const CullingWorld& w, const Lesson&, 
 }
 Steps<HierarchyCullEvent, HierarchyCull> steps_of(const CullingWorld& w, const Lesson& lesson, HierarchyCullEvent*) {
     const HierarchyCullOptions o = machine_of<CullingMachine>(lesson) == CullingMachine::frustum
-                                       ? HierarchyCullOptions{.frustum = true}
+                                       ? HierarchyCullOptions{.frustum = true, .candidates = w.candidates}
                                        : HierarchyCullOptions{.frustum = false, .detail_pixels = w.detail_pixels,
-                                                              .viewport_height = lesson.grid.height};
+                                                              .viewport_height = lesson.grid.height, .candidates = w.candidates};
     return cull_hierarchy(&w.hierarchy, w.scene.camera, o);
 }
 Steps<OcclusionEvent, OcclusionCull> steps_of(const CullingWorld& w, const Lesson&, OcclusionEvent*) {
-    return occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4});
+    return occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4, .candidates = w.candidates});
 }
 Steps<HizEvent, HizResult> steps_of(const CullingWorld& w, const Lesson&, HizEvent*) {
-    return hiz_render(&w.scene, &w.hierarchy, w.zbuffer);
+    return hiz_render(&w.scene, &w.hierarchy, w.zbuffer, w.candidates);
 }
 
 }  // namespace

@@ -23,10 +23,13 @@ struct CullingWorld {
     algo::ZBufferOptions zbuffer;              // the lesson's grid, for the Z-pyramid
     std::vector<algo::Plane> frustum;          // the camera's view frustum
     double detail_pixels = 0;
+    // per polygon: reached the lesson's stage, kept by the pipeline's stages before it (empty: all, for the bounds
+    // lesson). The machine runs on these only, so that its counts are the pipeline's.
+    std::vector<std::uint8_t> candidates;
 };
 
 enum class NodeMark : std::uint8_t { untouched, built, outside, inside, partial, too_small, occluded, visible };
-enum class PrimitiveMark : std::uint8_t { untouched, kept, left_out };
+enum class PrimitiveMark : std::uint8_t { untouched, kept, left_out, earlier };  // earlier: left out by a stage before
 
 struct CullingView {
     std::shared_ptr<const CullingWorld> world;
@@ -35,7 +38,7 @@ struct CullingView {
     std::vector<std::uint32_t> occluders;       // polygons chosen, best first
     std::vector<std::uint32_t> rendered;        // Hi-Z: primitives rendered, in order (the pyramid is rebuilt from them)
     std::int32_t current = -1;                  // the node last touched
-    std::uint32_t kept = 0, left_out = 0, plane_tests = 0, texels = 0;
+    std::uint32_t kept = 0, left_out = 0, earlier = 0, plane_tests = 0, texels = 0;
     bool done = false;
 };
 std::size_t approx_bytes(const CullingView& view);

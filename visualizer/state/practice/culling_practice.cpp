@@ -110,6 +110,7 @@ std::optional<Exercise> node_exercise(Dice& d, Level l) {
                {"cell", {{box.lo.x, box.lo.y, box.lo.z}, {box.hi.x, box.hi.y, box.hi.z}}}};
     x.scene = std::move(scene);
     x.algorithm = "cull_frustum";
+    x.cull = "frustum";
     return x;
 }
 

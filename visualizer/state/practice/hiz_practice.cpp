@@ -126,6 +126,7 @@ std::optional<Exercise> occlusion_exercise(Dice& d, Level l) {
     e.given = {{"kind", "hiz_occluded"}, {"drawn", drawn_json}, {"footprint", {f.x0, f.y0, f.x1, f.y1}}, {"near", near_depth}};
     e.scene = std::move(scene);
     e.algorithm = "cull_hiz";
+    e.cull = "hiz";  // the Z-pyramid alone: no earlier stage leaves a rectangle out
     return e;
 }
 

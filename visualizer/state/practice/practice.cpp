@@ -66,6 +66,15 @@ std::optional<double> number(std::string_view s) {
 }
 }  // namespace
 
+std::string lesson_toml(const Exercise& e, std::string_view scene_file) {
+    std::string t = "# Written by hsrviz's practice: exercise " + std::to_string(e.index + 1) + " of series " + std::to_string(e.series) + "\n";
+    t += "title = \"Practice: " + e.topic + ", series " + std::to_string(e.series) + ", exercise " + std::to_string(e.index + 1) + "\"\n";
+    t += "algorithm = \"" + e.algorithm + "\"\n";
+    t += "scene = \"" + std::string(scene_file) + "\"\n";
+    if (!e.cull.empty()) t += "cull = \"" + e.cull + "\"\n";
+    return t;
+}
+
 bool grade(const Exercise& e, std::string_view reply) {
     reply = trimmed(reply);
     if (e.choices.empty()) {

@@ -36,6 +36,8 @@ struct Exercise {
     nlohmann::json given;               // the question's data (points, planes, …) as numbers, for answer sheets and tests
     algo::Scene scene;                  // what the window plays, with `algorithm` (a registry id): the deciding
     std::string algorithm;              // event is its step `deciding_step`
+    std::string cull;                   // culling exercises: the pipeline's stages, as a lesson's `cull` names them
+                                        // (empty: a lesson's default, every stage)
 };
 
 // A topic's exercise maker: the exercise for one seed, or nothing when the scene drawn was degenerate or the question
@@ -65,6 +67,10 @@ bool grade(const Exercise& e, std::string_view reply);
 
 // A number as an answer: at most `digits` decimals, no trailing zeros ("0.4839", "0.8", "-3").
 std::string decimal_text(double v, int digits);
+
+// The lesson file the window plays an exercise from: its algorithm, its stages, and its scene saved as `scene_file`
+// (a name beside the lesson file).
+std::string lesson_toml(const Exercise& e, std::string_view scene_file);
 
 // One line of `hsrviz practice`'s JSON Lines.
 nlohmann::ordered_json to_json(const Exercise& e);
