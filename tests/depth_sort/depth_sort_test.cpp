@@ -7,6 +7,7 @@
 #include "analysis/painters.h"
 #include "raster/image.h"
 #include "depth_sort/depth_sort.h"
+#include "depth_sort/front_to_back.h"
 #include "raycast/ray_cast.h"
 #include "scene/load_scene.h"
 #include "scene/random_scene.h"
@@ -343,4 +344,48 @@ TEST_CASE("depth sort ends on interpenetrating triangles whose moves go round a 
     const DepthSortResult bounded = depth_sort(sort_polygons(scene), {.max_pairs = 50}).run_to_end();
     CHECK(bounded.bounded);
     CHECK(bounded.pairs == 51);
+}
+
+TEST_CASE("front-to-back display: the nearest polygon fills the screen, the display stops, the rest are never drawn", "[depth_sort]") {
+    // A square over the whole canonical volume's face, nearest; two smaller ones behind it
+    std::vector<SortPolygon> p = {poly(1, {{-0.2, -0.2, 0.6}, {0.2, -0.2, 0.6}, {0.2, 0.2, 0.6}, {-0.2, 0.2, 0.6}}),
+                                  poly(2, {{-1, -1, -0.5}, {1, -1, -0.5}, {1, 1, -0.5}, {-1, 1, -0.5}}),
+                                  poly(3, {{0.1, 0.1, 0.3}, {0.5, 0.1, 0.3}, {0.5, 0.5, 0.3}, {0.1, 0.5, 0.3}})};
+    const Run sorted = run(p);
+    const Viewport vp{16, 12};
+    std::vector<FrontToBackEvent> events;
+    auto machine = display_front_to_back(sorted.result.polygons, sorted.result.order, vp);
+    for (const auto& e : machine) events.push_back(e);
+    const FrontToBackResult& r = machine.result();
+    REQUIRE(events.size() == 2);
+    const auto& first = std::get<FrontPolygonDrawn>(events[0]);
+    CHECK(first.id == 2);
+    CHECK(first.written == 16u * 12u);
+    CHECK(first.unwritten == 0);
+    CHECK(std::get<ScreenFilled>(events[1]) == ScreenFilled{1, 2});
+    CHECK(r.drawn == 1);
+    CHECK(r.left == 2);
+    for (const SceneId id : r.image.ids) CHECK(id == 2);
+    CHECK_THAT(describe(events[1]), Catch::Contains("stop"));
+}
+
+TEST_CASE("front-to-back display: a polygon is written only where no nearer one was, and the list runs out on a gap", "[depth_sort]") {
+    // the near square covers the middle; the far one, larger, shows round it; the corners stay background
+    std::vector<SortPolygon> p = {poly(1, {{-0.8, -0.8, 0.5}, {0.8, -0.8, 0.5}, {0.8, 0.8, 0.5}, {-0.8, 0.8, 0.5}}),
+                                  poly(2, {{-0.4, -0.4, -0.5}, {0.4, -0.4, -0.5}, {0.4, 0.4, -0.5}, {-0.4, 0.4, -0.5}})};
+    const Run sorted = run(p);
+    const Viewport vp{20, 20};
+    std::vector<FrontToBackEvent> events;
+    auto machine = display_front_to_back(sorted.result.polygons, sorted.result.order, vp);
+    for (const auto& e : machine) events.push_back(e);
+    REQUIRE(events.size() == 3);
+    const auto& near = std::get<FrontPolygonDrawn>(events[0]);
+    const auto& far = std::get<FrontPolygonDrawn>(events[1]);
+    CHECK(near.id == 2);
+    CHECK(near.written == 8u * 8u);  // [-0.4, 0.4] of 20 pixels across 2 units: 8 × 8
+    CHECK(near.hidden == 0);
+    CHECK(far.id == 1);
+    CHECK(far.written == 16u * 16u - 8u * 8u);
+    CHECK(far.hidden == 8u * 8u);
+    CHECK(std::get<FrontDisplayFinished>(events[2]) == FrontDisplayFinished{2, 20u * 20u - 16u * 16u});
 }

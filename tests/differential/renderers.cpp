@@ -2,6 +2,7 @@
 #include "renderers.h"
 
 #include "analysis/painters.h"
+#include "depth_sort/front_to_back.h"
 #include "culling/pipeline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
@@ -49,6 +50,18 @@ Drawn depth_sort(const algo::Scene& s, algo::Viewport vp) {
     return d;
 }
 
+// The same sort displayed front to back (the notes' optimisation): each pixel written once, by the nearest.
+Drawn depth_sort_front_to_back(const algo::Scene& s, algo::Viewport vp) {
+    const algo::DepthSortResult sorted = algo::depth_sort(algo::sort_polygons(s)).run_to_end();
+    Drawn d{algo::display_front_to_back(sorted.polygons, sorted.order, vp).run_to_end().image.ids, {}, sorted.bounded};
+    for (const algo::SortPolygon& part : sorted.polygons) {
+        std::vector<glm::dvec4> ndc;
+        for (const algo::Vec3& v : part.vertices) ndc.emplace_back(v, 1.0);
+        add_outline(d.parts, part.id, ndc, vp);
+    }
+    return d;
+}
+
 // The culling pipeline's conservative stages, then its z-buffer: what they leave out must not change the picture.
 Drawn culled(const algo::Scene& s, algo::Viewport vp) {
     algo::PipelineResult r = algo::run_pipeline(s, {.stages = algo::parse_stages("frustum,occluders,hiz"), .viewport = vp});
@@ -78,6 +91,7 @@ std::vector<Renderer> cpu_renderers() {
         r.push_back({std::string("bsp ") + name, {}, [rr](const auto& s, auto vp) { return bsp(s, vp, rr); }});
     }
     r.push_back({"depth-sort", {}, depth_sort});
+    r.push_back({"depth-sort front to back", {}, depth_sort_front_to_back});
     r.push_back({"culling frustum,occluders,hiz", {F::int24}, culled});
     return r;
 }
