@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "clipping/sutherland_hodgman.h"
+#include "depth_sort/front_to_back.h"
 #include "core/numeric.h"
 #include "raster/screen_polygon.h"
 
@@ -294,7 +295,14 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
         list.pop_front();
         moves_since_drawn = 0;
         out.order.push_back(r);
-        co_yield PolygonPainted{r, out.polygons[r].id};
+        co_yield PolygonPainted{r, out.polygons[r].id, o.front_to_back.has_value()};
+    }
+    if (o.front_to_back) {  // the display step, nearest first, until the screen is full
+        auto display = display_front_to_back(out.polygons, out.order, *o.front_to_back);
+        for (const FrontToBackEvent& e : display) {
+            const DepthSortEvent event = std::visit([](const auto& x) -> DepthSortEvent { return x; }, e);
+            co_yield event;
+        }
     }
     co_yield DepthSortFinished{std::uint32_t(out.order.size()), out.splits, out.moves, out.pairs};
     co_return out;

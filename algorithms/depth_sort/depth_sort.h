@@ -24,6 +24,7 @@
 #include "core/plane.h"
 #include "core/steps.h"
 #include "depth_sort/depth_sort_events.h"
+#include "raster/screen_polygon.h"
 
 namespace hsr::algo {
 
@@ -39,6 +40,9 @@ struct DepthSortOptions {
     // step bound: pairs examined in all; by default 256 n² for n polygons, at least 10^5 and at most 5·10^7 (a few
     // seconds): a sort of n polygons examines far fewer, so reaching it means the input defeats the algorithm
     std::optional<std::uint64_t> max_pairs;
+    // the notes' optimisation of the display step: after the sort, draw the list front to back on a screen of this
+    // size, each pixel once, and stop when every pixel is written (front_to_back.h); its events follow the sort's
+    std::optional<Viewport> front_to_back;
 };
 
 struct DepthSortResult {

@@ -60,10 +60,26 @@ std::string describe(const DepthSortEvent& event) {
                            " across its length, by a plane along the view rays, into #" + n(e.front) + " and #" + n(e.back) + ".";
                 return "Split #" + n(e.polygon) + " by the plane of #" + n(e.by) + " into #" + n(e.front) + " and #" + n(e.back) + ".";
             },
-            [](const PolygonPainted& e) { return "Draw #" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ")."; },
+            [](const PolygonPainted& e) {
+                if (e.deferred)
+                    return "#" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ") joins the output list, to be drawn in the display step.";
+                return "Draw #" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ").";
+            },
             [](const DepthSortFinished& e) {
                 return "Done: " + n(e.drawn) + " drawn after " + n(e.pairs) + (e.pairs == 1 ? " pair, " : " pairs, ") + n(e.moves) +
                        (e.moves == 1 ? " move and " : " moves and ") + n(e.splits) + (e.splits == 1 ? " split." : " splits.");
+            },
+            [](const FrontPolygonDrawn& e) {
+                return "Draw #" + n(e.polygon) + " (polygon " + std::to_string(e.id) + ") front to back: " + n(e.written) +
+                       " pixels written, " + n(e.hidden) + " already written by nearer polygons; " + n(e.unwritten) +
+                       " pixels still unwritten.";
+            },
+            [](const ScreenFilled& e) {
+                return "Every pixel is written after " + n(e.drawn) + " polygons: stop; the " + n(e.left) +
+                       " farther polygons are hidden and never drawn.";
+            },
+            [](const FrontDisplayFinished& e) {
+                return "Front to back: all " + n(e.drawn) + " polygons drawn; " + n(e.unwritten) + " pixels show the background.";
             },
             [](const SortBoundReached& e) {
                 return "Stopped: the bound of " + n(e.limit) + (e.bound == SortBound::splits ? " splits" : " pairs examined") + " was reached.";

@@ -70,6 +70,7 @@ struct PolygonPainted {
     static constexpr std::string_view kind = "PolygonPainted";
     std::uint32_t polygon;
     SceneId id;
+    bool deferred = false;  // the display is front to back: R joins the output list, drawn in the display step
     bool operator==(const PolygonPainted&) const = default;
 };
 struct DepthSortFinished {
@@ -86,8 +87,30 @@ struct SortBoundReached {
     bool operator==(const SortBoundReached&) const = default;
 };
 
+// The display step front to back (front_to_back.h), when the sort is asked for it: after the sort, the list drawn
+// nearest first, each pixel written once, until the screen is full.
+struct FrontPolygonDrawn {
+    static constexpr std::string_view kind = "FrontPolygonDrawn";
+    std::uint32_t polygon;   // in the sort's working list
+    SceneId id;
+    std::uint32_t written;   // pixels it wrote (none nearer had)
+    std::uint32_t hidden;    // pixels it covers that nearer polygons had written: not drawn again
+    std::uint32_t unwritten; // pixels of the screen still unwritten after it
+    bool operator==(const FrontPolygonDrawn&) const = default;
+};
+struct ScreenFilled {
+    static constexpr std::string_view kind = "ScreenFilled";
+    std::uint32_t drawn, left;  // polygons drawn when every pixel was written; polygons left undrawn
+    bool operator==(const ScreenFilled&) const = default;
+};
+struct FrontDisplayFinished {
+    static constexpr std::string_view kind = "FrontDisplayFinished";
+    std::uint32_t drawn, unwritten;  // the whole list drawn; pixels left to the background
+    bool operator==(const FrontDisplayFinished&) const = default;
+};
 using DepthSortEvent = std::variant<ListSorted, PairExamined, TestTried, PolygonMoved, CycleDetected, PolygonCut,
-                                    PolygonPainted, DepthSortFinished, SortBoundReached>;
+                                    PolygonPainted, DepthSortFinished, SortBoundReached, FrontPolygonDrawn, ScreenFilled,
+                                    FrontDisplayFinished>;
 
 std::string describe(const DepthSortEvent& e);
 std::string_view to_string(OrderTest t);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "depth_sort/front_to_back.h"
 
-#include "core/overloaded.h"
 
 namespace hsr::algo {
 
@@ -43,22 +42,7 @@ Steps<FrontToBackEvent, FrontToBackResult> display_front_to_back(std::vector<Sor
 }
 
 std::string describe(const FrontToBackEvent& event) {
-    return std::visit(overloaded{
-                          [](const FrontPolygonDrawn& e) {
-                              return "Draw #" + std::to_string(e.polygon) + " (polygon " + std::to_string(e.id) + ") front to back: " +
-                                     std::to_string(e.written) + " pixels written, " + std::to_string(e.hidden) +
-                                     " already written by nearer polygons; " + std::to_string(e.unwritten) + " pixels still unwritten.";
-                          },
-                          [](const ScreenFilled& e) {
-                              return "Every pixel is written after " + std::to_string(e.drawn) + " polygons: stop; the " +
-                                     std::to_string(e.left) + " farther polygons are hidden and never drawn.";
-                          },
-                          [](const FrontDisplayFinished& e) {
-                              return "Done: all " + std::to_string(e.drawn) + " polygons drawn; " + std::to_string(e.unwritten) +
-                                     " pixels show the background.";
-                          },
-                      },
-                      event);
+    return std::visit([](const auto& e) { return describe(DepthSortEvent{e}); }, event);
 }
 
 }  // namespace hsr::algo

@@ -22,25 +22,6 @@
 
 namespace hsr::algo {
 
-struct FrontPolygonDrawn {
-    static constexpr std::string_view kind = "FrontPolygonDrawn";
-    std::uint32_t polygon;   // in the sort's working list
-    SceneId id;
-    std::uint32_t written;   // pixels it wrote (none nearer had)
-    std::uint32_t hidden;    // pixels it covers that nearer polygons had written: not drawn again
-    std::uint32_t unwritten; // pixels of the screen still unwritten after it
-    bool operator==(const FrontPolygonDrawn&) const = default;
-};
-struct ScreenFilled {
-    static constexpr std::string_view kind = "ScreenFilled";
-    std::uint32_t drawn, left;  // polygons drawn when every pixel was written; polygons left undrawn
-    bool operator==(const ScreenFilled&) const = default;
-};
-struct FrontDisplayFinished {
-    static constexpr std::string_view kind = "FrontDisplayFinished";
-    std::uint32_t drawn, unwritten;  // the whole list drawn; pixels left to the background
-    bool operator==(const FrontDisplayFinished&) const = default;
-};
 using FrontToBackEvent = std::variant<FrontPolygonDrawn, ScreenFilled, FrontDisplayFinished>;
 std::string describe(const FrontToBackEvent& e);
 

@@ -48,6 +48,35 @@ TEST_CASE("a lesson with an unknown algorithm or a missing scene names the field
                                                       Catch::Contains("cohen_sutherland"));
     const auto missing_scene = write("b.toml", "title = \"t\"\nalgorithm = \"liang_barsky\"\nscene = \"nope.toml\"\n");
     CHECK_THROWS_WITH(load_lesson(missing_scene), Catch::Contains("b.toml:3:") && Catch::Contains("'scene'"));
+    const auto bad_display = write("c.toml", "title = \"t\"\nalgorithm = \"depth_sort\"\ndisplay = \"front-to-bak\"\nscene = \"x.toml\"\n");
+    CHECK_THROWS_WITH(load_lesson(bad_display), Catch::Contains("c.toml:3:") && Catch::Contains("'display'") &&
+                                                    Catch::Contains("front-to-back"));
+}
+
+TEST_CASE("a depth-sort lesson displayed front to back: the sort, then each pixel written once, stopping when the screen is full", "[lesson][depth_sort]") {
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/28_depth_sort_front_to_back.toml");
+    REQUIRE(lesson.front_to_back);
+    std::ostringstream trace;
+    trace_lesson(lesson, &trace);
+    std::istringstream lines(trace.str());
+    std::vector<nlohmann::json> events;
+    for (std::string line; std::getline(lines, line);) events.push_back(nlohmann::json::parse(line));
+    std::vector<std::string> kinds;
+    for (const auto& e : events) kinds.push_back(e["kind"]);
+    // every polygon joins the list before the display step draws; the two panels fill the screen; the last event closes
+    const auto first_front = std::find(kinds.begin(), kinds.end(), "FrontPolygonDrawn");
+    REQUIRE(first_front != kinds.end());
+    CHECK(std::count(kinds.begin(), first_front, "PolygonPainted") == 5);
+    CHECK(std::count(kinds.begin(), kinds.end(), "FrontPolygonDrawn") == 2);
+    const auto filled = std::find(kinds.begin(), kinds.end(), "ScreenFilled");
+    REQUIRE(filled != kinds.end());
+    CHECK(events[std::size_t(filled - kinds.begin())]["left"] == 3);
+    CHECK(kinds.back() == "DepthSortFinished");
+    // the panels' pixels add up to the grid: written by the nearest only
+    std::uint64_t written = 0;
+    for (const auto& e : events)
+        if (e["kind"] == "FrontPolygonDrawn") written += e["written"].get<std::uint64_t>();
+    CHECK(written == std::uint64_t(lesson.grid.width) * std::uint64_t(lesson.grid.height));
 }
 
 TEST_CASE("a trace is one JSON object per event, and the same input gives the same hash", "[trace]") {

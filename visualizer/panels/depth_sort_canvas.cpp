@@ -132,7 +132,7 @@ void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo:
     const float size = std::clamp(std::min(w * 0.34f, h * 0.40f), 110.0f, 420.0f);
     screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
     const ImVec2 at(x + w - size - 16, y + h - size - 34);
-    d->AddText(ImVec2(at.x, at.y - 20), text_colour, "painted so far (over)");
+    d->AddText(ImVec2(at.x, at.y - 20), text_colour, s.view().front_to_back ? "drawn so far (front to back)" : "painted so far (over)");
     draw_image(d, painted, at, ImVec2(size, size));
     ImGui::End();
 }

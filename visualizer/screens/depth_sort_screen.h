@@ -23,9 +23,13 @@ public:
         f.detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
     }
     void draw_panels(const DepthSortSession& s, PanelFrame& f) {
-        if (painted_for_ != s.view().drawn) {  // repainted only when the drawn list changes (a step, a seek, a reload)
+        // repainted only when what is drawn changes (a step, a seek, a reload): the list back to front, then what
+        // the display step drew front to back
+        std::vector<std::uint32_t> drawn = s.view().drawn;
+        drawn.push_back(~0u), drawn.insert(drawn.end(), s.view().front.begin(), s.view().front.end());
+        if (painted_for_ != drawn) {
             painted_ = painted_so_far(s.view(), {128, 128});
-            painted_for_ = s.view().drawn;
+            painted_for_ = std::move(drawn);
         }
         depth_sort_canvas(s, chips_, painted_, 0, 0, f.view_w, f.view_h, f.animate);
         depth_sort_state_panel(s, f.layout);
@@ -34,7 +38,7 @@ public:
 private:
     ChipPlaces chips_;
     algo::Image painted_{0, 0};
-    std::optional<std::vector<std::uint32_t>> painted_for_;  // the drawn list painted_ shows
+    std::optional<std::vector<std::uint32_t>> painted_for_;  // the drawn lists painted_ shows
 };
 
 }  // namespace hsr::viz

@@ -23,6 +23,9 @@ const Pseudocode<DepthSortEvent> sort_lines = {
     {"      Q moved before (a cycle), or no order:", {step<CycleDetected>()}},
     {"        split one by the plane of the other", {step<PolygonCut>(), step<SortBoundReached>()}},
     {"  no Q left: draw R (back to front)", {step<PolygonPainted>(), step<DepthSortFinished>()}},
+    {"  or display front to back: the nearest first,", {}},
+    {"    each on the pixels no nearer one has written", {step<FrontPolygonDrawn>(), step<FrontDisplayFinished>()}},
+    {"    every pixel written: stop, the rest are hidden", {step<ScreenFilled>()}},
 };
 
 }  // namespace
@@ -31,7 +34,9 @@ DepthSortSession::RunType DepthSortSession::machine(const Lesson& lesson) {
     std::vector<SortPolygon> polygons = sort_polygons(lesson.scene);
     DepthSortView initial;
     initial.polygons = polygons;
-    return {depth_sort(std::move(polygons)), std::move(initial)};
+    DepthSortOptions o;
+    if (lesson.front_to_back) o.front_to_back = lesson.grid;
+    return {depth_sort(std::move(polygons), o), std::move(initial)};
 }
 
 void reduce(DepthSortView& v, const DepthSortEvent& event) {
@@ -61,17 +66,24 @@ void reduce(DepthSortView& v, const DepthSortEvent& event) {
                    [&](const PolygonPainted& e) {
                        std::erase(v.list, e.polygon);
                        v.drawn.push_back(e.polygon);
+                       v.front_to_back = e.deferred;
                        v.r = v.q = -1, v.tests.clear();
                    },
                    [&](const DepthSortFinished&) { v.done = true; },
                    [&](const SortBoundReached&) { v.bounded = true; },
+                   [&](const FrontPolygonDrawn& e) { v.front.push_back(e.polygon), v.unwritten = e.unwritten; },
+                   [&](const ScreenFilled& e) { v.screen_filled = true, v.left = e.left; },
+                   [&](const FrontDisplayFinished& e) { v.unwritten = e.unwritten; },
                },
                event);
 }
 
 algo::Image painted_so_far(const DepthSortView& v, algo::Viewport size) {
     algo::Image image(size.width, size.height, {26, 28, 33});
-    for (std::uint32_t i : v.drawn) {
+    // front to back, each pixel written once by the nearest: the same picture as painting those drawn so far from
+    // the farthest of them forward
+    const std::vector<std::uint32_t> order = v.front_to_back ? std::vector<std::uint32_t>(v.front.rbegin(), v.front.rend()) : v.drawn;
+    for (std::uint32_t i : order) {
         std::vector<glm::dvec4> ndc;
         for (const auto& p : v.polygons[i].vertices) ndc.emplace_back(p, 1.0);
         algo::paint_clip_polygon(image, std::move(ndc), v.polygons[i].id, v.polygons[i].color, v.polygons[i].opacity);

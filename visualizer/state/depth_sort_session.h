@@ -21,6 +21,10 @@ struct DepthSortView {
     int moved = -1, cycle = -1, cut = -1;     // what the last step did
     std::uint32_t splits = 0, moves = 0;
     bool done = false, bounded = false;
+    // the display step front to back, when the lesson asks for it: drawn nearest first, each pixel once
+    std::vector<std::uint32_t> front;
+    std::uint32_t unwritten = 0, left = 0;  // pixels still unwritten; polygons never drawn once the screen filled
+    bool screen_filled = false, front_to_back = false;
 };
 
 void reduce(DepthSortView& view, const algo::DepthSortEvent& event);

@@ -17,6 +17,9 @@ HSR_TO_JSON(PolygonCut, polygon, by, front, back, front_vertices, back_vertices,
 HSR_TO_JSON(PolygonPainted, polygon, id)
 HSR_TO_JSON(DepthSortFinished, drawn, splits, moves, pairs)
 HSR_TO_JSON(SortBoundReached, bound, limit)
+HSR_TO_JSON(FrontPolygonDrawn, polygon, id, written, hidden, unwritten)
+HSR_TO_JSON(ScreenFilled, drawn, left)
+HSR_TO_JSON(FrontDisplayFinished, drawn, unwritten)
 
 }  // namespace hsr::algo
 

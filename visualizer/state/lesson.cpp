@@ -52,7 +52,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "languages", "chapters"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.title = r.text(root, "title", "");
     lesson.summary = r.text(root, "summary", "", "");
@@ -66,6 +66,10 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     else
         r.fail(root.get("splitter"), "splitter", "expected " + std::string(algo::splitter_rule_names));
     lesson.cull = r.text(root, "cull", "", lesson.cull);
+    const std::string display = r.text(root, "display", "", "back-to-front");
+    if (display != "back-to-front" && display != "front-to-back")
+        r.fail(root.get("display"), "display", "expected back-to-front or front-to-back, got \"" + algo::printable(display, 60) + "\"");
+    lesson.front_to_back = display == "front-to-back";
     try {
         algo::parse_stages(lesson.cull);
     } catch (const algo::InvalidInput& e) {
