@@ -54,8 +54,9 @@ TEST_CASE("a culling lesson's counts are the pipeline tab's: one definition per 
                                                      {"23_culling_detail.toml", Stage::detail},
                                                      {"24_culling_occluders.toml", Stage::occluders},
                                                      {"25_culling_hiz.toml", Stage::hiz}};
-    for (const auto& [file, stage] : lessons) {
+    for (const auto& [file, lesson_stage] : lessons) {
         INFO(file);
+        const Stage stage = lesson_stage;  // a variable, not a structured binding: clang 14 cannot capture those
         const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
         const FamilySession session = make_session(lesson);
         session->seek_end();
