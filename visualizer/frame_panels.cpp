@@ -11,6 +11,7 @@
 #include "panels/preset_panel.h"
 #include "panels/report_panel.h"
 #include "panels/toast_panel.h"
+#include "state/strings.h"
 #include "state/window_settings.h"
 
 namespace hsr::viz {
@@ -45,6 +46,7 @@ glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Lab
 
 void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions) {
+    window_strings().use(lp.classroom.language());  // the window speaks the narration's language, where it has a catalogue
     if (!lp.session()) {
         error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), lp.opening_stopped, layout,
                     actions);

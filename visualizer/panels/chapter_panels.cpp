@@ -8,6 +8,7 @@
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -18,26 +19,27 @@ const ImVec4 question_title(0.94f, 0.89f, 0.26f, 1);
 // The lesson's end: the score, what it showed (its chapters), and the next lesson to open.
 void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* next, UiActions& out) {
     if (room.questions() > 0)
-        wrapped_text("Score: " + std::to_string(room.right()) + " right of " + std::to_string(room.answered()) + " answered (" +
-                     std::to_string(room.questions()) + " questions in the lesson).");
+        wrapped_text(tr("chapters.end_score", {{"right", std::to_string(room.right())},
+                                               {"answered", std::to_string(room.answered())},
+                                               {"questions", std::to_string(room.questions())}}));
     else
-        wrapped_text("The lesson has no questions; P offers its extreme cases to try.");
+        wrapped_text(tr("chapters.no_questions"));
     if (!lesson.chapters.empty()) {
-        std::string showed = "It showed:";
+        std::string showed = tr("chapters.showed");
         for (std::size_t k = 0; k < lesson.chapters.size(); ++k) showed += (k ? " · " : " ") + lesson.chapters[k].title;
         wrapped_text(showed, dim_text);
     }
-    if (next) wrapped_text("Next: " + next->title, dim_text);
-    if (next && ImGui::Button("Next lesson (N)")) out.next_lesson = 1;
+    if (next) wrapped_text(tr("chapters.next", {{"title", next->title}}), dim_text);
+    if (next && ImGui::Button((tr("chapters.next_lesson") + "###next lesson").c_str())) out.next_lesson = 1;
     if (next) ImGui::SameLine();
-    if (ImGui::Button("All lessons (M)")) out.toggle_menu = true;
+    if (ImGui::Button((tr("chapters.all_lessons") + "###all lessons").c_str())) out.toggle_menu = true;
 }
 
 }  // namespace
 
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& l) {
     const Lesson& lesson = s.lesson();
-    begin_column_box(l, Box::lesson, "Lesson");
+    begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
     wrapped_text(lesson.title);
     wrapped_text(std::string(lesson.algorithm.id) + "  ·  difficulty " + std::to_string(lesson.difficulty) + "  ·  " + detail,
                  dim_text);
@@ -49,11 +51,11 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     } else {
         wrapped_text(reflow(lesson.summary), dim_text);
     }
-    wrapped_text("PgUp/PgDn chapters · L language (" + room.language() + ")" +
-                     (room.questions() ? " · score " + std::to_string(room.right()) + " of " + std::to_string(room.answered()) +
-                                             " answered, " + std::to_string(room.questions()) + " questions"
-                                       : std::string()),
-                 dim_text);
+    const StringValues score = {{"language", room.language()},
+                                {"right", std::to_string(room.right())},
+                                {"answered", std::to_string(room.answered())},
+                                {"questions", std::to_string(room.questions())}};
+    wrapped_text(tr(room.questions() ? "chapters.keys_and_score" : "chapters.keys", score), dim_text);
     end_column_box(l, Box::lesson);
 }
 
@@ -67,7 +69,7 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
     ImGui::PushStyleColor(ImGuiCol_TitleBg, question_title);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, question_title);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.08f, 0.08f, 0.1f, 1));
-    begin_column_box(l, Box::question, q ? "Question" : finished ? "End of the lesson" : "Answer");
+    begin_column_box(l, Box::question, tr(q ? "box.question" : finished ? "box.end" : "box.answer").c_str());
     ImGui::PopStyleColor(3);
     if (q) {
         wrapped_text(in_language(q->ask, room.language(), lesson.languages));
@@ -90,10 +92,10 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
         }
     } else if (verdict) {
         if (verdict->revealed)
-            wrapped_text("Shown before it was answered: no score.", dim_text);
+            wrapped_text(tr("chapters.shown_before"), dim_text);
         else
-            wrapped_text(verdict->right ? "Right." : "Not quite.", verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
-        wrapped_text("The machine: " + verdict->answer + " (" + verdict->because + ")");
+            wrapped_text(tr(verdict->right ? "chapters.right" : "chapters.not_quite"), verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
+        wrapped_text(tr("chapters.machine", {{"answer", verdict->answer}, {"because", verdict->because}}));
     }
     if (finished) end_card(lesson, room, next, out);
     end_column_box(l, Box::question);

@@ -13,6 +13,7 @@
 #include <imgui.h>
 
 #include "state/label_placement.h"
+#include "state/strings.h"
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
@@ -21,17 +22,16 @@ namespace hsr::viz {
 namespace {
 
 std::string step_text(const Session& s) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "step %zu of %zu%s%s", s.cursor(), s.known(), s.complete() ? "" : "+",
-                  s.capped() && s.cursor() >= s.known() ? " (the window keeps no more of this run)" : "");
-    return buf;
+    const std::string steps = std::to_string(s.known()) + (s.complete() ? "" : "+");
+    const bool capped = s.capped() && s.cursor() >= s.known();
+    return tr(capped ? "timeline.step_of_capped" : "timeline.step_of", {{"step", std::to_string(s.cursor())}, {"steps", steps}});
 }
 
 }  // namespace
 
 // ── [SECTION] lesson, pseudocode, narration ─────────────────────────────────────────────────────────────────
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& l) {
-    begin_column_box(l, Box::lesson, "Lesson");
+    begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
     wrapped_text(s.lesson().title);
     wrapped_text(std::string(s.lesson().algorithm.id) + "  ·  difficulty " + std::to_string(s.lesson().difficulty) +
                      "  ·  " + detail,
@@ -42,7 +42,7 @@ void lesson_panel(const Session& s, const std::string& detail, const PanelLayout
 }
 
 void pseudocode_panel(const Session& s, const PanelLayout& l) {
-    begin_column_box(l, Box::pseudocode, "Pseudocode", fixed | ImGuiWindowFlags_NoScrollbar);
+    begin_column_box(l, Box::pseudocode, tr("box.pseudocode").c_str(), fixed | ImGuiWindowFlags_NoScrollbar);
     if (ImFont* mono = monospace_font()) ImGui::PushFont(mono);
     // A line wider than the box wraps at a space onto rows indented under it, so nothing is cut on the right.
     struct Row {
@@ -99,10 +99,10 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
 }
 
 void narration_panel(const Session& s, const PanelLayout& l) {
-    begin_column_box(l, Box::narration, "Narration");
+    begin_column_box(l, Box::narration, tr("box.narration").c_str());
     ImGui::TextColored(dim_text, "%s", step_text(s).c_str());
     const std::string now = s.narration();
-    wrapped_text(now.empty() ? "Press Space to play, or → to take one step." : now);
+    wrapped_text(now.empty() ? tr("narration.start") : now);
     const float need = column_box_height_so_far();
     // the few events before, faint, newest first
     for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back) wrapped_text(s.sentence(s.cursor() - back), dim_text);
@@ -114,42 +114,49 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
                     const std::vector<TimelineMark>& marks, const PanelLayout& l, UiActions& out) {
     place(0, l.height - l.bottom, l.width, l.bottom);
     ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
-    out.to_start |= ImGui::Button("|< Home");
+    // each button's ImGui id stays the English one, so that a language switch keeps the widgets' state
+    const auto button = [](std::string_view key, const char* id) { return ImGui::Button((tr(key) + "###" + id).c_str()); };
+    out.to_start |= button("timeline.home", "home");
     ImGui::SameLine();
-    out.step_back |= ImGui::Button("<< Step");
+    out.step_back |= button("timeline.step_back", "step back");
     ImGui::SameLine();
-    out.micro_step_back |= ImGui::Button("< micro");
+    out.micro_step_back |= button("timeline.micro_back", "micro back");
     ImGui::SameLine();
-    out.toggle_play |= ImGui::Button(playback.playing ? "  Pause  " : "  Play  ");
+    out.toggle_play |= button(playback.playing ? "timeline.pause" : "timeline.play", "play");
     ImGui::SameLine();
-    out.micro_step |= ImGui::Button("micro >");
+    out.micro_step |= button("timeline.micro", "micro");
     ImGui::SameLine();
-    out.step |= ImGui::Button("Step >>");
+    out.step |= button("timeline.step", "step");
     ImGui::SameLine();
-    out.to_end |= ImGui::Button("End >|");
+    out.to_end |= button("timeline.end", "end");
     ImGui::SameLine();
-    out.toggle_menu |= ImGui::Button("Lessons (M)");
+    out.toggle_menu |= button("timeline.lessons", "lessons");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
     float speed = playback.speed;
-    if (ImGui::SliderFloat("steps/s", &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
+    if (ImGui::SliderFloat((tr("timeline.speed") + "###speed").c_str(), &speed, 0.25f, 30.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) out.speed = speed;
     ImGui::SameLine();
     // the keys' hint as far as it fits beside the step: whole, shorter, or not at all; while a question waits, why
     // the player does not move on
     const std::string step = step_text(s);
     const float room = ImGui::GetContentRegionAvail().x;
     const std::string keys = question_choices ? "1–" + std::to_string(question_choices) : "";
-    std::string line = question_choices ? step + "   a question waits: answer it (" + keys + ") and the machine tells"
-                                        : step + "   Space play · ←/→ step · Shift micro-step · Home/End";
+    std::string line = question_choices ? tr("timeline.question_waits", {{"step", step}, {"keys", keys}})
+                                        : tr("timeline.keys", {{"step", step}});
     if (ImGui::CalcTextSize(line.c_str()).x > room)
-        line = question_choices ? step + "   answer the question: " + keys : step + "   Space · ←/→ · F1 keys";
+        line = question_choices ? tr("timeline.question_short", {{"step", step}, {"keys", keys}}) : tr("timeline.keys_short", {{"step", step}});
     if (ImGui::CalcTextSize(line.c_str()).x > room) line = step;
     ImGui::TextColored(question_choices ? ImVec4(0.94f, 0.89f, 0.26f, 1) : dim_text, "%s", line.c_str());
 
     int cursor = int(s.cursor());
     const int last = int(std::max<std::size_t>(s.known(), 1));
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::SliderInt("##scrub", &cursor, 0, last, "step %d")) out.seek = std::size_t(cursor);
+    // the slider's printf format: the catalogue's words with any % doubled, then the one %d (a translation can
+    // never smuggle in a directive)
+    std::string scrub_words = window_strings().text("timeline.scrub");
+    for (std::size_t at = scrub_words.find('%'); at != std::string::npos; at = scrub_words.find('%', at + 2)) scrub_words.insert(at, "%");
+    const std::string scrub_format = fill(scrub_words, {{"step", "%d"}});
+    if (ImGui::SliderInt("##scrub", &cursor, 0, last, scrub_format.c_str())) out.seek = std::size_t(cursor);
     // the chapters' starts under the scrub bar, where ImGui's slider puts those steps' grab (a click seeks there)
     const ImVec2 bar_min = ImGui::GetItemRectMin(), bar_max = ImGui::GetItemRectMax();
     const float pad = 2, width = bar_max.x - bar_min.x - 2 * pad;

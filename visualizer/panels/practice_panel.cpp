@@ -7,6 +7,7 @@
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -27,13 +28,13 @@ void chooser(const practice::PracticeMode& mode, UiActions& out) {
             if (ImGui::Selectable(std::string(all[k].title).c_str(), k == topic)) topic = k, changed = true;
         ImGui::EndCombo();
     }
-    ImGui::TextUnformatted("Level");
+    ImGui::TextUnformatted(tr("practice.level").c_str());
     for (int l = 1; l <= 3; ++l) {
         ImGui::SameLine();
         if (ImGui::RadioButton(std::to_string(l).c_str(), level == l)) level = l, changed = true;
     }
     ImGui::SameLine();
-    ImGui::TextUnformatted("  Series");
+    ImGui::TextUnformatted(("  " + tr("practice.series")).c_str());
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::CalcTextSize("000000000000").x);
     if (ImGui::InputScalar("##series", ImGuiDataType_U64, &series, nullptr, nullptr, "%llu", ImGuiInputTextFlags_EnterReturnsTrue))
@@ -41,7 +42,7 @@ void chooser(const practice::PracticeMode& mode, UiActions& out) {
     if (changed) out.practice_choice = UiActions::PracticeChoice{topic, level, series};
     if (mode.current) {
         ImGui::SameLine();
-        ImGui::TextColored(dim_text, "exercise %llu", static_cast<unsigned long long>(mode.current->index + 1));
+        ImGui::TextColored(dim_text, "%s", tr("practice.exercise", {{"number", std::to_string(mode.current->index + 1)}}).c_str());
     }
 }
 
@@ -64,7 +65,7 @@ void practice_panel(const practice::PracticeMode& mode, const PanelLayout& l, Ui
     ImGui::PushStyleColor(ImGuiCol_TitleBg, practice_title);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, practice_title);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.08f, 0.08f, 0.1f, 1));
-    begin_column_box(l, Box::question, "Practice (X closes)");
+    begin_column_box(l, Box::question, tr("box.practice").c_str());
     ImGui::PopStyleColor(3);
     chooser(mode, out);
     ImGui::Separator();
@@ -74,20 +75,22 @@ void practice_panel(const practice::PracticeMode& mode, const PanelLayout& l, Ui
             if (!e->choices.empty()) {
                 choices(*e, out);
             } else {
-                wrapped_text("Your answer: " + mode.typed + "_   (type it; Enter answers)");
-                if (ImGui::Button("Answer (Enter)") && !mode.typed.empty()) out.answer = mode.typed;
+                wrapped_text(tr("practice.typed", {{"typed", mode.typed}}));
+                if (ImGui::Button((tr("practice.answer") + "###answer").c_str()) && !mode.typed.empty()) out.answer = mode.typed;
             }
         } else {
             // the deciding event's sentence is the narration's now: the player stands on it
-            wrapped_text(*mode.right ? "Right: " + mode.given + "." : "Not quite: you said " + mode.given + ".",
-                         *mode.right ? right_colour : bit_set);
-            if (!*mode.right) wrapped_text("The machine: " + e->answer + ", at step " + std::to_string(e->deciding_step + 1) + " (the narration says why).");
-            if (ImGui::Button("Next exercise (Enter)")) out.practice_next = true;
+            wrapped_text(tr(*mode.right ? "practice.right" : "practice.not_quite", {{"given", mode.given}}), *mode.right ? right_colour : bit_set);
+            if (!*mode.right)
+                wrapped_text(tr("practice.machine", {{"answer", e->answer}, {"step", std::to_string(e->deciding_step + 1)}}));
+            if (ImGui::Button((tr("practice.next") + "###next exercise").c_str())) out.practice_next = true;
         }
     }
     const practice::TopicScore& s = mode.score();
-    wrapped_text("Score: " + std::to_string(s.right) + " right of " + std::to_string(s.answered) + " · streak " +
-                     std::to_string(s.streak) + " (best " + std::to_string(s.best_streak) + ")",
+    wrapped_text(tr("practice.score", {{"right", std::to_string(s.right)},
+                                       {"answered", std::to_string(s.answered)},
+                                       {"streak", std::to_string(s.streak)},
+                                       {"best", std::to_string(s.best_streak)}}),
                  dim_text);
     end_column_box(l, Box::question);
 }

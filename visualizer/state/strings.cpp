@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+#include "state/strings.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "state/lesson.h"
+
+namespace hsr::viz {
+namespace {
+
+// Nested tables become dotted keys: [timeline] play = "Play" is "timeline.play".
+void flatten(const toml::table& t, const std::string& prefix, std::map<std::string, std::string>& out,
+             std::vector<std::string>& problems, const std::string& file) {
+    for (const auto& [k, v] : t) {
+        const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+        if (const auto* sub = v.as_table()) flatten(*sub, key, out, problems, file);
+        else if (const auto* s = v.as_string()) out[key] = s->get();
+        else if (key != "language")
+            problems.push_back(file + ":" + std::to_string(v.source().begin.line) + ": key '" + key + "' is not text");
+    }
+}
+
+}  // namespace
+
+std::string fill(std::string_view pattern, StringValues values) {
+    std::string out;
+    for (std::size_t i = 0; i < pattern.size();) {
+        const std::size_t open = pattern.find('{', i);
+        if (open == std::string_view::npos) {
+            out += pattern.substr(i);
+            break;
+        }
+        out += pattern.substr(i, open - i);
+        const std::size_t close = pattern.find('}', open);
+        if (close == std::string_view::npos) {
+            out += pattern.substr(open);
+            break;
+        }
+        const std::string_view name = pattern.substr(open + 1, close - open - 1);
+        const auto value = std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == name; });
+        out += value != values.end() ? value->second : std::string(pattern.substr(open, close - open + 1));
+        i = close + 1;
+    }
+    return out;
+}
+
+std::vector<std::string> value_names(std::string_view pattern) {
+    std::vector<std::string> names;
+    for (std::size_t open = pattern.find('{'); open != std::string_view::npos; open = pattern.find('{', open + 1))
+        if (const std::size_t close = pattern.find('}', open); close != std::string_view::npos)
+            names.emplace_back(pattern.substr(open + 1, close - open - 1));
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
+}
+
+void Strings::add(const std::string& language, const std::string& path, std::string_view text) {
+    try {
+        const toml::table root = toml::parse(text, path);
+        std::map<std::string, std::string> keys;
+        flatten(root, "", keys, problems_, path);
+        catalogues_[language] = std::move(keys);
+    } catch (const toml::parse_error& e) {
+        problems_.push_back(path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
+                            " (the file is left out: its language falls back to English)");
+    }
+}
+
+void Strings::check() {
+    const auto english = catalogues_.find("en");
+    if (english == catalogues_.end()) {
+        problems_.push_back("en.toml: no English catalogue (every other language is checked against it)");
+        return;
+    }
+    for (const auto& [language, keys] : catalogues_) {
+        if (language == "en") continue;
+        const std::string file = language + ".toml";
+        for (const auto& [key, pattern] : english->second) {
+            const auto it = keys.find(key);
+            if (it == keys.end()) problems_.push_back(file + ": key '" + key + "' is missing (English: '" + pattern + "')");
+            else if (value_names(it->second) != value_names(pattern))
+                problems_.push_back(file + ": key '" + key + "' names other values than English's '" + pattern + "'");
+        }
+        for (const auto& [key, pattern] : keys)
+            if (!english->second.contains(key)) problems_.push_back(file + ": key '" + key + "' is not in English's catalogue");
+    }
+}
+
+Strings Strings::load(const std::string& folder) {
+    Strings s;
+    std::error_code error;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error))
+        if (entry.path().extension() == ".toml") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const auto& path : files) {
+        std::ifstream in(path);
+        std::ostringstream text;
+        text << in.rdbuf();
+        s.add(path.stem().string(), path.string(), text.str());
+    }
+    s.check();
+    return s;
+}
+
+Strings Strings::from_texts(const std::map<std::string, std::string>& files) {
+    Strings s;
+    for (const auto& [language, text] : files) s.add(language, language + ".toml", text);
+    s.check();
+    return s;
+}
+
+std::vector<std::string> Strings::languages() const {
+    std::vector<std::string> out;
+    if (catalogues_.contains("en")) out.push_back("en");
+    for (const auto& [language, keys] : catalogues_)
+        if (language != "en") out.push_back(language);
+    return out;
+}
+
+bool Strings::has(std::string_view key) const {
+    const auto english = catalogues_.find("en");
+    return english != catalogues_.end() && english->second.find(std::string(key)) != english->second.end();
+}
+
+std::string Strings::text(std::string_view key, StringValues values) const {
+    for (const std::string* language : {&language_, static_cast<const std::string*>(nullptr)}) {
+        const auto catalogue = catalogues_.find(language ? *language : std::string("en"));
+        if (catalogue == catalogues_.end()) continue;
+        if (const auto it = catalogue->second.find(std::string(key)); it != catalogue->second.end()) return fill(it->second, values);
+    }
+    return std::string(key);
+}
+
+Strings& window_strings() {
+    static Strings strings = Strings::load(data_dir() + "/assets/strings");
+    return strings;
+}
+
+}  // namespace hsr::viz

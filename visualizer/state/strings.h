@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The window's own words, one catalogue per language: data_dir()/assets/strings/LANG.toml, each a table of keys
+// to whole sentences (templates) that name their values in braces, "step {step} of {steps}", so that a language
+// puts the values where its grammar wants them. A teacher adds a language by adding one file with the same keys;
+// `problems()` (and the test over the shipped files) names every key a language lacks or adds, and every template
+// whose values differ from the English one's.
+//
+//   # assets/strings/de.toml
+//   language = "Deutsch"
+//   [timeline]
+//   step = "Schritt {step} von {steps}"
+#pragma once
+
+#include <initializer_list>
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace hsr::viz {
+
+using StringValues = std::initializer_list<std::pair<std::string_view, std::string>>;
+
+class Strings {
+public:
+    // Every LANG.toml in the folder. A file that cannot be read is left out and named in problems(); English
+    // (en.toml) is what every other language is checked against and what a missing key falls back to.
+    static Strings load(const std::string& folder);
+    // From texts (for tests): language code → the file's text, as if it were `folder`/LANG.toml.
+    static Strings from_texts(const std::map<std::string, std::string>& files);
+
+    // The language the window speaks; one without a catalogue speaks English.
+    void use(const std::string& language) { language_ = language; }
+    const std::string& language() const { return language_; }
+    std::vector<std::string> languages() const;  // those with a catalogue, English first
+
+    // The template for `key` in the language used (else English, else the key itself, so that a gap shows rather
+    // than crashes), its {names} filled from `values`; a name without a value stays as written.
+    std::string text(std::string_view key, StringValues values = {}) const;
+    // Does the catalogue hold the key in English?
+    bool has(std::string_view key) const;
+
+    // What is wrong with the catalogues, as "de.toml: key 'timeline.play' is missing (English: 'Play')".
+    const std::vector<std::string>& problems() const { return problems_; }
+
+private:
+    std::map<std::string, std::map<std::string, std::string>, std::less<>> catalogues_;  // language → key → template
+    std::string language_ = "en";
+    std::vector<std::string> problems_;
+    void add(const std::string& language, const std::string& path, std::string_view text);
+    void check();
+};
+
+// Fills a template's {names} (also for the lessons' own sentences).
+std::string fill(std::string_view pattern, StringValues values);
+// The {names} a template uses, sorted.
+std::vector<std::string> value_names(std::string_view pattern);
+
+// The window's catalogue, loaded once from data_dir()/assets/strings.
+Strings& window_strings();
+// Shorthand for window_strings().text(key, values).
+inline std::string tr(std::string_view key, StringValues values = {}) { return window_strings().text(key, values); }
+
+}  // namespace hsr::viz
