@@ -14,6 +14,13 @@ std::vector<std::uint8_t> kept_of(const CullingView& v) {
     return k;
 }
 
+const CullingLesson& culling_lesson_of(const FamilySession& session) {
+    return session.visit([](auto& s) -> const CullingLesson& {
+        if constexpr (std::is_base_of_v<CullingLesson, std::decay_t<decltype(s)>>) return s;
+        else throw std::logic_error("not a culling lesson");
+    });
+}
+
 }  // namespace
 
 TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]") {
@@ -23,10 +30,7 @@ TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]
         const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
         const FamilySession session = make_session(lesson);
         session->seek_end();
-        const CullingLesson& lessonview = session.visit([](auto& s) -> const CullingLesson& {
-            if constexpr (std::is_base_of_v<CullingLesson, std::decay_t<decltype(s)>>) return s;
-            else throw std::logic_error("not a culling lesson");
-        });
+        const CullingLesson& lessonview = culling_lesson_of(session);
         const CullingView& v = lessonview.culling_view();
         REQUIRE(v.done);
         const auto& w = *v.world;
@@ -60,10 +64,7 @@ TEST_CASE("a culling lesson's counts are the pipeline tab's: one definition per 
         const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
         const FamilySession session = make_session(lesson);
         session->seek_end();
-        const CullingView& v = session.visit([](auto& s) -> const CullingLesson& {
-                                          if constexpr (std::is_base_of_v<CullingLesson, std::decay_t<decltype(s)>>) return s;
-                                          else throw std::logic_error("not a culling lesson");
-                                      }).culling_view();
+        const CullingView& v = culling_lesson_of(session).culling_view();
         const auto& w = *v.world;
         const auto report = std::find_if(w.pipeline.begin(), w.pipeline.end(), [&](const StageReport& r) { return r.stage == stage; });
         REQUIRE(report != w.pipeline.end());
