@@ -23,6 +23,7 @@
 
 #include "capture.h"
 #include "state/output_folder.h"
+#include "state/strings.h"
 #include "frame_panels.h"
 #include "gif_writer.h"
 #include "lesson_play.h"
@@ -240,8 +241,7 @@ int run_app(const AppOptions& o) {
         lp.scale = lp.first_scale = initial_scale(o);
         lp.load(o);
         float applied_scale = lp.scale;
-        for (int k = 0; k < 8 && !settings.language.empty() && lp.classroom.language() != settings.language; ++k)
-            lp.classroom.next_language();  // the language last chosen, where the lesson has it
+        if (!settings.language.empty()) lp.classroom.choose_language(settings.language);  // the language last chosen
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
         lp.questions_hold = !o.record_dir && !o.gif;  // recordings and slides show the whole lesson
@@ -351,6 +351,7 @@ int run_app(const AppOptions& o) {
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
+                std::printf("hsrviz: window words %s, narration %s\n", window_strings().language().c_str(), lp.classroom.language().c_str());
                 for (const std::string& problem : layout_problems()) std::printf("hsrviz: layout: %s\n", problem.c_str());
                 for (const Toasts::Showing& n : lp.toasts.showing(seconds_now())) std::printf("hsrviz: note showing: %s\n", n.text.c_str());
                 if (!write_png(*o.screenshot, width, height)) {
@@ -396,7 +397,7 @@ int run_app(const AppOptions& o) {
         // Remember the layout: the column and the language always, the window's size and place when a person sized it
         WindowSettings keep = settings;
         keep.side = lp.side;
-        keep.language = lp.classroom.language();
+        keep.language = lp.classroom.chosen_language();
         keep.practice = lp.practice.records();
         if (interactive(o) && !o.projector) {
             const Uint32 flags = SDL_GetWindowFlags(w.window);

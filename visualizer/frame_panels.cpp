@@ -46,7 +46,9 @@ glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Lab
 
 void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions) {
-    window_strings().use(lp.classroom.language());  // the window speaks the narration's language, where it has a catalogue
+    // the window's own words follow the student's choice (L) where a catalogue has it, even when the lesson's narration
+    // does not
+    window_strings().use(lp.classroom.chosen_language().empty() ? lp.classroom.language() : lp.classroom.chosen_language());
     if (!lp.session()) {
         error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), lp.opening_stopped, layout,
                     actions);

@@ -12,6 +12,7 @@
 #include "state/output_folder.h"
 #include "scene/save_scene.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 #include "state/trace.h"
 
 namespace hsr::viz {
@@ -164,7 +165,7 @@ void Lessonplay::play_exercise(const AppOptions& o) {
     algorithm = e->algorithm;
     place_before_error.reset();
     family.reset();  // the exercise starts at its first step
-    classroom = Classroom{};
+    classroom.restart();
     load(o);
     // open where the question is asked: the picture it is about, every event before the one that decides it (Left
     // and Home step back through them)
@@ -219,7 +220,7 @@ void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     practice.open = false;  // its exercise stays, unanswered, for X to come back to
     place_before_error.reset();
     family.reset();  // a lesson starts at its first step, with a fresh score and no report of another family
-    classroom = Classroom{};
+    classroom.restart();
     cancel_report();
     report.clear();
     show_presets = show_report = show_menu = false;
@@ -332,7 +333,7 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
     }
     if (a.next_chapter) classroom.next_chapter(p), playback.playing = false;
     if (a.previous_chapter) classroom.previous_chapter(p), playback.playing = false;
-    if (a.next_language) classroom.next_language();
+    if (a.next_language) classroom.next_language(window_strings().languages());
     if (a.toggle_keys) show_keys = !show_keys;
     side += a.column_wider ? 40.f : a.column_narrower ? -40.f : 0.f;
     if (a.scale_step) scale = std::clamp(scale * (a.scale_step > 0 ? 1.1f : 1 / 1.1f), 0.5f, 4.0f);

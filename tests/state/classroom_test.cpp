@@ -184,3 +184,32 @@ TEST_CASE("check reports every problem of a file, each with its line and the fie
     REQUIRE(check_file(file).problems.size() == 1);
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("the student's language is kept across lessons; the narration follows it where the lesson has it", "[lesson][classroom]") {
+    auto german = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
+    auto english_only = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/05_bsp_traversal.toml"));
+    REQUIRE(english_only->lesson().languages == std::vector<std::string>{"en"});
+    Classroom room;
+    room.attach(*english_only);
+    CHECK(room.language() == "en");
+    // L in a lesson narrated only in English still reaches the languages the window's words have
+    room.next_language({"en", "de"});
+    CHECK(room.chosen_language() == "de");
+    CHECK(room.language() == "en");  // the narration: the lesson's only language
+    room.next_language({"en", "de"});
+    CHECK(room.chosen_language() == "en");
+    room.next_language({"en", "de"});
+    // another lesson: the choice stays, and this one is narrated in it
+    room.restart();
+    CHECK(room.chosen_language() == "de");
+    room.attach(*german);
+    CHECK(room.language() == "de");
+    // back to the English-only lesson: narrated in English, the choice still German
+    room.restart();
+    room.attach(*english_only);
+    CHECK(room.language() == "en");
+    CHECK(room.chosen_language() == "de");
+    // a remembered choice the lesson lacks (French) leaves the narration in the lesson's first language
+    room.choose_language("fr");
+    CHECK(room.language() == "en");
+}

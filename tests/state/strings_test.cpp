@@ -46,6 +46,11 @@ TEST_CASE("a template names its values: filled in any order, a missing one left 
     CHECK(fill("Schritt {step} von {steps}", {{"step", "3"}}) == "Schritt 3 von {steps}");
     CHECK(fill("no values", {{"x", "1"}}) == "no values");
     CHECK(fill("an open {brace", {}) == "an open {brace");
+    // a plural: the form for one, else the other; its name counts once among the template's values
+    CHECK(fill("{n} {n?pair|pairs} examined", {{"n", "1"}}) == "1 pair examined");
+    CHECK(fill("{n} {n?pair|pairs} examined", {{"n", "0"}}) == "0 pairs examined");
+    CHECK(fill("{n} {n?Paar|Paare}", {{"n", "12"}}) == "12 Paare");
+    CHECK(value_names("{n} {n?pair|pairs} and {m}") == std::vector<std::string>{"m", "n"});
     CHECK(value_names("{b} and {a} and {b}") == std::vector<std::string>{"a", "b"});
 }
 

@@ -41,7 +41,7 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     const Lesson& lesson = s.lesson();
     begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
     wrapped_text(lesson.title);
-    wrapped_text(std::string(lesson.algorithm.id) + "  ·  difficulty " + std::to_string(lesson.difficulty) + "  ·  " + detail,
+    wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(lesson.algorithm.id)}, {"difficulty", std::to_string(lesson.difficulty)}, {"detail", detail}}),
                  dim_text);
     ImGui::Separator();
     if (const auto c = room.chapter(s)) {
@@ -51,7 +51,11 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     } else {
         wrapped_text(reflow(lesson.summary), dim_text);
     }
-    const StringValues score = {{"language", room.language()},
+    // the student's choice; when the lesson is not narrated in it, say which language it is narrated in
+    const std::string& chosen = room.chosen_language().empty() ? room.language() : room.chosen_language();
+    const std::string language =
+        chosen == room.language() ? chosen : tr("chapters.narrated_in", {{"chosen", chosen}, {"narration", room.language()}});
+    const StringValues score = {{"language", language},
                                 {"right", std::to_string(room.right())},
                                 {"answered", std::to_string(room.answered())},
                                 {"questions", std::to_string(room.questions())}};

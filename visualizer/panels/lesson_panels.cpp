@@ -33,8 +33,7 @@ std::string step_text(const Session& s) {
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& l) {
     begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
     wrapped_text(s.lesson().title);
-    wrapped_text(std::string(s.lesson().algorithm.id) + "  ·  difficulty " + std::to_string(s.lesson().difficulty) +
-                     "  ·  " + detail,
+    wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(s.lesson().algorithm.id)}, {"difficulty", std::to_string(s.lesson().difficulty)}, {"detail", detail}}),
                  dim_text);
     ImGui::Separator();
     wrapped_text(reflow(s.lesson().summary), dim_text);
@@ -78,7 +77,7 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
     for (int r = first; r < last; ++r) {
         if (marks && ((r == first && first > 0) || (r == last - 1 && last < int(rows.size())))) {
             const int hidden = r == first ? first + 1 : int(rows.size()) - r;
-            ImGui::TextColored(dim_text, "   … %d more line%s %s", hidden, hidden == 1 ? "" : "s", r == first ? "above" : "below");
+            ImGui::TextColored(dim_text, "%s", tr(r == first ? "box.more_above" : "box.more_below", {{"lines", std::to_string(hidden)}}).c_str());
             continue;
         }
         const Row& row = rows[std::size_t(r)];

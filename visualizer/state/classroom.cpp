@@ -10,7 +10,7 @@ void Classroom::attach(const Session& s) {
     const Lesson& l = s.lesson();
     if (languages_ != l.languages) {  // a new lesson: its languages, its default first; answers start afresh
         languages_ = l.languages;
-        language_ = languages_.front();
+        follow_choice();
         answers_.clear(), right_ = 0;
     }
     questions_ = int(std::count_if(l.chapters.begin(), l.chapters.end(), [](const Chapter& c) { return c.question.has_value(); }));
@@ -88,9 +88,24 @@ std::optional<Verdict> Classroom::verdict(const Session& s) const {
     return answers_.at(*c);
 }
 
-void Classroom::next_language() {
-    const auto it = std::find(languages_.begin(), languages_.end(), language_);
-    language_ = (it == languages_.end() || it + 1 == languages_.end()) ? languages_.front() : *(it + 1);
+void Classroom::next_language(const std::vector<std::string>& chrome) {
+    std::vector<std::string> all = languages_;
+    for (const std::string& l : chrome)
+        if (std::find(all.begin(), all.end(), l) == all.end()) all.push_back(l);
+    const std::string& now = chosen_.empty() ? language_ : chosen_;
+    const auto it = std::find(all.begin(), all.end(), now);
+    chosen_ = (it == all.end() || it + 1 == all.end()) ? all.front() : *(it + 1);
+    follow_choice();
+}
+
+void Classroom::choose_language(const std::string& language) {
+    chosen_ = language;
+    follow_choice();
+}
+
+void Classroom::follow_choice() {
+    const bool spoken = std::find(languages_.begin(), languages_.end(), chosen_) != languages_.end();
+    language_ = spoken ? chosen_ : languages_.front();
 }
 
 void Classroom::next_chapter(Session& s) const {

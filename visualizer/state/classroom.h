@@ -7,6 +7,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "state/lesson_script.h"
 
@@ -35,12 +37,23 @@ public:
     // Answers the open question with choice `index` (or text); the player steps to the answering event.
     std::optional<Verdict> answer(Session& session, const std::string& given);
     std::optional<Verdict> verdict(const Session& session) const;  // of the chapter showing, once answered or revealed
-    void next_language();
+    // L: the next language the window can speak: the lesson's narration languages, then those with a window-word
+    // catalogue (`chrome`). The choice is the student's: it outlives the lesson (restart keeps it) and is what the
+    // window's own words follow; the narration follows it where the lesson has it, else speaks the lesson's first.
+    void next_language(const std::vector<std::string>& chrome = {});
+    void choose_language(const std::string& language);  // the choice remembered from the last run
+    const std::string& chosen_language() const { return chosen_; }
+    // Another lesson (or exercise): nothing of this one stays but the student's choice of language.
+    void restart() {
+        std::string chosen = std::move(chosen_);
+        *this = Classroom{};
+        chosen_ = std::move(chosen);
+    }
     // PageDown / PageUp: to the next or previous chapter's start.
     void next_chapter(Session& session) const;
     void previous_chapter(Session& session) const;
 
-    const std::string& language() const { return language_; }
+    const std::string& language() const { return language_; }  // the narration's
     int right() const { return right_; }
     int answered() const;  // by the student (not revealed first)
     int questions() const;
@@ -50,6 +63,8 @@ private:
     std::optional<LessonScript> script_;
     std::vector<std::string> languages_{"en"};
     std::string language_ = "en";
+    std::string chosen_;  // "" until the student chooses: then the lesson's first
+    void follow_choice();
     std::map<std::size_t, Verdict> answers_;  // by chapter
     int right_ = 0, questions_ = 0;
 };

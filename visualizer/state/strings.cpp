@@ -27,38 +27,6 @@ void flatten(const toml::table& t, const std::string& prefix, std::map<std::stri
 
 }  // namespace
 
-std::string fill(std::string_view pattern, StringValues values) {
-    std::string out;
-    for (std::size_t i = 0; i < pattern.size();) {
-        const std::size_t open = pattern.find('{', i);
-        if (open == std::string_view::npos) {
-            out += pattern.substr(i);
-            break;
-        }
-        out += pattern.substr(i, open - i);
-        const std::size_t close = pattern.find('}', open);
-        if (close == std::string_view::npos) {
-            out += pattern.substr(open);
-            break;
-        }
-        const std::string_view name = pattern.substr(open + 1, close - open - 1);
-        const auto value = std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == name; });
-        out += value != values.end() ? value->second : std::string(pattern.substr(open, close - open + 1));
-        i = close + 1;
-    }
-    return out;
-}
-
-std::vector<std::string> value_names(std::string_view pattern) {
-    std::vector<std::string> names;
-    for (std::size_t open = pattern.find('{'); open != std::string_view::npos; open = pattern.find('{', open + 1))
-        if (const std::size_t close = pattern.find('}', open); close != std::string_view::npos)
-            names.emplace_back(pattern.substr(open + 1, close - open - 1));
-    std::sort(names.begin(), names.end());
-    names.erase(std::unique(names.begin(), names.end()), names.end());
-    return names;
-}
-
 void Strings::add(const std::string& language, const std::string& path, std::string_view text) {
     try {
         const toml::table root = toml::parse(text, path);

@@ -18,9 +18,11 @@
 #include <utility>
 #include <vector>
 
+#include "core/phrase.h"
+
 namespace hsr::viz {
 
-using StringValues = std::initializer_list<std::pair<std::string_view, std::string>>;
+using StringValues = std::initializer_list<algo::NamedValue>;
 
 class Strings {
 public:
@@ -52,10 +54,10 @@ private:
     void check();
 };
 
-// Fills a template's {names} (also for the lessons' own sentences).
-std::string fill(std::string_view pattern, StringValues values);
+// Fills a template's {names} and {name?one|other} plurals (also for the lessons' own sentences).
+using algo::fill;
 // The {names} a template uses, sorted.
-std::vector<std::string> value_names(std::string_view pattern);
+using algo::value_names;
 
 // The window's catalogue, loaded once from data_dir()/assets/strings.
 Strings& window_strings();
