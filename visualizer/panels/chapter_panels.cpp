@@ -51,16 +51,13 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     } else {
         wrapped_text(reflow(lesson.summary), dim_text);
     }
-    // the student's choice; when the lesson is not narrated in it, say which language it is narrated in
-    const std::string& chosen = room.chosen_language().empty() ? room.language() : room.chosen_language();
-    const std::string language =
-        chosen == room.language() ? chosen : tr("chapters.narrated_in", {{"chosen", chosen}, {"narration", room.language()}});
-    const StringValues score = {{"language", language},
-                                {"right", std::to_string(room.right())},
-                                {"answered", std::to_string(room.answered())},
-                                {"questions", std::to_string(room.questions())}};
-    wrapped_text(tr(room.questions() ? "chapters.keys_and_score" : "chapters.keys", score), dim_text);
     end_column_box(l, Box::lesson);
+}
+
+std::string language_hint(const Classroom& room) {
+    // the student's choice; when the lesson is not narrated in it, which language it is narrated in
+    const std::string& chosen = room.chosen_language().empty() ? room.language() : room.chosen_language();
+    return chosen == room.language() ? chosen : tr("chapters.narrated_in", {{"chosen", chosen}, {"narration", room.language()}});
 }
 
 void question_panel(const Session& s, const Classroom& room, const CourseLesson* next, const PanelLayout& l, UiActions& out) {
@@ -73,7 +70,13 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
     ImGui::PushStyleColor(ImGuiCol_TitleBg, question_title);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, question_title);
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.08f, 0.08f, 0.1f, 1));
-    begin_column_box(l, Box::question, tr(q ? "box.question" : finished ? "box.end" : "box.answer").c_str());
+    // the title says the score so far (the lesson box keeps its room for the chapter's words)
+    const StringValues score = {{"right", std::to_string(room.right())},
+                                {"answered", std::to_string(room.answered())},
+                                {"questions", std::to_string(room.questions())}};
+    const std::string title = tr(q ? "box.question" : finished ? "box.end" : "box.answer") +
+                              (finished ? std::string() : tr(room.answered() ? "chapters.title_score" : "chapters.title_questions", score));
+    begin_column_box(l, Box::question, (title + "###question").c_str());
     ImGui::PopStyleColor(3);
     if (q) {
         wrapped_text(in_language(q->ask, room.language(), lesson.languages));

@@ -15,6 +15,8 @@ namespace hsr::viz {
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& layout);
 // The column's last box: the open question (out.answer on a click) or the last verdict; at the lesson's end, the
 // end card (the score, what the lesson showed, the next lesson of the course, `next`, to open).
+// The language for the keys' hint: "de", or "de; this lesson speaks en" when the lesson lacks the chosen one.
+std::string language_hint(const Classroom& room);
 void question_panel(const Session& s, const Classroom& room, const CourseLesson* next, const PanelLayout& layout,
                     UiActions& out);
 

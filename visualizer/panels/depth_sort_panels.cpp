@@ -1,42 +1,88 @@
 // SPDX-License-Identifier: MIT
 #include "panels/depth_sort_panels.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
 // The tests tried on the pair under examination, one row each (the swapped retries of 3 and 4 after the five),
 // scrolled so that the latest is in sight.
+namespace {
+
+std::string numbers_of(const algo::TestTried& t) {
+    char buffer[96];
+    switch (t.test) {
+        case algo::OrderTest::x_extents:
+        case algo::OrderTest::y_extents:
+            std::snprintf(buffer, sizeof buffer, "%.2f,%.2f|%.2f,%.2f", t.a, t.b, t.c, t.d);
+            {
+                const std::string n = buffer;
+                const std::size_t bar = n.find('|');
+                return tr("depth_sort.extents", {{"r", n.substr(0, bar)}, {"q", n.substr(bar + 1)}});
+            }
+        case algo::OrderTest::projections: return tr(t.a != 0 ? "depth_sort.overlap" : "depth_sort.separated");
+        default: {
+            const auto count = [](double x) { return std::to_string(static_cast<long long>(x)); };
+            return tr("depth_sort.sides", {{"far", count(t.a)}, {"near", count(t.b)}, {"on", count(t.c)}});
+        }
+    }
+}
+
+}  // namespace
+
+// The tests tried on the pair under examination, one row each (the swapped retries of 3 and 4 after the five),
+// scrolled so that the latest is in sight. The names and the numbers side by side when the box is wide enough for
+// them whole, else the numbers under the name: nothing is cut at any scale.
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "Decision table");
+    begin_column_box(l, Box::state, (tr("depth_sort.table") + "###decision table").c_str());
     const DepthSortView& v = s.view();
     if (v.r < 0) {
-        ImGui::TextColored(dim_text, v.done ? "All drawn: %zu polygons, %u moves, %u splits." : "No pair under examination.",
-                           v.drawn.size(), v.moves, v.splits);
+        wrapped_text(v.done ? tr("depth_sort.all_drawn", {{"drawn", std::to_string(v.drawn.size())}, {"moves", std::to_string(v.moves)},
+                                                          {"splits", std::to_string(v.splits)}})
+                            : tr("depth_sort.no_pair"),
+                     dim_text);
     } else if (v.tests.empty()) {
-        ImGui::Text("R = #%d and Q = #%d overlap in z: the tests come next.", v.r, v.q);
+        wrapped_text(tr("depth_sort.pair", {{"r", std::to_string(v.r)}, {"q", std::to_string(v.q)}}));
     }
     ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
-    if (!v.tests.empty() && ImGui::BeginTable("tests", 3, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, 226);
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, 28);
-        ImGui::TableSetupColumn("numbers");
+    const auto width_of = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    float names = 0, verdict = std::max(width_of(tr("depth_sort.yes")), width_of(tr("depth_sort.no"))), numbers = 0;
+    for (const algo::OrderTest t : {algo::OrderTest::x_extents, algo::OrderTest::y_extents, algo::OrderTest::r_behind_q,
+                                    algo::OrderTest::q_in_front_of_r, algo::OrderTest::projections,
+                                    algo::OrderTest::q_behind_r, algo::OrderTest::r_in_front_of_q})
+        names = std::max(names, width_of(std::string(algo::to_string(t))));
+    for (const algo::TestTried& t : v.tests) numbers = std::max(numbers, width_of(numbers_of(t)));
+    // the numbers beside the verdict where the row's fit, else under the test's name; only two columns when even the
+    // shortest numbers do not fit beside the names
+    float shortest = numbers;
+    for (const algo::TestTried& t : v.tests) shortest = std::min(shortest, width_of(numbers_of(t)));
+    const float pad = 3 * 2 * 4 + 2 * ImGui::GetStyle().ItemSpacing.x;
+    const float room = ImGui::GetContentRegionAvail().x - names - verdict - pad;
+    const bool three = shortest <= room;
+    if (!v.tests.empty() && ImGui::BeginTable("tests", three ? 3 : 2, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, names);
+        ImGui::TableSetupColumn("verdict", ImGuiTableColumnFlags_WidthFixed, verdict);
+        if (three) ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch);
         for (const algo::TestTried& t : v.tests) {
+            const std::string n = numbers_of(t);
+            const bool beside = three && width_of(n) <= room;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(std::string(algo::to_string(t.test)).c_str());
+            wrapped_text(std::string(algo::to_string(t.test)));
+            if (!beside) wrapped_text("    " + n, dim_text);
             ImGui::TableNextColumn();
-            ImGui::TextColored(t.passed ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", t.passed ? "yes" : "no");
-            ImGui::TableNextColumn();
-            switch (t.test) {
-                case algo::OrderTest::x_extents:
-                case algo::OrderTest::y_extents: ImGui::Text("R [%.2f,%.2f]  Q [%.2f,%.2f]", t.a, t.b, t.c, t.d); break;
-                case algo::OrderTest::projections: ImGui::TextUnformatted(t.a != 0 ? "overlap" : "separated"); break;
-                default: ImGui::Text("far %g · near %g · on %g", t.a, t.b, t.c);
+            ImGui::TextColored(t.passed ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", tr(t.passed ? "depth_sort.yes" : "depth_sort.no").c_str());
+            if (three) {
+                ImGui::TableNextColumn();
+                if (beside) ImGui::TextUnformatted(n.c_str());
             }
         }
         ImGui::SetScrollHereY(1.0f);

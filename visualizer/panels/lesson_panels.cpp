@@ -103,13 +103,23 @@ void narration_panel(const Session& s, const PanelLayout& l) {
     const std::string now = s.narration();
     wrapped_text(now.empty() ? tr("narration.start") : now);
     const float need = column_box_height_so_far();
-    // the few events before, faint, newest first
-    for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back) wrapped_text(s.sentence(s.cursor() - back), dim_text);
-    end_column_box(l, Box::narration, need);
+    // the few events before, faint, newest first: those that fit whole (no line cut at the box's foot, no scrollbar
+    // for them); the fit is told how tall all of them are, to give them room when the column has it
+    const float bottom = ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y;
+    float full = need;
+    bool fits = true;
+    for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back) {
+        const std::string before = s.sentence(s.cursor() - back);
+        const float h = wrapped_height(before);
+        full += h;
+        fits = fits && ImGui::GetCursorPosY() + h - ImGui::GetStyle().ItemSpacing.y <= bottom;
+        if (fits) wrapped_text(before, dim_text);
+    }
+    end_column_box(l, Box::narration, need, full);
 }
 
 // ── [SECTION] timeline ──────────────────────────────────────────────────────────────────────────────────────
-void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices,
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const std::string& language,
                     const std::vector<TimelineMark>& marks, const PanelLayout& l, UiActions& out) {
     place(0, l.height - l.bottom, l.width, l.bottom);
     ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
@@ -140,8 +150,11 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
     const std::string step = step_text(s);
     const float room = ImGui::GetContentRegionAvail().x;
     const std::string keys = question_choices ? "1–" + std::to_string(question_choices) : "";
-    std::string line = question_choices ? tr("timeline.question_waits", {{"step", step}, {"keys", keys}})
-                                        : tr("timeline.keys", {{"step", step}});
+    std::string line = question_choices   ? tr("timeline.question_waits", {{"step", step}, {"keys", keys}})
+                       : !language.empty() ? tr("timeline.keys_chapters", {{"step", step}, {"language", language}})
+                                           : tr("timeline.keys", {{"step", step}});
+    if (ImGui::CalcTextSize(line.c_str()).x > room && !question_choices && !language.empty())
+        line = tr("timeline.keys_chapters_short", {{"step", step}, {"language", language}});
     if (ImGui::CalcTextSize(line.c_str()).x > room)
         line = question_choices ? tr("timeline.question_short", {{"step", step}, {"keys", keys}}) : tr("timeline.keys_short", {{"step", step}});
     if (ImGui::CalcTextSize(line.c_str()).x > room) line = step;

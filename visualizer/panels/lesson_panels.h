@@ -43,7 +43,8 @@ struct TimelineMark {
     std::string title;
 };
 // `question_choices`: while a question waits for an answer, its number of choices (the player holds), else 0.
-void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices,
+// `language`: for a lesson with chapters, the language as the keys' hint names it (its PgUp/PgDn and L), else "".
+void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t question_choices, const std::string& language,
                     const std::vector<TimelineMark>& marks, const PanelLayout& layout, UiActions& out);
 // `stopped`: the opening was stopped (Esc), the file is not at fault.
 void error_panel(const std::string& message, bool stopped, const PanelLayout& layout, UiActions& out);

@@ -2,6 +2,8 @@
 // Colours and placement shared by the panels.
 #pragma once
 
+#include <algorithm>
+
 #include <imgui.h>
 #include <imgui_internal.h>
 
@@ -61,11 +63,12 @@ inline float column_box_height_so_far() {
     return ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y + 2;
 }
 
-// `need`: how much of the box must be seen (column_box_height_so_far() at that point), all of it by default.
-inline void end_column_box(const PanelLayout& l, Box b, float need = -1) {
+// `need`: how much of the box must be seen (column_box_height_so_far() at that point), all of it by default;
+// `full`: how tall it would be with all it has to show (when it left out what did not fit whole), else as drawn.
+inline void end_column_box(const PanelLayout& l, Box b, float need = -1, float full_height = -1) {
     audit_current_window();
     if (l.fit) {
-        float full = column_box_height_so_far();
+        float full = std::max(full_height, column_box_height_so_far());
         if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;
         l.fit->asked(b, {need < 0 ? full : need, full});
     }

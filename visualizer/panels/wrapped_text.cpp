@@ -16,6 +16,12 @@ void wrapped_text(std::string_view text) {
     if (broken) note_broken_word();
 }
 
+float wrapped_height(std::string_view text) {
+    const float width = std::max(ImGui::GetContentRegionAvail().x, 1.0f);
+    const auto lines = wrap_at_spaces(text, width, [](std::string_view s) { return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x; });
+    return float(lines.size()) * ImGui::GetTextLineHeightWithSpacing();
+}
+
 void wrapped_text(std::string_view text, const ImVec4& colour) {
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     wrapped_text(text);

@@ -14,5 +14,7 @@ namespace hsr::viz {
 // Draws `text` wrapped at spaces to the window's content width, in `colour` (the current text colour by default).
 void wrapped_text(std::string_view text);
 void wrapped_text(std::string_view text, const ImVec4& colour);
+// How tall wrapped_text(text) would be in the current window (its lines with their spacing).
+float wrapped_height(std::string_view text);
 
 }  // namespace hsr::viz
