@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 #include <vector>
 
+#include "core/phrase.h"
 #include "core/plane.h"
 #include "scene/scene.h"
 
@@ -112,7 +114,11 @@ using DepthSortEvent = std::variant<ListSorted, PairExamined, TestTried, Polygon
                                     PolygonPainted, DepthSortFinished, SortBoundReached, FrontPolygonDrawn, ScreenFilled,
                                     FrontDisplayFinished>;
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const DepthSortEvent& e);
 std::string describe(const DepthSortEvent& e);
 std::string_view to_string(OrderTest t);
+const Saying& term(OrderTest t);  // a test's name, to translate
+std::span<const Saying> depth_sort_sayings();  // every template the depth sort says
 
 }  // namespace hsr::algo

@@ -41,8 +41,10 @@ Steps<FrontToBackEvent, FrontToBackResult> display_front_to_back(std::vector<Sor
     co_return out;
 }
 
-std::string describe(const FrontToBackEvent& event) {
-    return std::visit([](const auto& e) { return describe(DepthSortEvent{e}); }, event);
+Phrase phrase(const FrontToBackEvent& event) {
+    return std::visit([](const auto& e) { return phrase(DepthSortEvent{e}); }, event);
 }
+
+std::string describe(const FrontToBackEvent& event) { return phrase(event).english(); }
 
 }  // namespace hsr::algo

@@ -23,6 +23,7 @@
 namespace hsr::algo {
 
 using FrontToBackEvent = std::variant<FrontPolygonDrawn, ScreenFilled, FrontDisplayFinished>;
+Phrase phrase(const FrontToBackEvent& e);
 std::string describe(const FrontToBackEvent& e);
 
 struct FrontToBackResult {

@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "catch.h"
+#include "sayings.h"
+#include "state/families.h"
 #include "state/strings.h"
 
 using namespace hsr::viz;
@@ -24,7 +26,8 @@ TEST_CASE("the shipped catalogues: English and German, the same keys, the same v
 
 TEST_CASE("every key the window's code asks for is in the English catalogue", "[strings]") {
     const Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
-    const std::regex call(R"re(\btr\("([a-z_]+\.[a-z_.]+)")re");
+    // every "section.key" literal in a tr( call, also the two sides of a choice: tr(right ? "a.yes" : "a.no")
+    const std::regex call(R"re(\btr\(([^;]*))re"), key_literal(R"re("([a-z_]+\.[a-z_.]+)")re");
     std::set<std::string> asked;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(HSR_SOURCE_DIR "/visualizer")) {
         if (entry.path().extension() != ".cpp" && entry.path().extension() != ".h") continue;
@@ -32,7 +35,11 @@ TEST_CASE("every key the window's code asks for is in the English catalogue", "[
         std::stringstream text;
         text << in.rdbuf();
         const std::string source = text.str();
-        for (auto it = std::sregex_iterator(source.begin(), source.end(), call); it != std::sregex_iterator(); ++it) asked.insert((*it)[1]);
+        for (auto it = std::sregex_iterator(source.begin(), source.end(), call); it != std::sregex_iterator(); ++it) {
+            const std::string args = (*it)[1];
+            for (auto k = std::sregex_iterator(args.begin(), args.end(), key_literal); k != std::sregex_iterator(); ++k)
+                asked.insert((*k)[1]);
+        }
     }
     CHECK(asked.size() >= 20);  // the migration is real: the timeline, the boxes, the practice box
     for (const std::string& key : asked) {
@@ -78,4 +85,57 @@ TEST_CASE("a catalogue with a syntax error is left out and named with its line; 
     CHECK_THAT(s.problems().front(), Catch::Contains("de.toml:2"));
     s.use("de");
     CHECK(s.text("t.play") == "Play");
+}
+
+TEST_CASE("the catalogue's English copy of the machines' sentences is the machines' own, key for key", "[strings]") {
+    const Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
+    std::set<std::string> said;
+    for (const auto family : hsr::algo::machine_sayings())
+        for (const hsr::algo::Saying& saying : family) {
+            const std::string key = "machine." + std::string(saying.key);
+            INFO(key);
+            CHECK(said.insert(key).second);  // no key twice
+            CHECK(s.english(key) == saying.english);
+        }
+    CHECK(said.size() >= 20);
+    for (const std::string& key : s.keys("en"))
+        if (key.rfind("machine.", 0) == 0) {
+            INFO(key << " is in en.toml but no machine says it");
+            CHECK(said.contains(key));
+        }
+}
+
+TEST_CASE("the depth sort narrates in the language the window speaks; its traces stay English", "[strings][depth_sort]") {
+    Strings& strings = window_strings();
+    const std::string before = strings.language();
+    for (const char* lesson : {"/lessons/13_depth_sort_cycle.toml", "/lessons/16_depth_sort_piercing.toml", "/lessons/28_depth_sort_front_to_back.toml"}) {
+        auto session = make_session(load_lesson(std::string(HSR_SOURCE_DIR) + lesson));
+        session->prefetch(prefetch_events);
+        REQUIRE(session->complete());
+        std::set<std::string> kinds_in_german;
+        for (std::size_t k = 0; k < session->known(); ++k) {
+            strings.use("de");
+            const std::string german = session->spoken(k), english_still = session->sentence(k);
+            strings.use("en");
+            INFO(lesson << " step " << k << ": " << english_still);
+            CHECK(session->spoken(k) == english_still);  // English: the machine's own words, as in the traces
+            CHECK(german != english_still);
+            CHECK(german.find('{') == std::string::npos);  // every value named by the template was given
+            CHECK(english_still.find('{') == std::string::npos);
+        }
+    }
+    strings.use("de");
+    {
+        auto session = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml"));
+        session->prefetch(prefetch_events);
+        bool cycle = false, test = false;
+        for (std::size_t k = 0; k < session->known(); ++k) {
+            const std::string g = session->spoken(k);
+            cycle |= g.find("ein Zyklus. Stattdessen teilen.") != std::string::npos;
+            test |= g.find("3. R ganz hinter der Ebene von Q: nein (2 Ecken auf der fernen Seite") != std::string::npos;
+        }
+        CHECK(cycle);
+        CHECK(test);
+    }
+    strings.use(before);
 }

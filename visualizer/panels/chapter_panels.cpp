@@ -102,7 +102,11 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
             wrapped_text(tr("chapters.shown_before"), dim_text);
         else
             wrapped_text(tr(verdict->right ? "chapters.right" : "chapters.not_quite"), verdict->right ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
-        wrapped_text(tr("chapters.machine", {{"answer", verdict->answer}, {"because", verdict->because}}));
+        // the deciding event's sentence in the language the window speaks (the verdict keeps the English)
+        std::string because = verdict->because;
+        if (const auto c = room.chapter(s); c && room.script() && room.script()->places()[*c].answered)
+            because = s.spoken(*room.script()->places()[*c].answered - 1);
+        wrapped_text(tr("chapters.machine", {{"answer", verdict->answer}, {"because", because}}));
     }
     if (finished) end_card(lesson, room, next, out);
     end_column_box(l, Box::question);

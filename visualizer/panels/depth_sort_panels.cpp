@@ -58,7 +58,7 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
     for (const algo::OrderTest t : {algo::OrderTest::x_extents, algo::OrderTest::y_extents, algo::OrderTest::r_behind_q,
                                     algo::OrderTest::q_in_front_of_r, algo::OrderTest::projections,
                                     algo::OrderTest::q_behind_r, algo::OrderTest::r_in_front_of_q})
-        names = std::max(names, width_of(std::string(algo::to_string(t))));
+        names = std::max(names, width_of(window_strings().say(algo::term(t))));
     for (const algo::TestTried& t : v.tests) numbers = std::max(numbers, width_of(numbers_of(t)));
     // the numbers beside the verdict where the row's fit, else under the test's name; only two columns when even the
     // shortest numbers do not fit beside the names
@@ -76,7 +76,7 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
             const bool beside = three && width_of(n) <= room;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            wrapped_text(std::string(algo::to_string(t.test)));
+            wrapped_text(window_strings().say(algo::term(t.test)));
             if (!beside) wrapped_text("    " + n, dim_text);
             ImGui::TableNextColumn();
             ImGui::TextColored(t.passed ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", tr(t.passed ? "depth_sort.yes" : "depth_sort.no").c_str());

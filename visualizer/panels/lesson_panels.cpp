@@ -109,7 +109,7 @@ void narration_panel(const Session& s, const PanelLayout& l) {
     float full = need;
     bool fits = true;
     for (std::size_t back = 2; back <= 4 && back <= s.cursor(); ++back) {
-        const std::string before = s.sentence(s.cursor() - back);
+        const std::string before = s.spoken(s.cursor() - back);
         const float h = wrapped_height(before);
         full += h;
         fits = fits && ImGui::GetCursorPosY() + h - ImGui::GetStyle().ItemSpacing.y <= bottom;

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "core/overloaded.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -102,6 +103,7 @@ DepthSortSession::DepthSortSession(Lesson lesson, PlayerOptions options) : Playe
 
 std::string DepthSortSession::sentence_of(const DepthSortEvent& e, const DepthSortView&) { return describe(e); }
 std::string DepthSortSession::describe_event(const DepthSortEvent& e) const { return sentence_of(e, view()); }
+std::string DepthSortSession::speak_event(const DepthSortEvent& e) const { return window_strings().say(phrase(e)); }
 
 const Pseudocode<DepthSortEvent>& DepthSortSession::table() const { return sort_lines; }
 

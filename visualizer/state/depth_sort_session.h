@@ -41,6 +41,7 @@ public:
 
 private:
     std::string describe_event(const algo::DepthSortEvent& e) const override;
+    std::string speak_event(const algo::DepthSortEvent& e) const override;
     const Pseudocode<algo::DepthSortEvent>& table() const override;
 };
 

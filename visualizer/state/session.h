@@ -39,9 +39,12 @@ public:
     virtual void seek_end() = 0;
     virtual void prefetch(std::size_t n) = 0;
 
-    virtual std::string sentence(std::size_t k) const = 0;  // describe(event k)
+    virtual std::string sentence(std::size_t k) const = 0;  // describe(event k), in English (traces, tests, the CLI)
+    // The same sentence in the language the window speaks (window_strings()), where the family's machine says it
+    // as a template; else the English.
+    virtual std::string spoken(std::size_t k) const { return sentence(k); }
     virtual std::string event_line(std::size_t k) const = 0;  // event k as its trace writes it (JSON)
-    std::string narration() const { return cursor() == 0 ? std::string() : sentence(cursor() - 1); }
+    std::string narration() const { return cursor() == 0 ? std::string() : spoken(cursor() - 1); }  // the window's language
     virtual std::span<const std::string_view> pseudocode() const = 0;
     virtual int current_line() const = 0;  // of pseudocode(), −1 at the start
 
@@ -86,6 +89,7 @@ public:
     void seek_end() override { player_.seek_end(); }
     void prefetch(std::size_t n) override { player_.prefetch(n); }
     std::string sentence(std::size_t k) const override { return describe_event(player_.event(k)); }
+    std::string spoken(std::size_t k) const override { return speak_event(player_.event(k)); }
     std::string event_line(std::size_t k) const override { return trace_line(k, player_.event(k), sentence(k)); }
     std::span<const std::string_view> pseudocode() const override { return table().text(); }
     int current_line() const override {
@@ -105,6 +109,7 @@ protected:
         player_.seek(k);
     }
     virtual std::string describe_event(const Event& e) const = 0;
+    virtual std::string speak_event(const Event& e) const { return describe_event(e); }
     // The pseudocode shown now, with the events that light each line and whether they are Steps.
     virtual const Pseudocode<Event>& table() const = 0;
     // A Step stops after a major event, a micro-step after any; an event no line names is a Step.

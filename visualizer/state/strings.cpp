@@ -91,6 +91,20 @@ std::vector<std::string> Strings::languages() const {
     return out;
 }
 
+std::string Strings::english(std::string_view key) const {
+    const auto english = catalogues_.find("en");
+    if (english == catalogues_.end()) return {};
+    const auto it = english->second.find(std::string(key));
+    return it == english->second.end() ? std::string() : it->second;
+}
+
+std::vector<std::string> Strings::keys(const std::string& language) const {
+    std::vector<std::string> out;
+    if (const auto c = catalogues_.find(language); c != catalogues_.end())
+        for (const auto& [key, pattern] : c->second) out.push_back(key);
+    return out;
+}
+
 bool Strings::has(std::string_view key) const {
     const auto english = catalogues_.find("en");
     return english != catalogues_.end() && english->second.find(std::string(key)) != english->second.end();
@@ -103,6 +117,21 @@ std::string Strings::text(std::string_view key, StringValues values) const {
         if (const auto it = catalogue->second.find(std::string(key)); it != catalogue->second.end()) return fill(it->second, values);
     }
     return std::string(key);
+}
+
+std::string_view Strings::pattern_of(const algo::Saying& s) const {
+    if (const auto catalogue = catalogues_.find(language_); catalogue != catalogues_.end() && language_ != "en")
+        if (const auto it = catalogue->second.find("machine." + std::string(s.key)); it != catalogue->second.end()) return it->second;
+    return s.english;  // English is the machine's own (the catalogue's English copy is checked equal to it by a test)
+}
+
+std::string Strings::say(const algo::Saying& term) const { return std::string(pattern_of(term)); }
+
+std::string Strings::say(const algo::Phrase& phrase) const {
+    if (!phrase.saying) return {};
+    std::vector<algo::NamedValue> values = phrase.values;
+    for (const auto& [name, term] : phrase.terms) values.emplace_back(name, say(*term));
+    return fill(pattern_of(*phrase.saying), values);
 }
 
 Strings& window_strings() {

@@ -40,6 +40,12 @@ public:
     // The template for `key` in the language used (else English, else the key itself, so that a gap shows rather
     // than crashes), its {names} filled from `values`; a name without a value stays as written.
     std::string text(std::string_view key, StringValues values = {}) const;
+    // What a machine's event says (algo::phrase(event)), in the language used: its template under [machine] in that
+    // language's catalogue, else the machine's own English; its terms (a test's name) likewise.
+    std::string say(const algo::Phrase& phrase) const;
+    std::string say(const algo::Saying& term) const;  // a word or name the machine uses, without values
+    std::string english(std::string_view key) const;            // the English template as written ("" if none)
+    std::vector<std::string> keys(const std::string& language) const;  // a catalogue's keys, sorted
     // Does the catalogue hold the key in English?
     bool has(std::string_view key) const;
 
@@ -51,6 +57,7 @@ private:
     std::string language_ = "en";
     std::vector<std::string> problems_;
     void add(const std::string& language, const std::string& path, std::string_view text);
+    std::string_view pattern_of(const algo::Saying& s) const;
     void check();
 };
 
