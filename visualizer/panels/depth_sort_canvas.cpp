@@ -13,6 +13,7 @@
 #include "panels/depth_sort_panels.h"
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -38,11 +39,11 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
     anim.x.resize(v.polygons.size(), NAN);
     const std::size_t n = v.drawn.size() + v.list.size();
     const float gap = 26, chip = std::clamp((w - gap) / float(std::max<std::size_t>(n, 1)) - 4, 8.0f, 46.0f);
-    const std::string heading = "drawn, back to front · " + std::to_string(v.moves) + (v.moves == 1 ? " move · " : " moves · ") +
-                              std::to_string(v.splits) + (v.splits == 1 ? " split" : " splits");
+    const std::string heading = tr("depth_sort.heading", {{"moves", std::to_string(v.moves)}, {"splits", std::to_string(v.splits)}});
     d->AddText(at, dim_colour, heading.c_str());
     const float list_x0 = at.x + float(v.drawn.size()) * (chip + 4) + (v.drawn.empty() ? 0 : gap);
-    d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour, "display list, head first →");
+    d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour,
+               tr("depth_sort.display_list").c_str());
     const float y = at.y + 22;
     const auto place_chip = [&](std::uint32_t i, float target) {
         float& x = anim.x[i];
@@ -60,14 +61,15 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
         if (int(i) == v.q) edge = q_colour, thickness = canvas_px(3);
         d->AddRect(a, b, edge, 3, 0, thickness);
         if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_colour, ("#" + std::to_string(i)).c_str());
-        const char* note = int(i) == v.moved ? "moved" : int(i) == v.cycle ? "cycle" : int(i) == v.r ? "R" : int(i) == v.q ? "Q" : nullptr;
-        if (note) d->AddText(ImVec2(a.x + 2, b.y + 2), int(i) == v.cycle ? cut_colour : text_colour, note);
+        const std::string note = int(i) == v.moved ? tr("depth_sort.moved_note") : int(i) == v.cycle ? tr("depth_sort.cycle_note")
+                                 : int(i) == v.r   ? "R" : int(i) == v.q ? "Q" : "";
+        if (!note.empty()) d->AddText(ImVec2(a.x + 2, b.y + 2), int(i) == v.cycle ? cut_colour : text_colour, note.c_str());
     };
     for (std::size_t k = 0; k < v.drawn.size(); ++k) place_chip(v.drawn[k], at.x + float(k) * (chip + 4));
     for (std::size_t k = 0; k < v.list.size(); ++k) place_chip(v.list[k], list_x0 + float(k) * (chip + 4));
     if (v.cut >= 0) {
-        const std::string cut = "#" + std::to_string(v.cut) + " was cut into #" + std::to_string(v.polygons.size() - 2) +
-                                " and #" + std::to_string(v.polygons.size() - 1);
+        const std::string cut = tr("depth_sort.was_cut", {{"polygon", std::to_string(v.cut)}, {"front", std::to_string(v.polygons.size() - 2)},
+                                                          {"back", std::to_string(v.polygons.size() - 1)}});
         d->AddText(ImVec2(at.x, y + 48), cut_colour, cut.c_str());
     }
 }
@@ -105,7 +107,7 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     const DepthSortView& v = s.view();
     d->AddRectFilled(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(26, 28, 33, 255));
     d->AddRect(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(110, 114, 122, 255));
-    d->AddText(ImVec2(screen.o.x, screen.o.y - 20), text_colour, "screen (x, y): tests 1, 2, 5");
+    d->AddText(ImVec2(screen.o.x, screen.o.y - 20), text_colour, tr("depth_sort.screen_inset").c_str());
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) projection(d, screen, v.polygons[i], 0, IM_COL32(110, 114, 122, 200), 1);
     if (v.r < 0 || v.q < 0) return;
@@ -119,7 +121,7 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     for (const algo::TestTried& t : v.tests)
         if (t.test == algo::OrderTest::projections)
             d->AddText(ImVec2(screen.o.x + 4, screen.o.y + 4), t.passed ? IM_COL32(90, 205, 140, 255) : cut_colour,
-                       t.passed ? "5: projections apart" : "5: projections overlap");
+                       tr(t.passed ? "depth_sort.inset_apart" : "depth_sort.inset_overlap").c_str());
 }
 
 }  // namespace
@@ -132,7 +134,8 @@ void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo:
     const float size = std::clamp(std::min(w * 0.34f, h * 0.40f), 110.0f, 420.0f);
     screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
     const ImVec2 at(x + w - size - 16, y + h - size - 34);
-    d->AddText(ImVec2(at.x, at.y - 20), text_colour, s.view().front_to_back ? "drawn so far (front to back)" : "painted so far (over)");
+    d->AddText(ImVec2(at.x, at.y - 20), text_colour,
+               tr(s.view().front_to_back ? "depth_sort.drawn_so_far" : "depth_sort.painted_so_far").c_str());
     draw_image(d, painted, at, ImVec2(size, size));
     ImGui::End();
 }

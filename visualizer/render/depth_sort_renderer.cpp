@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/palette.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -53,7 +54,7 @@ void draw_depth_sort_view(const DepthSortView& v, LineBatches& out, std::vector<
     // near face towards it, labelled where it leaves the volume
     out.faint.line(shown({0, 0, -1}), shown({0, 0, -1.6}), palette::eye);
     out.bold.point(shown({0, 0, -1.6}), palette::eye);
-    labels.push_back({shown({0, 0, -1}), "to the eye (z grows away)", palette::eye});
+    labels.push_back({shown({0, 0, -1}), tr("depth_sort.to_the_eye"), palette::eye});
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.15f), colour_of(v.polygons[i], 0.8f), false);
     for (std::uint32_t i : v.drawn) polygon(out, v.polygons[i], colour_of(v.polygons[i], 0.75f), colour_of(v.polygons[i], 1), false);

@@ -7,6 +7,7 @@
 #include "render/depth_sort_renderer.h"
 #include "screens/screen.h"
 #include "state/depth_sort_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -20,7 +21,7 @@ public:
     }
     void draw_scene(const DepthSortSession& s, SceneFrame& f) const {
         draw_depth_sort_view(s.view(), f.batches, f.labels);
-        f.detail = "in the canonical view volume (x, y, z in [-1, 1]) · the eye far along -z";
+        f.detail = tr("depth_sort.detail");
     }
     void draw_panels(const DepthSortSession& s, PanelFrame& f) {
         // repainted only when what is drawn changes (a step, a seek, a reload): the list back to front, then what
