@@ -109,7 +109,8 @@ std::string pixel_triangles_text(const std::vector<PixelTriangle>& t) {
         s += ", depth " + number_text(t[k].depth) + ")";
     }
     return s + " on a 32 × 24 grid: corners in pixels, x to the right and y down, pixel (i, j) the square from (i, j) to "
-               "(i + 1, j + 1), taken at its centre; depth is the distance from the eye, and the nearer wins.";
+               "(i + 1, j + 1), taken at its centre; depth is the distance from the eye, and the nearer wins. (The machine "
+               "numbers them from 0: triangle 1 is its #0.)";
 }
 
 nlohmann::json pixel_triangles_given(const std::vector<PixelTriangle>& t, const char* kind, int x, int y, std::size_t triangle) {
