@@ -8,10 +8,12 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 
 #include "clipping/clip_space.h"
 #include "core/events.h"
+#include "core/phrase.h"
 
 namespace hsr::algo {
 
@@ -175,7 +177,13 @@ static_assert(sizeof(EdgeClassified) <= 56);
 static_assert(sizeof(OutcodeComputed) <= 40);
 
 // One sentence with the live numbers, for the narration panel, traces and test failures.
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const ClipEvent& e, ClipSpace s);
 std::string describe(const ClipEvent& e, ClipSpace s);
+const Saying& term(ClipOutcome o);  // words to translate
+const Saying& term(BoundaryCase c);
+const Saying& term(Bound b);
+std::span<const Saying> clipping_sayings();  // every template the clippers say
 
 std::string_view to_string(ClipOutcome o);
 std::string_view to_string(EdgeCase c);

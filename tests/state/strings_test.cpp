@@ -105,24 +105,28 @@ TEST_CASE("the catalogue's English copy of the machines' sentences is the machin
         }
 }
 
-TEST_CASE("the depth sort narrates in the language the window speaks; its traces stay English", "[strings][depth_sort]") {
+TEST_CASE("the machines narrate in the language the window speaks; their traces stay English", "[strings]") {
     Strings& strings = window_strings();
     const std::string before = strings.language();
-    for (const char* lesson : {"/lessons/13_depth_sort_cycle.toml", "/lessons/16_depth_sort_piercing.toml", "/lessons/28_depth_sort_front_to_back.toml"}) {
+    // the families whose machines say their events as templates (algorithms/sayings.cpp), a lesson or more each
+    for (const char* lesson : {"/lessons/13_depth_sort_cycle.toml", "/lessons/16_depth_sort_piercing.toml", "/lessons/28_depth_sort_front_to_back.toml",
+                               "/lessons/01_cohen_sutherland.toml", "/lessons/02_liang_barsky.toml", "/lessons/03_sutherland_hodgman.toml"}) {
         auto session = make_session(load_lesson(std::string(HSR_SOURCE_DIR) + lesson));
         session->prefetch(prefetch_events);
         REQUIRE(session->complete());
-        std::set<std::string> kinds_in_german;
+        std::size_t translated = 0;
         for (std::size_t k = 0; k < session->known(); ++k) {
             strings.use("de");
             const std::string german = session->spoken(k), english_still = session->sentence(k);
             strings.use("en");
             INFO(lesson << " step " << k << ": " << english_still);
             CHECK(session->spoken(k) == english_still);  // English: the machine's own words, as in the traces
-            CHECK(german != english_still);
+            translated += german != english_still;  // a few are formulae alike in both ("t_enter 0 → 0.25")
             CHECK(german.find('{') == std::string::npos);  // every value named by the template was given
             CHECK(english_still.find('{') == std::string::npos);
         }
+        INFO(lesson << ": " << translated << " of " << session->known() << " sentences differ in German");
+        CHECK(translated * 10 >= session->known() * 8);
     }
     strings.use("de");
     {

@@ -2,6 +2,7 @@
 #include "state/clip_session.h"
 
 #include "state/clip_pseudocode.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -20,6 +21,7 @@ ClipSession::ClipSession(Lesson lesson, PlayerOptions options)
 
 std::string ClipSession::sentence_of(const algo::ClipEvent& e, const ClipView& view) { return algo::describe(e, view.space); }
 std::string ClipSession::describe_event(const algo::ClipEvent& e) const { return sentence_of(e, view()); }
+std::string ClipSession::speak_event(const algo::ClipEvent& e) const { return window_strings().say(algo::phrase(e, view().space)); }
 const Pseudocode<algo::ClipEvent>& ClipSession::table() const { return pseudocode_table(algorithm_); }
 
 const FamilyFacts ClipSession::facts = {

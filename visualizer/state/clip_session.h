@@ -25,6 +25,7 @@ public:
 
 private:
     std::string describe_event(const algo::ClipEvent& e) const override;
+    std::string speak_event(const algo::ClipEvent& e) const override;
     const Pseudocode<algo::ClipEvent>& table() const override;
     algo::ClipAlgorithm algorithm_;
 };
