@@ -128,6 +128,13 @@ TEST_CASE("the machines narrate in the language the window speaks; their traces 
         INFO(lesson << ": " << translated << " of " << session->known() << " sentences differ in German");
         CHECK(translated * 10 >= session->known() * 8);
     }
+    // a lesson's choices that are a machine's words are shown in the student's language (the answer stays English)
+    strings.use("de");
+    CHECK(strings.word("entering") == "eintretend");
+    CHECK(strings.word("rejected") == "verworfen");
+    CHECK(strings.word("0.5") == "0.5");
+    strings.use("en");
+    CHECK(strings.word("entering") == "entering");
     strings.use("de");
     {
         auto session = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml"));

@@ -86,10 +86,11 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
         for (std::size_t i = 0; i < q->choices.size(); ++i) {
             const std::string number = std::to_string(i + 1);
             const std::string& choice = q->choices[i];
+            const std::string shown = window_strings().word(choice);  // "entering" in the student's language
             const bool numbered = choice.rfind(number + ".", 0) == 0;
             // a choice that is itself a number ("0", "4") gets its key in brackets, so that "1  0" does not read as 10
             const bool number_choice = !choice.empty() && (std::isdigit(static_cast<unsigned char>(choice[0])) || choice[0] == '-');
-            const std::string label = numbered ? choice : number_choice ? "[" + number + "]  " + choice : number + "  " + choice;
+            const std::string label = numbered ? shown : number_choice ? "[" + number + "]  " + shown : number + "  " + shown;
             const float button_width = ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
             if (i > 0) {
                 ImGui::SameLine();
@@ -106,7 +107,7 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
         std::string because = verdict->because;
         if (const auto c = room.chapter(s); c && room.script() && room.script()->places()[*c].answered)
             because = s.spoken(*room.script()->places()[*c].answered - 1);
-        wrapped_text(tr("chapters.machine", {{"answer", verdict->answer}, {"because", because}}));
+        wrapped_text(tr("chapters.machine", {{"answer", window_strings().word(verdict->answer)}, {"because", because}}));
     }
     if (finished) end_card(lesson, room, next, out);
     end_column_box(l, Box::question);

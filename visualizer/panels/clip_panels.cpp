@@ -9,6 +9,8 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -44,7 +46,7 @@ void outcode_table(const ClipView& v) {
         }
     }
     ImGui::EndTable();
-    if (v.plane) ImGui::Text("plane R: %s", std::string(algo::plane_inequality(*v.plane, v.space)).c_str());
+    if (v.plane) wrapped_text(tr("clipping.plane_r", {{"inequality", std::string(algo::plane_inequality(*v.plane, v.space))}}));
 }
 
 void parameter_bar(const ClipView& v) {
@@ -60,7 +62,7 @@ void parameter_bar(const ClipView& v) {
     d->AddText(ImVec2(at.x + 2, at.y + 2), IM_COL32_WHITE, "0");
     d->AddText(ImVec2(at.x + w - 10, at.y + 2), IM_COL32_WHITE, "1");
     ImGui::Dummy(ImVec2(w, h));
-    if (v.plane) ImGui::Text("plane: %s", std::string(algo::plane_inequality(*v.plane, v.space)).c_str());
+    if (v.plane) wrapped_text(tr("clipping.plane", {{"inequality", std::string(algo::plane_inequality(*v.plane, v.space))}}));
 }
 
 void pipeline(const ClipView& v) {
@@ -72,7 +74,7 @@ void pipeline(const ClipView& v) {
         ImGui::SmallButton(std::string(algo::plane_name(r)).c_str());
         ImGui::PopStyleColor();
     }
-    ImGui::Text("stage input: %zu vertices   emitted: %zu", v.stage_input.size(), v.stage_output.size());
+    wrapped_text(tr("clipping.stage_counts", {{"input", std::to_string(v.stage_input.size())}, {"emitted", std::to_string(v.stage_output.size())}}));
     if (v.edge >= 0) ImGui::Text("edge v%d → v%zu", v.edge, (std::size_t(v.edge) + 1) % std::max<std::size_t>(1, v.stage_input.size()));
 }
 
@@ -80,16 +82,16 @@ void pipeline(const ClipView& v) {
 
 void clip_state_panel(const ClipSession& s, const PanelLayout& l) {
     const ClipView& v = s.view();
-    const char* title = s.algorithm() == ClipAlgorithm::cohen_sutherland ? "Outcodes"
-                        : s.algorithm() == ClipAlgorithm::liang_barsky   ? "Parameters"
-                                                                         : "Pipeline";
-    begin_column_box(l, Box::state, title);
+    const std::string title = tr(s.algorithm() == ClipAlgorithm::cohen_sutherland ? "clipping.outcodes"
+                                 : s.algorithm() == ClipAlgorithm::liang_barsky   ? "clipping.parameters"
+                                                                                  : "clipping.pipeline");
+    begin_column_box(l, Box::state, (title + "###clip state").c_str());
     switch (s.algorithm()) {
         case ClipAlgorithm::cohen_sutherland: outcode_table(v); break;
         case ClipAlgorithm::liang_barsky: parameter_bar(v); break;
         case ClipAlgorithm::sutherland_hodgman: pipeline(v); break;
     }
-    if (v.bound_reached) ImGui::TextColored(bit_set, "a step bound was reached");
+    if (v.bound_reached) wrapped_text(tr("clipping.bound_reached"), bit_set);
     end_column_box(l, Box::state);
 }
 

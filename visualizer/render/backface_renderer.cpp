@@ -7,6 +7,7 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -47,7 +48,7 @@ void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBat
         }
     }
     out.bold.point(glm::vec3(v.eye), palette::eye);
-    labels.push_back({glm::vec3(v.eye), "eye", palette::eye});
+    labels.push_back({glm::vec3(v.eye), tr("view.eye"), palette::eye});
 }
 
 void backface_view_bounds(const BackfaceView& v, glm::vec3& centre, float& radius) {

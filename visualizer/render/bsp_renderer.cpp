@@ -10,6 +10,7 @@
 #include "render/palette.h"
 #include "render/scene_color.h"
 #include "state/bsp_painting.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -123,7 +124,7 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         labels.push_back({glm::vec3(algo::centroid(vs)), text, current ? palette::current_edge : colors(p.source, 1.0f)});
     }
     out.bold.point(glm::vec3(v.eye), palette::eye);
-    labels.push_back({glm::vec3(v.eye), "eye", palette::eye});
+    labels.push_back({glm::vec3(v.eye), tr("view.eye"), palette::eye});
     if (v.two_d) {  // what the first-person strip shows: the eye's field of view in the plan
         const algo::Camera c = strip_camera(scene.camera, 1);
         const Vec3 ahead = glm::normalize(c.target - c.eye);

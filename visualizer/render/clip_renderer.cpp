@@ -10,6 +10,7 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -74,7 +75,7 @@ void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera&
         }
     const glm::vec3 eye(camera.eye);
     out.faint.point(eye, palette::eye);
-    labels.push_back({eye, "eye", palette::eye});
+    labels.push_back({eye, tr("view.eye"), palette::eye});
     if (!view.plane) return;
     if (const auto f = face(*view.plane)) {
         std::array<glm::vec3, 4> c{};

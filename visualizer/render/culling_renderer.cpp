@@ -7,6 +7,7 @@
 
 #include "render/frustum.h"
 #include "render/palette.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -46,7 +47,7 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
     const auto& h = v.world->hierarchy;
     draw_frustum(scene.camera, out.faint, {0.94f, 0.89f, 0.26f, 0.6f});
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
-    labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
+    labels.push_back({glm::vec3(scene.camera.eye), tr("view.eye"), palette::eye});
     // primitives: kept solid, left out faint, not yet decided as outlines
     const bool many = scene.polygons.size() > 20000;
     for (std::size_t i = 0; i < scene.polygons.size(); ++i) {

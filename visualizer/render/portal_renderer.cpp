@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/palette.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -41,7 +42,7 @@ void draw_portal_view(const PortalView& v, LineBatches& out, std::vector<Label>&
     for (std::size_t k = 0; k < m.portals.size(); k += 2) outline(out.faint, m.portals[k].opening, palette::plane_edge);
     const glm::vec3 eye(v.camera.eye);
     out.bold.point(eye, palette::eye);
-    labels.push_back({eye, "eye", palette::eye});
+    labels.push_back({eye, tr("view.eye"), palette::eye});
     // the narrowed frusta (exact or bounding box): rays from the eye through the corners of each one's cross-section,
     // as far as the opening it was narrowed to and a little beyond
     for (const auto& n : v.passed) {

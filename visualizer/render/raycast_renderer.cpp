@@ -10,6 +10,7 @@
 #include "render/frustum.h"
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -41,7 +42,7 @@ void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& 
     }
     draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
-    labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
+    labels.push_back({glm::vec3(scene.camera.eye), tr("view.eye"), palette::eye});
     // The grid and the cells the ray has walked
     if (v.grid) {
         box(out.faint, v.grid->box.lo, v.grid->box.hi, glm::vec4(0.6f, 0.6f, 0.65f, 0.4f));

@@ -9,6 +9,7 @@
 #include "render/frustum.h"
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -25,7 +26,7 @@ void draw_zbuffer_3d(const ZView& v, const algo::Scene& scene, LineBatches& out,
     }
     draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
-    labels.push_back({glm::vec3(scene.camera.eye), "eye", palette::eye});
+    labels.push_back({glm::vec3(scene.camera.eye), tr("view.eye"), palette::eye});
     // The image stands at a depth just behind the farthest vertex (within the view volume)
     const Vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
     double depth = scene.camera.near;

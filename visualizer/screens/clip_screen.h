@@ -6,6 +6,7 @@
 #include "render/clip_renderer.h"
 #include "screens/screen.h"
 #include "state/clip_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -21,8 +22,7 @@ public:
     }
     void draw_scene(const ClipSession& s, SceneFrame& f) const {
         draw_clip_view(s.view(), s.lesson().scene, f.batches, f.labels, {before_ ? &*before_ : nullptr, float(tween_)});
-        f.detail = s.space() == algo::ClipSpace::homogeneous ? "clip space −w ≤ x, y, z ≤ w and w ≥ ε = 1e-9"
-                                                             : "the canonical cube −1 ≤ x, y, z ≤ 1";
+        f.detail = tr(s.space() == algo::ClipSpace::homogeneous ? "clipping.detail_clip_space" : "clipping.detail_cube");
     }
     void draw_panels(const ClipSession& s, PanelFrame& f) const { clip_state_panel(s, f.layout); }
     void before_step(const ClipSession& s) { shown_ = s.view(); }  // cheap: the view's large parts are shared

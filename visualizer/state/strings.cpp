@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include "sayings.h"
 #include "state/lesson.h"
 
 namespace hsr::viz {
@@ -126,6 +127,14 @@ std::string_view Strings::pattern_of(const algo::Saying& s) const {
 }
 
 std::string Strings::say(const algo::Saying& term) const { return std::string(pattern_of(term)); }
+
+std::string Strings::word(std::string_view english) const {
+    if (language_ == "en") return std::string(english);
+    for (const auto family : algo::machine_sayings())
+        for (const algo::Saying& saying : family)
+            if (saying.english == english && saying.english.find('{') == std::string_view::npos) return say(saying);
+    return std::string(english);
+}
 
 std::string Strings::say(const algo::Phrase& phrase) const {
     if (!phrase.saying) return {};

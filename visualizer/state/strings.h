@@ -44,6 +44,9 @@ public:
     // language's catalogue, else the machine's own English; its terms (a test's name) likewise.
     std::string say(const algo::Phrase& phrase) const;
     std::string say(const algo::Saying& term) const;  // a word or name the machine uses, without values
+    // A machine's word given in English, as a lesson's choice gives it ("entering"): in the language used when a
+    // machine's term says it, else as given.
+    std::string word(std::string_view english) const;
     std::string english(std::string_view key) const;            // the English template as written ("" if none)
     std::vector<std::string> keys(const std::string& language) const;  // a catalogue's keys, sorted
     // Does the catalogue hold the key in English?
