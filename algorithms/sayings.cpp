@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "sayings.h"
 
+#include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
 #include "depth_sort/depth_sort_events.h"
 
 namespace hsr::algo {
 
-std::vector<std::span<const Saying>> machine_sayings() { return {clipping_sayings(), depth_sort_sayings()}; }
+std::vector<std::span<const Saying>> machine_sayings() { return {bsp_sayings(), clipping_sayings(), depth_sort_sayings()}; }
 
 }  // namespace hsr::algo

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/overloaded.h"
+#include "core/phrase.h"
 
 namespace hsr::algo {
 namespace {
@@ -25,77 +26,130 @@ std::optional<SplitterRule> parse_splitter_rule(std::string_view name) {
     return std::nullopt;
 }
 
-std::string_view to_string(SplitterRule r) {
+namespace {
+// What the BSP machines say, each template once (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying first{"bsp.first", "first polygon"};
+constexpr Saying balanced{"bsp.balanced", "most balanced"};
+constexpr Saying fewest_splits{"bsp.fewest_splits", "fewest splits"};
+constexpr Saying weighted{"bsp.weighted", "weighted"};
+constexpr Saying depth{"bsp.depth", "tree depth"};
+constexpr Saying polygons{"bsp.polygons", "polygons"};
+constexpr Saying classifications{"bsp.classifications", "classifications"};
+constexpr Saying front_first{"bsp.front_first", "front subtree first"};
+constexpr Saying back_first{"bsp.back_first", "back subtree first"};
+constexpr Saying build_started{"bsp.build_started",
+                               "build a BSP tree of {polygons} polygons, splitter rule: {rule}, ε = {tolerance} × the size of "
+                               "the polygons compared"};
+constexpr Saying candidate{"bsp.candidate",
+                           "node {node}: splitter {candidate} would leave {front} in front, {back} behind, split {spanning}: "
+                           "score {score}"};
+constexpr Saying chosen{"bsp.chosen", "node {node} (depth {depth}): {splitter} splits"};
+constexpr Saying chosen_best{"bsp.chosen_best",
+                             "node {node} (depth {depth}): {splitter} splits, the best of {candidates} candidates (score {score})"};
+constexpr Saying in_front{"bsp.in_front", "{polygon} is front of node {node}'s plane"};
+constexpr Saying behind{"bsp.behind", "{polygon} is back of node {node}'s plane"};
+constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar of node {node}'s plane"};
+constexpr Saying spanning{"bsp.spanning", "{polygon} is spanning of node {node}'s plane"};
+constexpr Saying split{"bsp.split",
+                       "{polygon} spans the plane: split into {front_part} (front, {front} {front?vertex|vertices}) and "
+                       "{back_part} (back, {back} {back?vertex|vertices})"};
+constexpr Saying node_finished{"bsp.node_finished",
+                               "node {node} keeps {coplanar} {coplanar?polygon|polygons}; {front} go to the front subtree, {back} to the back"};
+constexpr Saying built{"bsp.built",
+                       "built: {nodes} nodes, depth {depth}, {polygons} polygons in its nodes after {splits} splits"};
+constexpr Saying eye_front{"bsp.eye_front", "the eye is front of node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying eye_back{"bsp.eye_back", "the eye is back of node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying eye_on{"bsp.eye_on", "the eye is on node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying drawn{"bsp.drawn", "draw {polygon} (number {order})"};
+constexpr Saying traversal_finished{"bsp.traversal_finished", "{drawn} polygons drawn"};
+constexpr Saying bound_reached{"bsp.bound_reached", "stopped: the bound of {limit} {bound} was reached; what is left stays at this node"};
+constexpr Saying all[] = {first, balanced, fewest_splits, weighted, depth, polygons, classifications, front_first, back_first,
+                          build_started, candidate, chosen, chosen_best, in_front, behind, coplanar, spanning, split,
+                          node_finished, built, eye_front, eye_back, eye_on, drawn, traversal_finished, bound_reached};
+}  // namespace say
+
+using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
+
+}  // namespace
+
+const Saying& term(SplitterRule r) {
     switch (r) {
-        case SplitterRule::first: return "first polygon";
-        case SplitterRule::balanced: return "most balanced";
-        case SplitterRule::fewest_splits: return "fewest splits";
-        case SplitterRule::weighted: return "weighted";
+        case SplitterRule::first: return say::first;
+        case SplitterRule::balanced: return say::balanced;
+        case SplitterRule::fewest_splits: return say::fewest_splits;
+        case SplitterRule::weighted: return say::weighted;
     }
-    return "?";
+    return say::first;
 }
 
-std::string_view to_string(BspBound b) {
+const Saying& term(BspBound b) {
     switch (b) {
-        case BspBound::depth: return "tree depth";
-        case BspBound::polygons: return "polygons";
-        case BspBound::classifications: return "classifications";
+        case BspBound::depth: return say::depth;
+        case BspBound::polygons: return say::polygons;
+        case BspBound::classifications: return say::classifications;
     }
-    return "?";
+    return say::depth;
 }
 
-std::string describe(const BspEvent& event, const PolygonNamer& name) {
-    const auto node = [](BspNodeId n) { return "node " + std::to_string(n); };
+std::string_view to_string(SplitterRule r) { return term(r).english; }
+std::string_view to_string(BspBound b) { return term(b).english; }
+
+std::span<const Saying> bsp_sayings() { return say::all; }
+
+Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
+    const auto n = [](auto v) { return std::to_string(v); };
     return std::visit(
         overloaded{
             [&](const BuildStarted& e) {
-                return "build a BSP tree of " + std::to_string(e.polygons) + " polygons, splitter rule: " +
-                       std::string(to_string(e.rule)) + ", ε = " + num(e.tolerance) + " × the size of the polygons compared";
+                return Phrase(say::build_started, {{"polygons", n(e.polygons)}, {"tolerance", num(e.tolerance)}}, Terms{{"rule", &term(e.rule)}});
             },
             [&](const CandidateScored& e) {
-                return node(e.node) + ": splitter " + name(e.candidate) + " would leave " + std::to_string(e.front) +
-                       " in front, " + std::to_string(e.back) + " behind, split " + std::to_string(e.spanning) +
-                       ": score " + num(e.score);
+                return Phrase(say::candidate, {{"node", n(e.node)},
+                                               {"candidate", name(e.candidate)},
+                                               {"front", n(e.front)},
+                                               {"back", n(e.back)},
+                                               {"spanning", n(e.spanning)},
+                                               {"score", num(e.score)}});
             },
             [&](const SplitterChosen& e) {
-                std::string out = node(e.node) + " (depth " + std::to_string(e.depth) + "): " + name(e.splitter) +
-                                  " splits";
-                if (e.candidates > 1)
-                    out += ", the best of " + std::to_string(e.candidates) + " candidates (score " + num(e.score) + ")";
-                return out;
+                return Phrase(e.candidates > 1 ? say::chosen_best : say::chosen,
+                              {{"node", n(e.node)}, {"depth", n(e.depth)}, {"splitter", name(e.splitter)},
+                               {"candidates", n(e.candidates)}, {"score", num(e.score)}});
             },
             [&](const PolygonClassified& e) {
-                return name(e.polygon) + " is " + std::string(to_string(e.side)) + " of " + node(e.node) + "'s plane";
+                const Saying& saying = e.side == PolygonSide::front  ? say::in_front
+                                       : e.side == PolygonSide::back ? say::behind
+                                       : e.side == PolygonSide::coplanar ? say::coplanar
+                                                                         : say::spanning;
+                return Phrase(saying, {{"polygon", name(e.polygon)}, {"node", n(e.node)}});
             },
             [&](const PolygonSplit& e) {
-                return name(e.polygon) + " spans the plane: split into " + name(e.front_part) + " (front, " +
-                       std::to_string(e.front ? e.front->size() : 0) + " vertices) and " + name(e.back_part) +
-                       " (back, " + std::to_string(e.back ? e.back->size() : 0) + " vertices)";
+                return Phrase(say::split, {{"polygon", name(e.polygon)},
+                                           {"front_part", name(e.front_part)},
+                                           {"front", n(e.front ? e.front->size() : 0)},
+                                           {"back_part", name(e.back_part)},
+                                           {"back", n(e.back ? e.back->size() : 0)}});
             },
             [&](const NodeFinished& e) {
-                return node(e.node) + " keeps " + std::to_string(e.coplanar) + " polygon(s); " +
-                       std::to_string(e.front) + " go to the front subtree, " + std::to_string(e.back) + " to the back";
+                return Phrase(say::node_finished, {{"node", n(e.node)}, {"coplanar", n(e.coplanar)}, {"front", n(e.front)}, {"back", n(e.back)}});
             },
             [&](const BuildFinished& e) {
-                return "built: " + std::to_string(e.nodes) + " nodes, depth " + std::to_string(e.depth) + ", " +
-                       std::to_string(e.polygons) + " polygons in its nodes after " + std::to_string(e.splits) + " splits";
+                return Phrase(say::built, {{"nodes", n(e.nodes)}, {"depth", n(e.depth)}, {"polygons", n(e.polygons)}, {"splits", n(e.splits)}});
             },
             [&](const EyeClassified& e) {
-                return "the eye is " + std::string(to_string(e.side)) + " of " + node(e.node) + "'s plane (distance " +
-                       num(e.distance) + "): " +
-                       ((e.side == Side::back) == (e.order == Order::back_to_front) ? "front subtree first"
-                                                                                     : "back subtree first");
+                const bool front_first = (e.side == Side::back) == (e.order == Order::back_to_front);
+                return Phrase(e.side == Side::front ? say::eye_front : e.side == Side::back ? say::eye_back : say::eye_on,
+                              {{"node", n(e.node)}, {"distance", num(e.distance)}},
+                              Terms{{"first", front_first ? &say::front_first : &say::back_first}});
             },
-            [&](const PolygonDrawn& e) {
-                return "draw " + name(e.polygon) + " (number " + std::to_string(e.order) + ")";
-            },
-            [&](const TraversalFinished& e) { return std::to_string(e.drawn) + " polygons drawn"; },
-            [&](const BspBoundReached& e) {
-                return "stopped: the bound of " + std::to_string(e.limit) + " " + std::string(to_string(e.bound)) +
-                       " was reached; what is left stays at this node";
-            },
+            [&](const PolygonDrawn& e) { return Phrase(say::drawn, {{"polygon", name(e.polygon)}, {"order", n(e.order)}}); },
+            [&](const TraversalFinished& e) { return Phrase(say::traversal_finished, {{"drawn", n(e.drawn)}}); },
+            [&](const BspBoundReached& e) { return Phrase(say::bound_reached, {{"limit", n(e.limit)}}, Terms{{"bound", &term(e.bound)}}); },
         },
         event);
 }
+
+std::string describe(const BspEvent& event, const PolygonNamer& name) { return phrase(event, name).english(); }
 
 }  // namespace hsr::algo

@@ -10,10 +10,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include "core/events.h"
+#include "core/phrase.h"
 #include "core/plane.h"
 
 namespace hsr::algo {
@@ -124,7 +126,12 @@ using BspEvent = std::variant<BuildStarted, CandidateScored, SplitterChosen, Pol
 
 // Names a polygon as the view does ("3", "3f", "3fb"); describe uses it for every polygon it mentions.
 using PolygonNamer = std::function<std::string(BspPolygonId)>;
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const BspEvent& e, const PolygonNamer& name);
 std::string describe(const BspEvent& e, const PolygonNamer& name);
+const Saying& term(SplitterRule r);  // words to translate
+const Saying& term(BspBound b);
+std::span<const Saying> bsp_sayings();  // every template the BSP machines say
 std::string_view to_string(SplitterRule r);  // as sentences name it: "most balanced"
 // As files and the command line name a rule: "first", "balanced", "fewest-splits", "weighted"; nullopt otherwise.
 std::optional<SplitterRule> parse_splitter_rule(std::string_view name);

@@ -10,6 +10,7 @@
 
 #include "state/bsp_painting.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -192,6 +193,7 @@ algo::Scene BspSession::scene_of_job() const {
 
 std::string BspSession::sentence_of(const BspEvent& e, const BspView& view) { return describe(e, namer(view)); }
 std::string BspSession::describe_event(const BspEvent& e) const { return sentence_of(e, view()); }
+std::string BspSession::speak_event(const BspEvent& e) const { return window_strings().say(phrase(e, namer(view()))); }
 
 // BuildBSP while the tree is being built (up to its last event), DisplayBSP from the traversal's first event.
 const Pseudocode<BspEvent>& BspSession::table() const {

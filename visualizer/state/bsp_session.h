@@ -50,6 +50,7 @@ public:
 
 private:
     std::string describe_event(const algo::BspEvent& e) const override;
+    std::string speak_event(const algo::BspEvent& e) const override;
     const Pseudocode<algo::BspEvent>& table() const override;
     bool is_major(const algo::BspEvent& e) const override;
     algo::BspMachine kind_;
