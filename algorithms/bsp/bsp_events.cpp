@@ -36,6 +36,11 @@ constexpr Saying weighted{"bsp.weighted", "weighted"};
 constexpr Saying depth{"bsp.depth", "tree depth"};
 constexpr Saying polygons{"bsp.polygons", "polygons"};
 constexpr Saying classifications{"bsp.classifications", "classifications"};
+// the sides' names, as a lesson's question offers them for a choice
+constexpr Saying side_front{"bsp.side_front", "front"};
+constexpr Saying side_back{"bsp.side_back", "back"};
+constexpr Saying side_coplanar{"bsp.side_coplanar", "coplanar"};
+constexpr Saying side_spanning{"bsp.side_spanning", "spanning"};
 constexpr Saying front_first{"bsp.front_first", "front subtree first"};
 constexpr Saying back_first{"bsp.back_first", "back subtree first"};
 constexpr Saying build_started{"bsp.build_started",
@@ -64,7 +69,8 @@ constexpr Saying eye_on{"bsp.eye_on", "the eye is on node {node}'s plane (distan
 constexpr Saying drawn{"bsp.drawn", "draw {polygon} (number {order})"};
 constexpr Saying traversal_finished{"bsp.traversal_finished", "{drawn} polygons drawn"};
 constexpr Saying bound_reached{"bsp.bound_reached", "stopped: the bound of {limit} {bound} was reached; what is left stays at this node"};
-constexpr Saying all[] = {first, balanced, fewest_splits, weighted, depth, polygons, classifications, front_first, back_first,
+constexpr Saying all[] = {first, balanced, fewest_splits, weighted, depth, polygons, classifications, side_front, side_back,
+                          side_coplanar, side_spanning, front_first, back_first,
                           build_started, candidate, chosen, chosen_best, in_front, behind, coplanar, spanning, split,
                           node_finished, built, eye_front, eye_back, eye_on, drawn, traversal_finished, bound_reached};
 }  // namespace say

@@ -12,6 +12,7 @@
 #include "panels/panel_style.h"
 #include "state/bsp_painting.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -19,17 +20,22 @@ const ImVec4 front_branch(0.35f, 0.75f, 0.55f, 1), back_branch(0.85f, 0.5f, 0.3f
 }  // namespace
 
 void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "BSP tree");
+    begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
     const BspSession::Stats& st = s.stats();
-    char stats[200];
-    std::snprintf(stats, sizeof stats, "%zu polygons in · %zu in the tree after %u splits · %zu nodes · depth %u · built in %.3f ms",
-                  st.polygons_in, st.polygons_after, st.splits, st.nodes, st.depth, st.build_ms);
-    wrapped_text(stats, dim_text);
-    ImGui::TextColored(front_branch, "Left: front");
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.3f", st.build_ms);
+    wrapped_text(tr("bsp.stats", {{"in", std::to_string(st.polygons_in)},
+                                  {"after", std::to_string(st.polygons_after)},
+                                  {"splits", std::to_string(st.splits)},
+                                  {"nodes", std::to_string(st.nodes)},
+                                  {"depth", std::to_string(st.depth)},
+                                  {"ms", ms}}),
+                 dim_text);
+    ImGui::TextColored(front_branch, "%s", tr("bsp.left").c_str());
     ImGui::SameLine();
-    ImGui::TextColored(dim_text, "(the normal's side) ·");
+    ImGui::TextColored(dim_text, "%s", tr("bsp.normal_side").c_str());
     ImGui::SameLine();
-    ImGui::TextColored(back_branch, "Right: back");
+    ImGui::TextColored(back_branch, "%s", tr("bsp.right").c_str());
 
     // Layout: x by in-order position, y by depth.
     const BspView& v = s.view();
@@ -78,7 +84,8 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
         d->AddText(ImVec2(c.x - name_size.x / 2, c.y - name_size.y / 2), IM_COL32_WHITE, name.c_str());
         if (node.eye_side) {  // which side of this node's plane the eye is on, under the node
             const bool front = *node.eye_side == algo::Side::front, back = *node.eye_side == algo::Side::back;
-            const char* side = short_sides ? (front ? "F" : back ? "B" : "on") : (front ? "eye F" : back ? "eye B" : "eye on");
+            const std::string side_text = tr(short_sides ? (front ? "bsp.f" : back ? "bsp.b" : "bsp.on") : (front ? "bsp.eye_f" : back ? "bsp.eye_b" : "bsp.eye_on"));
+            const char* side = side_text.c_str();
             const float w = ImGui::CalcTextSize(side).x;
             const ImVec2 where = sides_below ? ImVec2(c.x - w / 2, c.y + r + 1) : ImVec2(c.x + r + 2, c.y - f / 2);
             d->AddText(where, ImGui::GetColorU32(ImVec4(0.94f, 0.89f, 0.26f, 1)), side);
@@ -107,8 +114,8 @@ void bsp_painted_canvas(const BspSession& s, float view_w, float view_h, bool dr
     ImDrawList* d = begin_canvas("##bsp painted", 0, 0, view_w, view_h);
     int total = 0;
     for (const auto& p : v.polygons) total += !p.replaced;
-    std::string caption = "seen from the eye: painted so far, far to near · " + std::to_string(v.drawn) + " of " + std::to_string(total);
-    if (v.two_d) caption += driving ? " · drive: ↑ ↓ walk, ← → turn · V: step again" : " · V: drive the eye";
+    const StringValues counts = {{"drawn", std::to_string(v.drawn)}, {"total", std::to_string(total)}};
+    const std::string caption = tr(!v.two_d ? "bsp.painted" : driving ? "bsp.painted_driving" : "bsp.painted_drive", counts);
     const ImVec2 text(at.x, at.y - line - 2), extent = ImGui::CalcTextSize(caption.c_str());
     d->AddRectFilled(ImVec2(text.x - 4, text.y - 2), ImVec2(text.x + extent.x + 4, text.y + extent.y + 2), IM_COL32(20, 21, 25, 220));
     d->AddText(text, driving ? IM_COL32(240, 227, 66, 255) : IM_COL32(220, 220, 220, 255), caption.c_str());

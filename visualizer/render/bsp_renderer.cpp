@@ -96,7 +96,7 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
         for (int i = 0; i < 4; ++i) out.faint.line(glm::vec3(q[std::size_t(i)]), glm::vec3(q[std::size_t((i + 1) % 4)]), palette::plane_edge);
         const Vec3 c = (q[0] + q[2]) * 0.5, n = v.nodes[std::size_t(v.current_node)].plane.n;  // its front side
         out.bold.line(glm::vec3(c), glm::vec3(c + n * (3 * tick)), palette::plane_edge);
-        labels.push_back({glm::vec3(c + n * (3 * tick)), "front", palette::plane_edge});
+        labels.push_back({glm::vec3(c + n * (3 * tick)), tr("bsp.front_label"), palette::plane_edge});
     }
 
     for (std::size_t i = 0; i < v.polygons.size(); ++i) {

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/bsp_renderer.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -62,7 +63,8 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
 
 void Screen<BspSession>::draw_scene(const BspSession& s, SceneFrame& f) const {
     draw_bsp_view(s.view(), s.edited_scene(), f.batches, f.labels);  // edits add segments: their colours
-    f.detail = std::string(f.second_view && s.view().two_d ? "drive mode · " : "") + "splitter: " + std::string(algo::to_string(s.stats().rule)) + " · ε = 1e-9 × the polygons' size" + (s.view().two_d ? " · 2D" : "");
+    const std::string rule = window_strings().say(algo::term(s.stats().rule));
+    f.detail = tr(f.second_view && s.view().two_d ? "bsp.detail_driving" : s.view().two_d ? "bsp.detail_2d" : "bsp.detail", {{"rule", rule}});
 }
 
 bool Screen<BspSession>::pointer(const BspSession& s, const Pointer& p, const ViewGeometry& g, UiActions& out) {
