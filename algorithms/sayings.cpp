@@ -4,9 +4,12 @@
 #include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
 #include "depth_sort/depth_sort_events.h"
+#include "zbuffer/scanline_events.h"
+#include "zbuffer/z_merge.h"
+#include "zbuffer/zbuffer_events.h"
 
 namespace hsr::algo {
 
-std::vector<std::span<const Saying>> machine_sayings() { return {bsp_sayings(), clipping_sayings(), depth_sort_sayings()}; }
+std::vector<std::span<const Saying>> machine_sayings() { return {bsp_sayings(), clipping_sayings(), depth_sort_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
 
 }  // namespace hsr::algo

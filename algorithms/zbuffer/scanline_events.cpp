@@ -3,39 +3,53 @@
 
 #include "core/events.h"
 #include "core/overloaded.h"
+#include "core/phrase.h"
 
 namespace hsr::algo {
 
-std::string describe(const ScanLineEvent& event) {
+namespace {
+// What the scan-line machine says, each template once (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying table{"scanline.table",
+                       "Edge table: {edges} non-horizontal edges of {polygons} polygons, bucketed by the first scan line they cross."};
+constexpr Saying line{"scanline.line", "Scan line {y}."};
+constexpr Saying entered{"scanline.entered", "Edge {edge} of polygon #{polygon} enters the active edge table at x = {x}."};
+constexpr Saying left{"scanline.left", "Edge {edge} of polygon #{polygon} has ended: it leaves the active edge table."};
+constexpr Saying in{"scanline.in", "At x = {x} edge {edge}: polygon #{polygon} is now in."};
+constexpr Saying out{"scanline.out", "At x = {x} edge {edge}: polygon #{polygon} is now out; its span goes through the line's z-buffer."};
+constexpr Saying background{"scanline.background", "Line {y}, pixels {first} to {last}: background."};
+constexpr Saying coloured{"scanline.coloured", "Line {y}, pixels {first} to {last}: polygon {id}."};
+constexpr Saying done{"scanline.done", "Done: {lines} scan lines, {spans} spans."};
+constexpr Saying bound{"scanline.bound", "Stopped: the step bound of {limit} edge crossings was reached."};
+constexpr Saying all[] = {table, line, entered, left, in, out, background, coloured, done, bound};
+}  // namespace say
+}  // namespace
+
+std::span<const Saying> scanline_sayings() { return say::all; }
+
+Phrase phrase(const ScanLineEvent& event) {
     const auto n = [](auto v) { return std::to_string(v); };
     return std::visit(
         overloaded{
-            [&](const EdgeTableBuilt& e) {
-                return "Edge table: " + n(e.edges) + " non-horizontal edges of " + n(e.polygons) +
-                       " polygons, bucketed by the first scan line they cross.";
-            },
-            [&](const ScanLineStarted& e) { return "Scan line " + n(e.y) + "."; },
+            [&](const EdgeTableBuilt& e) { return Phrase(say::table, {{"edges", n(e.edges)}, {"polygons", n(e.polygons)}}); },
+            [&](const ScanLineStarted& e) { return Phrase(say::line, {{"y", n(e.y)}}); },
             [&](const EdgeEntered& e) {
-                return "Edge " + n(e.edge) + " of polygon #" + n(e.polygon) + " enters the active edge table at x = " +
-                       format_number(e.x) + ".";
+                return Phrase(say::entered, {{"edge", n(e.edge)}, {"polygon", n(e.polygon)}, {"x", format_number(e.x)}});
             },
-            [&](const EdgeLeft& e) {
-                return "Edge " + n(e.edge) + " of polygon #" + n(e.polygon) + " has ended: it leaves the active edge table.";
-            },
+            [&](const EdgeLeft& e) { return Phrase(say::left, {{"edge", n(e.edge)}, {"polygon", n(e.polygon)}}); },
             [&](const EdgeCrossed& e) {
-                return "At x = " + format_number(e.x) + " edge " + n(e.edge) + ": polygon #" + n(e.polygon) +
-                       (e.entering ? " is now in." : " is now out; its span goes through the line's z-buffer.");
+                return Phrase(e.entering ? say::in : say::out, {{"x", format_number(e.x)}, {"edge", n(e.edge)}, {"polygon", n(e.polygon)}});
             },
             [&](const SpanColored& e) {
-                return "Line " + n(e.y) + ", pixels " + n(e.x_begin) + " to " + n(e.x_end - 1) + ": " +
-                       (e.polygon < 0 ? std::string("background") : "polygon " + n(e.id)) + ".";
+                return Phrase(e.polygon < 0 ? say::background : say::coloured,
+                              {{"y", n(e.y)}, {"first", n(e.x_begin)}, {"last", n(e.x_end - 1)}, {"id", n(e.id)}});
             },
-            [&](const ScanFinished& e) { return "Done: " + n(e.lines) + " scan lines, " + n(e.spans) + " spans."; },
-            [&](const ScanStepBoundReached& e) {
-                return "Stopped: the step bound of " + n(e.max_crossings) + " edge crossings was reached.";
-            },
+            [&](const ScanFinished& e) { return Phrase(say::done, {{"lines", n(e.lines)}, {"spans", n(e.spans)}}); },
+            [&](const ScanStepBoundReached& e) { return Phrase(say::bound, {{"limit", n(e.max_crossings)}}); },
         },
         event);
 }
+
+std::string describe(const ScanLineEvent& event) { return phrase(event).english(); }
 
 }  // namespace hsr::algo

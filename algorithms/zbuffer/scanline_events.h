@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 
+#include "core/phrase.h"
 #include "scene/scene.h"
 
 namespace hsr::algo {
@@ -65,6 +67,9 @@ struct ScanStepBoundReached {
 using ScanLineEvent = std::variant<EdgeTableBuilt, ScanLineStarted, EdgeEntered, EdgeLeft, EdgeCrossed, SpanColored,
                                    ScanFinished, ScanStepBoundReached>;
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const ScanLineEvent& e);
 std::string describe(const ScanLineEvent& e);
+std::span<const Saying> scanline_sayings();  // every template the scan-line machine says
 
 }  // namespace hsr::algo

@@ -3,6 +3,7 @@
 
 #include "core/numeric.h"
 #include "core/overloaded.h"
+#include "core/phrase.h"
 
 namespace hsr::algo {
 
@@ -30,20 +31,30 @@ Steps<ZMergeEvent, FrameDepth> z_merge_steps(FrameDepth a, FrameDepth b) {
     co_return c;
 }
 
-std::string describe(const ZMergeEvent& event) {
+namespace {
+// What the z-merge says (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying from_a{"zmerge.from_a", "Pixel ({x}, {y}): {a} < {b}, so part A is nearer and gives colour and depth."};
+constexpr Saying from_b{"zmerge.from_b", "Pixel ({x}, {y}): {a} ≥ {b}, so part B's colour and depth stay."};
+constexpr Saying merged{"zmerge.merged", "Merged: {from_a} pixels from part A, {from_b} from part B."};
+constexpr Saying all[] = {from_a, from_b, merged};
+}  // namespace say
+}  // namespace
+
+std::span<const Saying> zmerge_sayings() { return say::all; }
+
+Phrase phrase(const ZMergeEvent& event) {
+    const auto n = [](auto v) { return std::to_string(v); };
     return std::visit(overloaded{
-                          [](const PixelMerged& e) {
-                              return "Pixel (" + std::to_string(e.x) + ", " + std::to_string(e.y) + "): " +
-                                     std::to_string(e.depth_a) + (e.from_a ? " < " : " ≥ ") + std::to_string(e.depth_b) +
-                                     (e.from_a ? ", so part A is nearer and gives colour and depth."
-                                               : ", so part B's colour and depth stay.");
+                          [&](const PixelMerged& e) {
+                              return Phrase(e.from_a ? say::from_a : say::from_b,
+                                            {{"x", n(e.x)}, {"y", n(e.y)}, {"a", n(e.depth_a)}, {"b", n(e.depth_b)}});
                           },
-                          [](const MergeFinished& e) {
-                              return "Merged: " + std::to_string(e.from_a) + " pixels from part A, " +
-                                     std::to_string(e.from_b) + " from part B.";
-                          },
+                          [&](const MergeFinished& e) { return Phrase(say::merged, {{"from_a", n(e.from_a)}, {"from_b", n(e.from_b)}}); },
                       },
                       event);
 }
+
+std::string describe(const ZMergeEvent& event) { return phrase(event).english(); }
 
 }  // namespace hsr::algo

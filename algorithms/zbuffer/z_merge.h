@@ -14,8 +14,10 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 
+#include "core/phrase.h"
 #include "core/steps.h"
 #include "zbuffer/zbuffer_fill.h"
 
@@ -38,6 +40,9 @@ using ZMergeEvent = std::variant<PixelMerged, MergeFinished>;
 // The buffers must have the same size (InvalidInput otherwise). The result's polygon indices are a's or b's own.
 Steps<ZMergeEvent, FrameDepth> z_merge_steps(FrameDepth a, FrameDepth b);
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const ZMergeEvent& e);
 std::string describe(const ZMergeEvent& e);
+std::span<const Saying> zmerge_sayings();  // every template the z-merge says
 
 }  // namespace hsr::algo

@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 
+#include "core/phrase.h"
 #include "scene/scene.h"
 #include "zbuffer/depth_format.h"
 #include "raster/screen_polygon.h"
@@ -88,6 +90,9 @@ using ZBufferEvent = std::variant<BufferCleared, PolygonFillStarted, PolygonSkip
                                   DepthWritten, DepthTestFailed, PolygonFillFinished, FillFinished, FillStepBoundReached>;
 
 // One sentence with the live numbers; `format` says how to read the codes.
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const ZBufferEvent& e, DepthFormat format);
 std::string describe(const ZBufferEvent& e, DepthFormat format);
+std::span<const Saying> zbuffer_sayings();  // every template the z-buffer says
 
 }  // namespace hsr::algo

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "state/scanline_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -34,6 +35,7 @@ ScanLineSession::ScanLineSession(Lesson lesson, PlayerOptions options) : PlayerS
 
 std::string ScanLineSession::sentence_of(const ScanLineEvent& e, const ScanView&) { return describe(e); }
 std::string ScanLineSession::describe_event(const ScanLineEvent& e) const { return sentence_of(e, view()); }
+std::string ScanLineSession::speak_event(const ScanLineEvent& e) const { return window_strings().say(phrase(e)); }
 
 const Pseudocode<ScanLineEvent>& ScanLineSession::table() const { return scan_lines; }
 

@@ -18,6 +18,7 @@ public:
 
 private:
     std::string describe_event(const algo::ScanLineEvent& e) const override;
+    std::string speak_event(const algo::ScanLineEvent& e) const override;
     const Pseudocode<algo::ScanLineEvent>& table() const override;
 };
 

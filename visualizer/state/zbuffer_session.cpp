@@ -10,6 +10,7 @@
 #include "core/numeric.h"
 #include "scene/load_scene.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -157,6 +158,7 @@ void ZBufferSession::set_range(DepthRange r) {
 
 std::string ZBufferSession::sentence_of(const ZBufferEvent& e, const ZView& view) { return describe(e, view.format); }
 std::string ZBufferSession::describe_event(const ZBufferEvent& e) const { return sentence_of(e, view()); }
+std::string ZBufferSession::speak_event(const ZBufferEvent& e) const { return window_strings().say(phrase(e, view().format)); }
 
 const Pseudocode<ZBufferEvent>& ZBufferSession::table() const { return fill_lines; }
 

@@ -46,6 +46,7 @@ public:
 
 private:
     std::string describe_event(const algo::ZBufferEvent& e) const override;
+    std::string speak_event(const algo::ZBufferEvent& e) const override;
     const Pseudocode<algo::ZBufferEvent>& table() const override;
     void rerun();
     bool edit(algo::Scene edited, std::optional<std::pair<std::size_t, std::size_t>> moved = std::nullopt);

@@ -3,6 +3,7 @@
 
 #include "core/overloaded.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -65,6 +66,7 @@ ZMergeSession::ZMergeSession(Lesson lesson, PlayerOptions options) : PlayerSessi
 
 std::string ZMergeSession::sentence_of(const ZMergeEvent& e, const ZMergeView&) { return describe(e); }
 std::string ZMergeSession::describe_event(const ZMergeEvent& e) const { return sentence_of(e, view()); }
+std::string ZMergeSession::speak_event(const ZMergeEvent& e) const { return window_strings().say(phrase(e)); }
 
 const Pseudocode<ZMergeEvent>& ZMergeSession::table() const { return merge_lines; }
 

@@ -38,6 +38,7 @@ public:
 
 private:
     std::string describe_event(const algo::ZMergeEvent& e) const override;
+    std::string speak_event(const algo::ZMergeEvent& e) const override;
     const Pseudocode<algo::ZMergeEvent>& table() const override;
 };
 
