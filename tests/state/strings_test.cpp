@@ -135,6 +135,7 @@ TEST_CASE("the machines narrate in the language the window speaks; their traces 
     CHECK(strings.word("entering") == "eintretend");
     CHECK(strings.word("rejected") == "verworfen");
     CHECK(strings.word("0.5") == "0.5");
+    CHECK(strings.word("true") == "wahr");  // the catalogue's own [words]
     strings.use("en");
     CHECK(strings.word("entering") == "entering");
     strings.use("de");

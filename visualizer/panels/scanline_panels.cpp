@@ -8,6 +8,8 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -17,7 +19,7 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
     const float margin = 24;
     const float cell = std::max(2.0f, std::min((w - 2 * margin) / float(v.viewport.width), (h - 2 * margin - 24) / float(v.viewport.height)));
     const ImVec2 o(x + margin, y + margin + 20);
-    d->AddText(ImVec2(o.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "image, line by line (the active edges bold)");
+    d->AddText(ImVec2(o.x, y + margin - 2), IM_COL32(220, 220, 220, 255), tr("scanline.image").c_str());
     pixel_grid(d, o, cell, v.viewport, [&](int px, int py) {
         const std::int32_t k = v.owner[std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px)];
         return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50});
@@ -34,23 +36,27 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
             const float cx = o.x + float(c.x) * cell;
             const ImU32 colour = c.entering ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255);
             d->AddCircleFilled(ImVec2(cx, ly), 6, colour);
-            d->AddText(ImVec2(cx - 8, ly - 26), colour, c.entering ? "in" : "out");
+            d->AddText(ImVec2(cx - 8, ly - 26), colour, tr(c.entering ? "scanline.in" : "scanline.out").c_str());
         }
     }
     ImGui::End();
 }
 
 void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "Edge table");
+    begin_column_box(l, Box::state, (tr("scanline.edge_table") + "###edge table").c_str());
     const ScanView& v = s.view();
-    ImGui::TextColored(dim_text, "line %d · %zu active edges · %llu spans output", v.line, v.active.size(),
-                       (unsigned long long)v.spans);
+    wrapped_text(tr("scanline.summary", {{"line", std::to_string(v.line)}, {"active", std::to_string(v.active.size())},
+                                         {"spans", std::to_string(v.spans)}}),
+                 dim_text);
+    // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first)
+    const std::string headers[] = {tr("scanline.edge"), tr("scanline.polygon"), tr("scanline.lines"), tr("scanline.side"), tr("scanline.in_out")};
+    const std::string left = tr("scanline.left"), right = tr("scanline.right"), in = tr("scanline.in");
+    const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    const float widths[] = {std::max(width(headers[0]), width("000")), std::max(width(headers[1]), width("#000")),
+                            std::max(width(headers[2]), width("00–00")), std::max({width(headers[3]), width(left), width(right)})};
     if (ImGui::BeginTable("edges", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("edge", ImGuiTableColumnFlags_WidthFixed, 44);
-        ImGui::TableSetupColumn("polygon", ImGuiTableColumnFlags_WidthFixed, 64);
-        ImGui::TableSetupColumn("lines", ImGuiTableColumnFlags_WidthFixed, 70);
-        ImGui::TableSetupColumn("side", ImGuiTableColumnFlags_WidthFixed, 44);
-        ImGui::TableSetupColumn("in/out");
+        for (int c = 0; c < 4; ++c) ImGui::TableSetupColumn(headers[c].c_str(), ImGuiTableColumnFlags_WidthFixed, widths[c]);
+        ImGui::TableSetupColumn(headers[4].c_str());
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < v.edges->size(); ++i) {
             const algo::EdgeEntry& e = (*v.edges)[i];
@@ -60,13 +66,13 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l) {
             ImGui::TableNextColumn();
             ImGui::Text("%zu", i);
             ImGui::TableNextColumn();
-            ImGui::Text("%d", (*v.polygons)[e.polygon].id);
+            ImGui::Text("#%u", unsigned(e.polygon));
             ImGui::TableNextColumn();
             ImGui::Text("%d–%d", e.first_row, e.end_row - 1);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(e.left ? "left" : "right");
+            ImGui::TextUnformatted(e.left ? left.c_str() : right.c_str());
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(v.in[e.polygon] ? "in" : "");
+            ImGui::TextUnformatted(v.in[e.polygon] ? in.c_str() : "");
         }
         ImGui::EndTable();
     }

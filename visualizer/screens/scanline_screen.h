@@ -5,6 +5,7 @@
 #include "panels/scanline_panels.h"
 #include "screens/screen.h"
 #include "state/scanline_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -13,8 +14,9 @@ class Screen<ScanLineSession> : public ScreenDefaults {
 public:
     void frame(const ScanLineSession&, OrbitCamera&) const {}  // no 3D view: the canvas covers it
     void draw_scene(const ScanLineSession& s, SceneFrame& f) const {
-        f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) +
-                   " pixels · one-line z-buffer, " + std::string(algo::to_string(s.lesson().depth_format));
+        f.detail = tr("scanline.detail", {{"width", std::to_string(s.lesson().grid.width)},
+                                          {"height", std::to_string(s.lesson().grid.height)},
+                                          {"format", std::string(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
         scanline_canvas(s, 0, 0, f.view_w, f.view_h);

@@ -130,6 +130,9 @@ std::string Strings::say(const algo::Saying& term) const { return std::string(pa
 
 std::string Strings::word(std::string_view english) const {
     if (language_ == "en") return std::string(english);
+    // the catalogue's own [words] first (true, false), then the machines' terms
+    if (const auto c = catalogues_.find(language_); c != catalogues_.end())
+        if (const auto it = c->second.find("words." + std::string(english)); it != c->second.end()) return it->second;
     for (const auto family : algo::machine_sayings())
         for (const algo::Saying& saying : family)
             if (saying.english == english && saying.english.find('{') == std::string_view::npos) return say(saying);
