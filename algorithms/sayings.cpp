@@ -3,6 +3,8 @@
 
 #include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
+#include "culling/backface.h"
+#include "culling/culling_events.h"
 #include "depth_sort/depth_sort_events.h"
 #include "zbuffer/scanline_events.h"
 #include "zbuffer/z_merge.h"
@@ -10,6 +12,6 @@
 
 namespace hsr::algo {
 
-std::vector<std::span<const Saying>> machine_sayings() { return {bsp_sayings(), clipping_sayings(), depth_sort_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
+std::vector<std::span<const Saying>> machine_sayings() { return {backface_sayings(), bsp_sayings(), clipping_sayings(), culling_sayings(), depth_sort_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
 
 }  // namespace hsr::algo

@@ -10,6 +10,7 @@
 #include "clipping/sutherland_hodgman.h"
 #include "core/numeric.h"
 #include "core/overloaded.h"
+#include "core/phrase.h"
 
 namespace hsr::algo {
 namespace {
@@ -99,42 +100,69 @@ std::vector<Face> faces_of(const Scene& scene) {
     return faces;
 }
 
-std::string_view to_string(BackfaceTest t) {
+namespace {
+// What back-face culling says, each template once (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying view_vector{"backface.view_vector", "view vector"};
+constexpr Saying plane_equation{"backface.plane_equation", "plane equation"};
+constexpr Saying screen_winding{"backface.screen_winding", "screen winding"};
+constexpr Saying front{"backface.front", "front-facing: kept"};
+constexpr Saying back{"backface.back", "back-facing: culled"};
+constexpr Saying edge_on{"backface.edge_on", "edge-on: culled"};
+constexpr Saying outside_view{"backface.outside_view", "outside the view volume: culled"};
+constexpr Saying screen_area{"backface.screen_area", "screen area"};
+constexpr Saying tested{"backface.tested", "face {id}: {quantity} = {value}, {facing}"};
+constexpr Saying finished{"backface.finished", "{tested} faces tested, {culled} culled"};
+constexpr Saying all[] = {view_vector, plane_equation, screen_winding, front, back, edge_on, outside_view, screen_area, tested, finished};
+}  // namespace say
+
+using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
+
+}  // namespace
+
+const Saying& term(BackfaceTest t) {
     switch (t) {
-        case BackfaceTest::view_vector: return "view vector";
-        case BackfaceTest::plane_equation: return "plane equation";
-        case BackfaceTest::screen_winding: return "screen winding";
+        case BackfaceTest::view_vector: return say::view_vector;
+        case BackfaceTest::plane_equation: return say::plane_equation;
+        case BackfaceTest::screen_winding: return say::screen_winding;
     }
-    return "?";
+    return say::view_vector;
 }
 
-std::string_view to_string(Facing f) {
+const Saying& term(Facing f) {
     switch (f) {
-        case Facing::front: return "front-facing: kept";
-        case Facing::back: return "back-facing: culled";
-        case Facing::edge_on: return "edge-on: culled";
-        case Facing::outside_view: return "outside the view volume: culled";
+        case Facing::front: return say::front;
+        case Facing::back: return say::back;
+        case Facing::edge_on: return say::edge_on;
+        case Facing::outside_view: return say::outside_view;
     }
-    return "?";
+    return say::front;
 }
 
-std::string describe(const CullEvent& event) {
-    char buf[160];
+std::string_view to_string(BackfaceTest t) { return term(t).english; }
+std::string_view to_string(Facing f) { return term(f).english; }
+
+std::span<const Saying> backface_sayings() { return say::all; }
+
+Phrase phrase(const CullEvent& event) {
     return std::visit(overloaded{
-                          [&](const FaceTested& e) {
-                              const char* quantity = e.test == BackfaceTest::view_vector      ? "v·n"
-                                                     : e.test == BackfaceTest::plane_equation ? "N·eye + D"
-                                                                                               : "screen area";
-                              std::snprintf(buf, sizeof buf, "face %d: %s = %.6g, %s", e.id, quantity, e.value,
-                                            std::string(to_string(e.facing)).c_str());
-                              return std::string(buf);
+                          [](const FaceTested& e) {
+                              char value[32];
+                              std::snprintf(value, sizeof value, "%.6g", e.value);
+                              // the quantity tested: a formula, except the screen area, which is words
+                              Terms terms{{"facing", &term(e.facing)}};
+                              std::vector<NamedValue> values{{"id", std::to_string(e.id)}, {"value", value}};
+                              if (e.test == BackfaceTest::screen_winding) terms.emplace_back("quantity", &say::screen_area);
+                              else values.emplace_back("quantity", e.test == BackfaceTest::view_vector ? "v·n" : "N·eye + D");
+                              return Phrase(say::tested, std::move(values), std::move(terms));
                           },
-                          [&](const CullingFinished& e) {
-                              std::snprintf(buf, sizeof buf, "%u faces tested, %u culled", e.tested, e.culled);
-                              return std::string(buf);
+                          [](const CullingFinished& e) {
+                              return Phrase(say::finished, {{"tested", std::to_string(e.tested)}, {"culled", std::to_string(e.culled)}});
                           },
                       },
                       event);
 }
+
+std::string describe(const CullEvent& event) { return phrase(event).english(); }
 
 }  // namespace hsr::algo

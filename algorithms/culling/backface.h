@@ -12,10 +12,12 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include "core/events.h"
+#include "core/phrase.h"
 #include "core/plane.h"
 #include "core/steps.h"
 #include "scene/scene.h"
@@ -52,8 +54,13 @@ Steps<CullEvent, std::vector<std::int32_t>> cull_back_faces(std::vector<Face> fa
 // The scene's polygons as faces (its camera is the eye).
 std::vector<Face> faces_of(const Scene& scene);
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const CullEvent& e);
 std::string describe(const CullEvent& e);
 std::string_view to_string(BackfaceTest t);
 std::string_view to_string(Facing f);
+const Saying& term(BackfaceTest t);  // words to translate
+const Saying& term(Facing f);
+std::span<const Saying> backface_sayings();  // every template back-face culling says
 
 }  // namespace hsr::algo

@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 
+#include "core/phrase.h"
 #include "culling/bounding_volume.h"
 
 namespace hsr::algo {
@@ -55,9 +57,15 @@ struct HierarchyCullFinished {
 };
 using HierarchyCullEvent = std::variant<NodeCulled, HierarchyCullFinished>;
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const HierarchyEvent& e);
+Phrase phrase(const HierarchyCullEvent& e);
 std::string describe(const HierarchyEvent& e);
 std::string describe(const HierarchyCullEvent& e);
 std::string_view to_string(NodeOutcome o);
 std::string_view to_string(LeafReason r);
+const Saying& term(NodeOutcome o);  // words to translate
+const Saying& term(LeafReason r);
+std::span<const Saying> culling_sayings();  // every template the hierarchy's build and cull say
 
 }  // namespace hsr::algo

@@ -112,7 +112,8 @@ TEST_CASE("the machines narrate in the language the window speaks; their traces 
     for (const char* lesson : {"/lessons/13_depth_sort_cycle.toml", "/lessons/16_depth_sort_piercing.toml", "/lessons/28_depth_sort_front_to_back.toml",
                                "/lessons/01_cohen_sutherland.toml", "/lessons/02_liang_barsky.toml", "/lessons/03_sutherland_hodgman.toml",
                                "/lessons/04_bsp_build.toml", "/lessons/05_bsp_traversal.toml", "/lessons/07_zbuffer_fill.toml",
-                               "/lessons/08_depth_precision.toml", "/lessons/10_scan_line.toml", "/lessons/12_z_merge.toml"}) {
+                               "/lessons/08_depth_precision.toml", "/lessons/10_scan_line.toml", "/lessons/12_z_merge.toml",
+                               "/lessons/06_backface.toml", "/lessons/21_culling_bounds.toml", "/lessons/22_culling_frustum.toml"}) {
         auto session = make_session(load_lesson(std::string(HSR_SOURCE_DIR) + lesson));
         session->prefetch(prefetch_events);
         REQUIRE(session->complete());

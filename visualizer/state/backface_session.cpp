@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "state/backface_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -45,6 +46,7 @@ BackfaceSession::BackfaceSession(Lesson lesson, PlayerOptions options) : PlayerS
 
 std::string BackfaceSession::sentence_of(const CullEvent& e, const BackfaceView&) { return describe(e); }
 std::string BackfaceSession::describe_event(const CullEvent& e) const { return sentence_of(e, view()); }
+std::string BackfaceSession::speak_event(const CullEvent& e) const { return window_strings().say(phrase(e)); }
 
 // One event per polygon: every one a Step.
 const Pseudocode<CullEvent>& BackfaceSession::table() const {

@@ -17,6 +17,7 @@ public:
 
 private:
     std::string describe_event(const algo::CullEvent& e) const override;
+    std::string speak_event(const algo::CullEvent& e) const override;
     const Pseudocode<algo::CullEvent>& table() const override;
 };
 

@@ -10,6 +10,7 @@
 #include "culling/view_frustum.h"
 #include "scene/generated_scenes.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -271,6 +272,12 @@ std::string CullingSession<Event, Result>::sentence_of(const Event& e, const Cul
 template <class Event, class Result>
 std::string CullingSession<Event, Result>::describe_event(const Event& e) const {
     return describe(e);
+}
+template <class Event, class Result>
+std::string CullingSession<Event, Result>::speak_event(const Event& e) const {
+    // a machine that says its events as templates speaks the window's language; the others speak English
+    if constexpr (requires { phrase(e); }) return window_strings().say(phrase(e));
+    else return describe(e);
 }
 template <class Event, class Result>
 const FamilyFacts CullingSession<Event, Result>::facts = {

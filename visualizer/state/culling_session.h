@@ -77,6 +77,7 @@ public:
 
 private:
     std::string describe_event(const Event& e) const override;
+    std::string speak_event(const Event& e) const override;
     const Pseudocode<Event>& table() const override;
     algo::CullingMachine machine_;
 };
