@@ -6,12 +6,13 @@
 #include "culling/backface.h"
 #include "culling/culling_events.h"
 #include "depth_sort/depth_sort_events.h"
+#include "portals/portal_events.h"
 #include "zbuffer/scanline_events.h"
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_events.h"
 
 namespace hsr::algo {
 
-std::vector<std::span<const Saying>> machine_sayings() { return {backface_sayings(), bsp_sayings(), clipping_sayings(), culling_sayings(), depth_sort_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
+std::vector<std::span<const Saying>> machine_sayings() { return {backface_sayings(), bsp_sayings(), clipping_sayings(), culling_sayings(), depth_sort_sayings(), portal_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
 
 }  // namespace hsr::algo

@@ -7,11 +7,13 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "core/phrase.h"
 #include "core/plane.h"
 
 namespace hsr::algo {
@@ -117,8 +119,14 @@ using PortalEvent = std::variant<EyeLocated, PvsRowRead, CellVisited, PortalTest
 
 struct CellModel;
 // Sentences with the cells' names from the model.
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const PvsEvent& e, const CellModel& model);
+Phrase phrase(const PortalEvent& e, const CellModel& model);
 std::string describe(const PvsEvent& e, const CellModel& model);
 std::string describe(const PortalEvent& e, const CellModel& model);
+const Saying& term(PortalVerdict v);  // words to translate
+const Saying& term(CullReason r);
+std::span<const Saying> portal_sayings();  // every template the PVS and portal machines say
 std::string_view to_string(PortalVerdict v);
 std::string_view to_string(CullReason r);
 

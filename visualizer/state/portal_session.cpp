@@ -6,6 +6,7 @@
 #include "core/overloaded.h"
 #include "scene/random_scene.h"
 #include "state/long_work.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -87,6 +88,7 @@ PvsSession::PvsSession(Lesson lesson, PlayerOptions options) : PlayerSession(les
 
 std::string PvsSession::sentence_of(const PvsEvent& e, const PvsView& view) { return describe(e, view.world->model); }
 std::string PvsSession::describe_event(const PvsEvent& e) const { return sentence_of(e, view()); }
+std::string PvsSession::speak_event(const PvsEvent& e) const { return window_strings().say(phrase(e, view().world->model)); }
 
 // ── [SECTION] the runtime ───────────────────────────────────────────────────────────────────────────────────
 void reduce(PortalView& v, const PortalEvent& event) {
@@ -175,6 +177,7 @@ void PortalRenderSession::move_eye(Vec2 plan) {
 
 std::string PortalRenderSession::sentence_of(const PortalEvent& e, const PortalView& view) { return describe(e, view.world->model); }
 std::string PortalRenderSession::describe_event(const PortalEvent& e) const { return sentence_of(e, view()); }
+std::string PortalRenderSession::speak_event(const PortalEvent& e) const { return window_strings().say(phrase(e, view().world->model)); }
 
 const Pseudocode<PvsEvent>& PvsSession::table() const { return pvs_lines; }
 const Pseudocode<PortalEvent>& PortalRenderSession::table() const { return render_lines; }

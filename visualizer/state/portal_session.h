@@ -71,6 +71,7 @@ public:
 
 private:
     std::string describe_event(const algo::PvsEvent& e) const override;
+    std::string speak_event(const algo::PvsEvent& e) const override;
     const Pseudocode<algo::PvsEvent>& table() const override;
 };
 
@@ -86,6 +87,7 @@ public:
 
 private:
     std::string describe_event(const algo::PortalEvent& e) const override;
+    std::string speak_event(const algo::PortalEvent& e) const override;
     const Pseudocode<algo::PortalEvent>& table() const override;
     PlayerType make_player(const algo::Camera& camera) const;
     std::shared_ptr<const PortalWorld> world_;
