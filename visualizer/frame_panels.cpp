@@ -48,7 +48,7 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
                        UiActions& actions) {
     // the window's own words follow the student's choice (L) where a catalogue has it, even when the lesson's narration
     // does not
-    window_strings().use(lp.classroom.chosen_language().empty() ? lp.classroom.language() : lp.classroom.chosen_language());
+    window_strings().use(lp.classroom.window_language());
     if (!lp.session()) {
         error_panel(lp.error + (lp.path != lp.home ? "\n\nB: back to the lesson.  P: the other presets." : ""), lp.opening_stopped, layout,
                     actions);

@@ -56,7 +56,7 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
 
 std::string language_hint(const Classroom& room) {
     // the student's choice; when the lesson is not narrated in it, which language it is narrated in
-    const std::string& chosen = room.chosen_language().empty() ? room.language() : room.chosen_language();
+    const std::string& chosen = room.window_language();
     return chosen == room.language() ? chosen : tr("chapters.narrated_in", {{"chosen", chosen}, {"narration", room.language()}});
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -17,17 +18,16 @@ namespace hsr::viz {
 // scrolled so that the latest is in sight.
 namespace {
 
+std::string extent(double lo, double hi) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.2f,%.2f", lo, hi);
+    return buffer;
+}
+
 std::string numbers_of(const algo::TestTried& t) {
-    char buffer[96];
     switch (t.test) {
         case algo::OrderTest::x_extents:
-        case algo::OrderTest::y_extents:
-            std::snprintf(buffer, sizeof buffer, "%.2f,%.2f|%.2f,%.2f", t.a, t.b, t.c, t.d);
-            {
-                const std::string n = buffer;
-                const std::size_t bar = n.find('|');
-                return tr("depth_sort.extents", {{"r", n.substr(0, bar)}, {"q", n.substr(bar + 1)}});
-            }
+        case algo::OrderTest::y_extents: return tr("depth_sort.extents", {{"r", extent(t.a, t.b)}, {"q", extent(t.c, t.d)}});
         case algo::OrderTest::projections: return tr(t.a != 0 ? "depth_sort.overlap" : "depth_sort.separated");
         default: {
             const auto count = [](double x) { return std::to_string(static_cast<long long>(x)); };
@@ -59,11 +59,12 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
                                     algo::OrderTest::q_in_front_of_r, algo::OrderTest::projections,
                                     algo::OrderTest::q_behind_r, algo::OrderTest::r_in_front_of_q})
         names = std::max(names, width_of(window_strings().say(algo::term(t))));
-    for (const algo::TestTried& t : v.tests) numbers = std::max(numbers, width_of(numbers_of(t)));
+    std::vector<std::string> row_numbers;
+    for (const algo::TestTried& t : v.tests) row_numbers.push_back(numbers_of(t)), numbers = std::max(numbers, width_of(row_numbers.back()));
     // the numbers beside the verdict where the row's fit, else under the test's name; only two columns when even the
     // shortest numbers do not fit beside the names
     float shortest = numbers;
-    for (const algo::TestTried& t : v.tests) shortest = std::min(shortest, width_of(numbers_of(t)));
+    for (const std::string& n : row_numbers) shortest = std::min(shortest, width_of(n));
     const float pad = 3 * 2 * 4 + 2 * ImGui::GetStyle().ItemSpacing.x;
     const float room = ImGui::GetContentRegionAvail().x - names - verdict - pad;
     const bool three = shortest <= room;
@@ -71,8 +72,9 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
         ImGui::TableSetupColumn("test", ImGuiTableColumnFlags_WidthFixed, names);
         ImGui::TableSetupColumn("verdict", ImGuiTableColumnFlags_WidthFixed, verdict);
         if (three) ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch);
-        for (const algo::TestTried& t : v.tests) {
-            const std::string n = numbers_of(t);
+        for (std::size_t k = 0; k < v.tests.size(); ++k) {
+            const algo::TestTried& t = v.tests[k];
+            const std::string& n = row_numbers[k];
             const bool beside = three && width_of(n) <= room;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();

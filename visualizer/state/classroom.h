@@ -43,6 +43,8 @@ public:
     void next_language(const std::vector<std::string>& chrome = {});
     void choose_language(const std::string& language);  // the choice remembered from the last run
     const std::string& chosen_language() const { return chosen_; }
+    // What the window's own words speak: the student's choice, else (none made yet) the narration's language.
+    const std::string& window_language() const { return chosen_.empty() ? language_ : chosen_; }
     // Another lesson (or exercise): nothing of this one stays but the student's choice of language.
     void restart() {
         std::string chosen = std::move(chosen_);
