@@ -5,14 +5,20 @@
 #include "clipping/clip_events.h"
 #include "culling/backface.h"
 #include "culling/culling_events.h"
+#include "culling/hiz.h"
+#include "culling/occluders.h"
 #include "depth_sort/depth_sort_events.h"
 #include "portals/portal_events.h"
+#include "raycast/raycast_events.h"
 #include "zbuffer/scanline_events.h"
 #include "zbuffer/z_merge.h"
 #include "zbuffer/zbuffer_events.h"
 
 namespace hsr::algo {
 
-std::vector<std::span<const Saying>> machine_sayings() { return {backface_sayings(), bsp_sayings(), clipping_sayings(), culling_sayings(), depth_sort_sayings(), portal_sayings(), scanline_sayings(), zbuffer_sayings(), zmerge_sayings()}; }
+std::vector<std::span<const Saying>> machine_sayings() {
+    return {backface_sayings(), bsp_sayings(),      clipping_sayings(), culling_sayings(),  depth_sort_sayings(), hiz_sayings(),
+            occluder_sayings(), portal_sayings(),   ray_cast_sayings(), scanline_sayings(), zbuffer_sayings(),    zmerge_sayings()};
+}
 
 }  // namespace hsr::algo

@@ -74,9 +74,6 @@ constexpr Saying all[] = {first, balanced, fewest_splits, weighted, depth, polyg
                           build_started, candidate, chosen, chosen_best, in_front, behind, coplanar, spanning, split,
                           node_finished, built, eye_front, eye_back, eye_on, drawn, traversal_finished, bound_reached};
 }  // namespace say
-
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 }  // namespace
 
 const Saying& term(SplitterRule r) {

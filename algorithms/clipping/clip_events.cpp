@@ -74,9 +74,6 @@ constexpr Saying all[] = {inside, clipped, rejected, parallel_inside, parallel_o
                           segment_rejected, segment_visible, polygon_started, stage_started, edge_in_in, edge_in_out,
                           edge_out_out, edge_out_in, stage_finished, polygon_finished, bound_reached};
 }  // namespace say
-
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 }  // namespace
 
 const Saying& term(ClipOutcome o) {

@@ -35,15 +35,17 @@ struct Saying {
     std::string_view key, english;
 };
 
-// What one event says: a template, its values, and its terms (values that are themselves words to translate, such
-// as a test's name).
+// Values that are themselves words to translate, such as a test's name: each names the saying that says it.
+using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
+
+// What one event says: a template, its values, and its terms.
 struct Phrase {
     const Saying* saying = nullptr;
     std::vector<NamedValue> values;
-    std::vector<std::pair<std::string_view, const Saying*>> terms;
+    Terms terms;
 
     Phrase() = default;
-    Phrase(const Saying& s, std::vector<NamedValue> v = {}, std::vector<std::pair<std::string_view, const Saying*>> t = {})
+    Phrase(const Saying& s, std::vector<NamedValue> v = {}, Terms t = {})
         : saying(&s), values(std::move(v)), terms(std::move(t)) {}
     std::string english() const;
 };

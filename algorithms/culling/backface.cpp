@@ -115,9 +115,6 @@ constexpr Saying tested{"backface.tested", "face {id}: {quantity} = {value}, {fa
 constexpr Saying finished{"backface.finished", "{tested} faces tested, {culled} culled"};
 constexpr Saying all[] = {view_vector, plane_equation, screen_winding, front, back, edge_on, outside_view, screen_area, tested, finished};
 }  // namespace say
-
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 }  // namespace
 
 const Saying& term(BackfaceTest t) {

@@ -36,9 +36,6 @@ constexpr Saying done{"culling.done",
 constexpr Saying all[] = {outside, inside, partial, too_small, split, few_primitives, cell_size, depth_bound, node_built, built,
                           node, node_outside, node_too_small, done};
 }  // namespace say
-
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 }  // namespace
 
 const Saying& term(NodeOutcome o) {

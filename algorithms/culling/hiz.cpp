@@ -104,26 +104,41 @@ BoxOnScreen box_on_screen(const Aabb& box, const Scene& scene, const ZBufferOpti
     return s;
 }
 
-std::string describe(const HizEvent& event) {
+namespace {
+// What Hi-Z culling says, each template once (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying outside{"hiz.outside", "Node {node}: outside the frustum."};
+constexpr Saying occluded{"hiz.occluded",
+                          "Node {node}: occluded ({texels} pyramid {texels?texel|texels} tested); its {primitives} {primitives?primitive is|primitives are} left out."};
+constexpr Saying visible{"hiz.visible",
+                         "Node {node}: visible after {texels} {texels?texel|texels}; {rendered} {rendered?primitive|primitives} rendered, the pyramid updated."};
+constexpr Saying done{"hiz.done",
+                      "Done: {nodes} nodes, {occluded} occluded; {rendered} {rendered?primitive|primitives} rendered, {left_out} left out."};
+constexpr Saying all[] = {outside, occluded, visible, done};
+}  // namespace say
+}  // namespace
+
+std::span<const Saying> hiz_sayings() { return say::all; }
+
+Phrase phrase(const HizEvent& event) {
+    const auto n = [](std::uint32_t v) { return std::to_string(v); };
     return std::visit(overloaded{
-                          [](const HizNodeTested& e) -> std::string {
-                              switch (e.outcome) {
-                                  case HizOutcome::outside_frustum: return "Node " + std::to_string(e.node) + ": outside the frustum.";
-                                  case HizOutcome::occluded:
-                                      return "Node " + std::to_string(e.node) + ": occluded (" + std::to_string(e.texels_tested) +
-                                             " pyramid texels tested); its " + std::to_string(e.subtree_primitives) + " primitives are left out.";
-                                  case HizOutcome::rendered: break;
-                              }
-                              return "Node " + std::to_string(e.node) + ": visible after " + std::to_string(e.texels_tested) +
-                                     " texels; " + std::to_string(e.primitives_rendered) + " primitives rendered, the pyramid updated.";
+                          [&](const HizNodeTested& e) {
+                              const Saying& saying = e.outcome == HizOutcome::outside_frustum ? say::outside
+                                                     : e.outcome == HizOutcome::occluded      ? say::occluded
+                                                                                              : say::visible;
+                              return Phrase(saying, {{"node", n(e.node)}, {"texels", n(e.texels_tested)},
+                                                     {"primitives", n(e.subtree_primitives)}, {"rendered", n(e.primitives_rendered)}});
                           },
-                          [](const HizFinished& e) -> std::string {
-                              return "Done: " + std::to_string(e.nodes) + " nodes, " + std::to_string(e.occluded_nodes) + " occluded; " +
-                                     std::to_string(e.rendered) + " primitives rendered, " + std::to_string(e.left_out) + " left out.";
+                          [&](const HizFinished& e) {
+                              return Phrase(say::done, {{"nodes", n(e.nodes)}, {"occluded", n(e.occluded_nodes)},
+                                                        {"rendered", n(e.rendered)}, {"left_out", n(e.left_out)}});
                           },
                       },
                       event);
 }
+
+std::string describe(const HizEvent& event) { return phrase(event).english(); }
 
 Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZBufferOptions o, std::vector<std::uint8_t> enabled) {
     HizResult out{cleared_buffers(o), std::vector<std::uint8_t>(h->boxes.size(), 0), 0, 0, 0};

@@ -15,11 +15,13 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
+#include "core/phrase.h"
 #include "core/steps.h"
 #include "culling/hierarchy.h"
 #include "zbuffer/zbuffer_fill.h"
@@ -78,7 +80,10 @@ struct HizFinished {
     bool operator==(const HizFinished&) const = default;
 };
 using HizEvent = std::variant<HizNodeTested, HizFinished>;
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const HizEvent& e);
 std::string describe(const HizEvent& e);
+std::span<const Saying> hiz_sayings();
 
 struct HizResult {
     FrameDepth buffers;

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/events.h"
 #include "core/overloaded.h"
 #include "culling/view_frustum.h"
 
@@ -81,27 +82,48 @@ double occluder_rank(const std::vector<Vec3>& poly, const Vec3& eye) {
     return std::max(0.0, -measure(poly) * glm::dot(p.n, v / std::sqrt(len2)) / len2);
 }
 
-std::string describe(const OcclusionEvent& event) {
+namespace {
+// What occlusion culling says, each template once (its key is what another language's catalogue translates).
+namespace say {
+constexpr Saying chosen{"occluders.chosen", "Occluder: polygon #{polygon}, rank f = {rank}."};
+constexpr Saying node_culled{"occluders.node_culled", "Node {node}: inside the frustum of occluder {occluder}, culled."};
+constexpr Saying node_partly{"occluders.node_partly", "Node {node}: partly inside an occlusion frustum: its children are tested."};
+constexpr Saying node_passed{"occluders.node_passed", "Node {node}: not inside any occlusion frustum, passed on."};
+constexpr Saying primitive_culled{"occluders.primitive_culled", "Primitive #{primitive}: inside the frustum of occluder {occluder}, culled."};
+constexpr Saying primitive_passed{"occluders.primitive_passed", "Primitive #{primitive}: not inside any occlusion frustum, passed on."};
+constexpr Saying done{"occluders.done",
+                      "Done: {occluders} {occluders?occluder|occluders}; {culled} {culled?primitive|primitives} culled, {passed} passed on."};
+constexpr Saying all[] = {chosen, node_culled, node_partly, node_passed, primitive_culled, primitive_passed, done};
+}  // namespace say
+
+const Saying& tested_saying(const OcclusionTested& e) {
+    const bool node = e.node >= 0;
+    switch (e.outcome) {
+        case OcclusionOutcome::occluded: return node ? say::node_culled : say::primitive_culled;
+        case OcclusionOutcome::partly: return say::node_partly;  // only a node is split
+        case OcclusionOutcome::visible: break;
+    }
+    return node ? say::node_passed : say::primitive_passed;
+}
+}  // namespace
+
+std::span<const Saying> occluder_sayings() { return say::all; }
+
+Phrase phrase(const OcclusionEvent& event) {
+    const auto n = [](auto v) { return std::to_string(v); };
     return std::visit(overloaded{
-                          [](const OccluderChosen& e) -> std::string {
-                              return "Occluder: polygon #" + std::to_string(e.polygon) + ", rank f = " + std::to_string(e.rank) + ".";
+                          [&](const OccluderChosen& e) { return Phrase(say::chosen, {{"polygon", n(e.polygon)}, {"rank", format_number(e.rank)}}); },
+                          [&](const OcclusionTested& e) {
+                              return Phrase(tested_saying(e), {{"node", n(e.node)}, {"primitive", n(e.primitive)}, {"occluder", n(e.occluder)}});
                           },
-                          [](const OcclusionTested& e) -> std::string {
-                              const std::string what = e.node >= 0 ? "node " + std::to_string(e.node) : "primitive #" + std::to_string(e.primitive);
-                              switch (e.outcome) {
-                                  case OcclusionOutcome::occluded: return what + ": inside the frustum of occluder " + std::to_string(e.occluder) + ", culled.";
-                                  case OcclusionOutcome::partly: return what + ": partly inside an occlusion frustum: its children are tested.";
-                                  case OcclusionOutcome::visible: break;
-                              }
-                              return what + ": not inside any occlusion frustum, passed on.";
-                          },
-                          [](const OcclusionFinished& e) -> std::string {
-                              return "Done: " + std::to_string(e.occluders) + " occluders; " + std::to_string(e.culled) + " primitives culled, " +
-                                     std::to_string(e.passed) + " passed on.";
+                          [&](const OcclusionFinished& e) {
+                              return Phrase(say::done, {{"occluders", n(e.occluders)}, {"culled", n(e.culled)}, {"passed", n(e.passed)}});
                           },
                       },
                       event);
 }
+
+std::string describe(const OcclusionEvent& event) { return phrase(event).english(); }
 
 Steps<OcclusionEvent, OcclusionCull> occlusion_cull(const Scene* scene, const Hierarchy* h, OcclusionOptions o) {
     OcclusionCull out;

@@ -13,11 +13,13 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
+#include "core/phrase.h"
 #include "core/steps.h"
 #include "culling/hierarchy.h"
 
@@ -44,7 +46,10 @@ struct OcclusionFinished {
     bool operator==(const OcclusionFinished&) const = default;
 };
 using OcclusionEvent = std::variant<OccluderChosen, OcclusionTested, OcclusionFinished>;
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const OcclusionEvent& e);
 std::string describe(const OcclusionEvent& e);
+std::span<const Saying> occluder_sayings();
 
 struct Occluder {
     std::uint32_t polygon;

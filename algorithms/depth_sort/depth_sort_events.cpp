@@ -62,7 +62,6 @@ constexpr Saying all[] = {test_1, test_2, test_3, test_4, test_5, test_3_swapped
                           projections_overlap, projections_apart, sides, moved, cycle, cut_across, cut, deferred, painted,
                           finished, front_drawn, screen_filled, front_finished, bound_splits, bound_pairs};
 }  // namespace say
-
 }  // namespace
 
 const Saying& term(OrderTest t) {
@@ -90,8 +89,7 @@ Phrase phrase(const DepthSortEvent& event) {
                 return Phrase(say::pair, {{"r", n(e.r)}, {"r_z", range(e.r_min_z, e.r_max_z)}, {"q", n(e.q)}, {"q_z", range(e.q_min_z, e.q_max_z)}});
             },
             [](const TestTried& e) {
-                const std::vector<std::pair<std::string_view, const Saying*>> terms = {{"test", &term(e.test)},
-                                                                                      {"verdict", e.passed ? &say::yes : &say::no}};
+                const Terms terms = {{"test", &term(e.test)}, {"verdict", e.passed ? &say::yes : &say::no}};
                 switch (e.test) {
                     case OrderTest::x_extents:
                     case OrderTest::y_extents: return Phrase(say::extents, {{"r", range(e.a, e.b)}, {"q", range(e.c, e.d)}}, terms);

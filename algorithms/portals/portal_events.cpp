@@ -65,9 +65,6 @@ constexpr Saying all[] = {not_in_pvs, faces_away, outside_frustum, on_path, pass
                           found, blocked_3d, none, reached, stab_bound, pvs_built, no_cell, located, row, visited, tested,
                           tested_passed, culled, drawn, render_bound, finished};
 }  // namespace say
-
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 }  // namespace
 
 const Saying& term(PortalVerdict v) {

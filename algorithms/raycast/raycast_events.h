@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
 
 #include <glm/vec3.hpp>
 
+#include "core/phrase.h"
 #include "scene/scene.h"
 
 namespace hsr::algo {
@@ -78,7 +80,11 @@ struct CastStepBoundReached {
 using RayCastEvent = std::variant<RayStarted, CellEntered, NodeEntered, PrimitiveTested, NearerHitFound, RayFinished,
                                   CastFinished, CastStepBoundReached>;
 
+// What an event says, as a template with named values (core/phrase.h), and in English.
+Phrase phrase(const RayCastEvent& e);
 std::string describe(const RayCastEvent& e);
+const Saying& term(Acceleration a);  // "regular grid"
 std::string_view to_string(Acceleration a);
+std::span<const Saying> ray_cast_sayings();
 
 }  // namespace hsr::algo

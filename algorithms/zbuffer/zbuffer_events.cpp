@@ -33,8 +33,6 @@ constexpr Saying all[] = {outside_view, zero_area, smaller, larger, cleared, fil
                           polygon_done, done, bound};
 }  // namespace say
 
-using Terms = std::vector<std::pair<std::string_view, const Saying*>>;
-
 const Saying& why(ScreenStatus s) { return s == ScreenStatus::outside_view ? say::outside_view : say::zero_area; }
 
 }  // namespace

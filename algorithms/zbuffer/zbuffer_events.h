@@ -89,8 +89,8 @@ struct FillStepBoundReached {
 using ZBufferEvent = std::variant<BufferCleared, PolygonFillStarted, PolygonSkipped, SpanStarted, PixelTested,
                                   DepthWritten, DepthTestFailed, PolygonFillFinished, FillFinished, FillStepBoundReached>;
 
-// One sentence with the live numbers; `format` says how to read the codes.
-// What an event says, as a template with named values (core/phrase.h), and in English.
+// What an event says, as a template with named values (core/phrase.h), and in English; `format` says how to read
+// the depth codes.
 Phrase phrase(const ZBufferEvent& e, DepthFormat format);
 std::string describe(const ZBufferEvent& e, DepthFormat format);
 std::span<const Saying> zbuffer_sayings();  // every template the z-buffer says

@@ -275,9 +275,7 @@ std::string CullingSession<Event, Result>::describe_event(const Event& e) const 
 }
 template <class Event, class Result>
 std::string CullingSession<Event, Result>::speak_event(const Event& e) const {
-    // a machine that says its events as templates speaks the window's language; the others speak English
-    if constexpr (requires { phrase(e); }) return window_strings().say(phrase(e));
-    else return describe(e);
+    return window_strings().say(phrase(e));
 }
 template <class Event, class Result>
 const FamilyFacts CullingSession<Event, Result>::facts = {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "state/raycast_session.h"
 
+#include "state/strings.h"
+
 namespace hsr::viz {
 namespace {
 
@@ -40,6 +42,7 @@ RayCastSession::RayCastSession(Lesson lesson, PlayerOptions options)
 
 std::string RayCastSession::sentence_of(const RayCastEvent& e, const RayView&) { return describe(e); }
 std::string RayCastSession::describe_event(const RayCastEvent& e) const { return sentence_of(e, view()); }
+std::string RayCastSession::speak_event(const RayCastEvent& e) const { return window_strings().say(phrase(e)); }
 
 const Pseudocode<RayCastEvent>& RayCastSession::table() const { return cast_lines; }
 

@@ -19,6 +19,7 @@ public:
 
 private:
     std::string describe_event(const algo::RayCastEvent& e) const override;
+    std::string speak_event(const algo::RayCastEvent& e) const override;
     const Pseudocode<algo::RayCastEvent>& table() const override;
 
     algo::Scene scene_;
