@@ -9,27 +9,63 @@
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
 
+// A stage's name as the student reads it (the command line's names are algo::to_string's)
+std::string stage_name(algo::Stage s) {
+    switch (s) {
+        case algo::Stage::back_face: return tr("culling.stage_back_face");
+        case algo::Stage::frustum: return tr("culling.stage_frustum");
+        case algo::Stage::detail: return tr("culling.stage_detail");
+        case algo::Stage::occluders: return tr("culling.stage_occluders");
+        case algo::Stage::portals: return tr("culling.stage_portals");
+        case algo::Stage::hiz: return tr("culling.stage_hiz");
+        case algo::Stage::hse: return tr("culling.stage_hse");
+    }
+    return "?";
+}
+
+std::string machine_name(algo::CullingMachine m) {
+    switch (m) {
+        case algo::CullingMachine::bounds: return tr("culling.machine_bounds");
+        case algo::CullingMachine::frustum: return tr("culling.machine_frustum");
+        case algo::CullingMachine::detail: return tr("culling.machine_detail");
+        case algo::CullingMachine::occluders: return tr("culling.machine_occluders");
+        case algo::CullingMachine::hiz: return tr("culling.machine_hiz");
+    }
+    return "?";
+}
+
 void pipeline_table(const CullingView& v) {
     if (!ImGui::BeginTable("pipeline", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) return;
-    const float em = ImGui::GetFontSize();  // widths that grow with the type (projector, Ctrl+=)
-    ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthFixed, 5.5f * em);
-    ImGui::TableSetupColumn("in", ImGuiTableColumnFlags_WidthFixed, 3.5f * em);
-    ImGui::TableSetupColumn("left out", ImGuiTableColumnFlags_WidthFixed, 4.2f * em);
-    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 3 * em);
+    // each column as wide as its widest word or number (any language, any type size)
+    const float pad = 2 * ImGui::GetStyle().CellPadding.x;
+    const auto wide = [&](std::initializer_list<std::string> words) {
+        float w = 0;
+        for (const std::string& t : words) w = std::max(w, ImGui::CalcTextSize(t.c_str()).x);
+        return w + pad;
+    };
+    float stages = 0;
+    for (const algo::StageReport& r : v.world->pipeline) stages = std::max(stages, ImGui::CalcTextSize(stage_name(r.stage).c_str()).x);
+    const std::string stage = tr("culling.stage"), in = tr("culling.in"), left_out = tr("culling.left_out"), ms = tr("culling.ms");
+    ImGui::TableSetupColumn(stage.c_str(), ImGuiTableColumnFlags_WidthFixed, std::max(stages + pad, wide({stage})));
+    ImGui::TableSetupColumn(in.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({in, "000000"}));
+    ImGui::TableSetupColumn(left_out.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({left_out, "000000"}));
+    ImGui::TableSetupColumn(ms.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({ms, "000.00"}));
     ImGui::TableSetupColumn("");
     ImGui::TableHeadersRow();
+    const std::string not_needed = tr("culling.not_needed");
     for (const algo::StageReport& r : v.world->pipeline) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(std::string(algo::to_string(r.stage)).c_str());
+        ImGui::TextUnformatted(stage_name(r.stage).c_str());
         if (!r.ran) {  // a dash in each number's column, the reason where the bar would be
             for (int k = 0; k < 3; ++k) ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
             ImGui::TableNextColumn();
-            ImGui::TextColored(dim_text, "not needed");
+            ImGui::TextColored(dim_text, "%s", not_needed.c_str());
             continue;
         }
         ImGui::TableNextColumn();
@@ -56,11 +92,11 @@ void void_table(const CullingView& v) {
     const bool large = polygons.size() > 20000;  // not worth joining: a scene of many objects
     const auto objects = large ? std::vector<std::vector<std::size_t>>{} : algo::connected_objects(polygons);
     if (large || objects.size() > 12) {
-        ImGui::TextColored(dim_text, "(void space is shown for scenes of a few objects)");
+        wrapped_text(tr("culling.void_few"), dim_text);
         return;
     }
     if (!ImGui::BeginTable("void", 4, ImGuiTableFlags_BordersInnerH)) return;
-    for (const char* c : {"object (ids)", "AABB void", "sphere void", "OBB void"}) ImGui::TableSetupColumn(c);
+    for (const char* key : {"culling.object_ids", "culling.aabb_void", "culling.sphere_void", "culling.obb_void"}) ImGui::TableSetupColumn(tr(key).c_str());
     ImGui::TableHeadersRow();
     for (const std::vector<std::size_t>& object : objects) {
         std::vector<std::vector<algo::Vec3>> polys;
@@ -77,7 +113,7 @@ void void_table(const CullingView& v) {
         for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points).volume()}) {
             ImGui::TableNextColumn();
             if (const auto share = algo::void_fraction(bv, volume)) ImGui::Text("%.0f %%", 100 * *share);
-            else ImGui::TextColored(dim_text, "open");
+            else ImGui::TextColored(dim_text, "%s", tr("culling.open").c_str());
         }
     }
     ImGui::EndTable();
@@ -86,20 +122,21 @@ void void_table(const CullingView& v) {
 }  // namespace
 
 void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "Culling");
+    begin_column_box(l, Box::state, (tr("culling.title") + "###state").c_str());
     const CullingView& v = s.culling_view();
-    std::string header = std::string(to_string(s.culling_machine())) + ": " + std::to_string(v.kept) + " kept, " +
-                         std::to_string(v.left_out) + " left out so far";
-    if (v.earlier > 0) header += " (and " + std::to_string(v.earlier) + " by the stages before)";
-    if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + std::to_string(v.plane_tests) + " plane tests";
-    if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + std::to_string(v.texels) + " texels tested";
-    wrapped_text(header + " · V: god's eye / camera", dim_text);
+    const auto n = [](auto value) { return std::to_string(value); };
+    // one clause per fact, joined by " · " (each a whole sentence in its language)
+    std::string header = tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
+                            {{"machine", machine_name(s.culling_machine())}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}});
+    if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + tr("culling.plane_tests", {{"tests", n(v.plane_tests)}});
+    if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + tr("culling.texels", {{"texels", n(v.texels)}});
+    wrapped_text(header + " · " + tr("culling.view_key"), dim_text);
     if (ImGui::BeginTabBar("culling tabs")) {
-        if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem("void space")) {
+        if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem((tr("culling.void_tab") + "###void space").c_str())) {
             void_table(v);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("pipeline")) {
+        if (ImGui::BeginTabItem((tr("culling.pipeline_tab") + "###pipeline").c_str())) {
             pipeline_table(v);
             ImGui::EndTabItem();
         }
@@ -116,7 +153,7 @@ void zpyramid_canvas(const CullingView& v, const std::vector<std::uint32_t>& dep
     const float cell = 2;
     float left = x + 12;
     const float top = y + h - 20 - cell * float(o.viewport.height);
-    d->AddText(ImVec2(left, top - 20), IM_COL32(220, 220, 220, 255), "Z-pyramid: levels 0 to 3 (bright = near, dark = far)");
+    d->AddText(ImVec2(left, top - 20), IM_COL32(220, 220, 220, 255), tr("culling.pyramid").c_str());
     for (std::size_t l = 0; l < std::min<std::size_t>(4, pyramid.levels()); ++l) {
         const float c = cell * float(1 << l);
         d->AddRectFilled(ImVec2(left - 2, top - 2), ImVec2(left + c * float(pyramid.width(l)) + 2, top + c * float(pyramid.height(l)) + 2),

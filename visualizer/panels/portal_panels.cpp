@@ -13,7 +13,9 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
 #include "state/elevation.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -194,11 +196,11 @@ bool openings_have_heights(const algo::CellModel& m) {
 // pass above or below the next one).
 void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w, float h) {
     const ImU32 text = IM_COL32(200, 203, 210, 255), dim = IM_COL32(150, 153, 160, 255);
-    d->AddText(ImVec2(x + 16, y), dim, "elevation above the plan's line through the openings: height against distance along the line");
+    d->AddText(ImVec2(x + 16, y), dim, tr("portals.elevation").c_str());
     const auto e = v.sequence.empty() || !(v.found || v.blocked_in_3d) ? std::nullopt
                                                                        : elevation_of(v.world->model, v.sequence, v.sight_point, v.sight_direction);
     if (!e) {
-        d->AddText(ImVec2(x + 16, y + ImGui::GetTextLineHeightWithSpacing()), dim, "(no run of openings with a line through it in the plan yet)");
+        d->AddText(ImVec2(x + 16, y + ImGui::GetTextLineHeightWithSpacing()), dim, tr("portals.no_run").c_str());
         return;
     }
     double s0 = e->gaps.front().s, s1 = s0;
@@ -206,14 +208,16 @@ void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w
     const double pad = std::max(0.35 * (s1 - s0), 0.5);
     s0 -= pad, s1 += pad;
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float top = y + line + 10, bottom = y + h - line - 10, left = x + 40, right = x + w - 16 - ImGui::CalcTextSize("ceiling").x;
+    const std::string ceiling = tr("portals.ceiling"), floor = tr("portals.floor");
+    const float top = y + line + 10, bottom = y + h - line - 10, left = x + 40,
+                right = x + w - 16 - std::max(ImGui::CalcTextSize(ceiling.c_str()).x, ImGui::CalcTextSize(floor.c_str()).x);
     const double scale = std::min(double(right - left) / (s1 - s0), double(bottom - top) / e->height);
     const float r = left + float((s1 - s0) * scale);
     const auto at = [&](double s, double height) { return ImVec2(left + float((s - s0) * scale), bottom - float(height * scale)); };
     d->AddLine(at(s0, 0), at(s1, 0), wall_colour, canvas_px(2));  // floor and ceiling
     d->AddLine(at(s0, e->height), at(s1, e->height), wall_colour, canvas_px(2));
-    d->AddText(ImVec2(r + 4, at(s1, e->height).y - 8), dim, "ceiling");
-    d->AddText(ImVec2(r + 4, at(s1, 0).y - 8), dim, "floor");
+    d->AddText(ImVec2(r + 4, at(s1, e->height).y - 8), dim, ceiling.c_str());
+    d->AddText(ImVec2(r + 4, at(s1, 0).y - 8), dim, floor.c_str());
     for (std::size_t k = 0; k < e->gaps.size(); ++k) {
         const ElevationGap& g = e->gaps[k];
         const bool missed = k == e->reached;
@@ -237,9 +241,9 @@ void elevation_canvas(const PvsView& v, ImDrawList* d, float x, float y, float w
             }
         if (a < b) d->AddLine(at(a, hgt(a)), at(b, hgt(b)), lines, canvas_px(2));
     }
-    const std::string verdict = e->passes() ? "a line passes through every opening: the last cell is reached"
-                                            : e->reached >= 2 ? "lines through the first " + std::to_string(e->reached) + " openings pass above or below the next"
-                                                              : "no line passes the first two openings";
+    const std::string verdict = e->passes()         ? tr("portals.passes")
+                                : e->reached >= 2 ? tr("portals.passes_first", {{"reached", std::to_string(e->reached)}})
+                                                  : tr("portals.passes_none");
     d->AddText(ImVec2(x + 16, bottom + 4), lines, verdict.c_str());
 }
 
@@ -253,7 +257,7 @@ void portal_plan_canvas(const PvsSession& s, float x, float y, float w, float h)
     ImDrawList* d = ImGui::GetWindowDrawList();
     pvs_plan(s, d, f);
     if (heights) elevation_canvas(s.view(), d, x, y + plan_h, w, h - plan_h);
-    end_plan_canvas(x, y, "floor plan · green: in the PVS of the yellow cell");
+    end_plan_canvas(x, y, tr("portals.pvs_caption").c_str());
 }
 
 void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w, float h, UiActions& out) {
@@ -267,7 +271,7 @@ void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w,
         const Vec2 p = f.plan(mouse);
         out.move_eye = glm::dvec3(p.x, s.view().camera.eye.y, -p.y);
     }
-    end_plan_canvas(x, y, "floor plan · drag the eye · V: the 3D walk-through");
+    end_plan_canvas(x, y, tr("portals.render_caption").c_str());
 }
 
 // ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────
@@ -278,7 +282,7 @@ void pvs_matrix(const algo::CellModel& m, const std::vector<std::uint8_t>& matri
     if (n > 16) {
         std::size_t set = 0;
         for (std::uint8_t x : matrix) set += x;
-        ImGui::TextColored(dim_text, "%zu cells: %zu of %zu entries set (too many to show as a table)", n, set, n * n);
+        wrapped_text(tr("portals.too_many", {{"cells", std::to_string(n)}, {"set", std::to_string(set)}, {"entries", std::to_string(n * n)}}), dim_text);
         return;
     }
     if (!ImGui::BeginTable("pvs", int(n) + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) return;
@@ -305,7 +309,7 @@ void stab_tree(const algo::CellModel& m, const std::vector<algo::StabNode>& tree
         if (tree[i].parent >= 0) depth[i] = depth[std::size_t(tree[i].parent)] + 1;
         ImGui::Text("%*s%s", 3 * depth[i], "", m.cells[tree[i].cell].name.c_str());
         if (i >= 200) {
-            ImGui::TextColored(dim_text, "… %zu more", tree.size() - i - 1);
+            ImGui::TextColored(dim_text, "%s", tr("portals.more", {{"more", std::to_string(tree.size() - i - 1)}}).c_str());
             break;
         }
     }
@@ -314,15 +318,15 @@ void stab_tree(const algo::CellModel& m, const std::vector<algo::StabNode>& tree
 }  // namespace
 
 void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "PVS");
+    begin_column_box(l, Box::state, (tr("portals.pvs_title") + "###state").c_str());
     const PvsView& v = s.view();
-    ImGui::TextColored(dim_text, "%llu sightline tests%s", (unsigned long long)v.tests, v.bounded ? " · a bound was reached" : "");
+    wrapped_text(tr(v.bounded ? "portals.tests_bounded" : "portals.tests", {{"tests", std::to_string(v.tests)}}), dim_text);
     if (ImGui::BeginTabBar("pvs tabs")) {
-        if (ImGui::BeginTabItem("PVS matrix")) {
+        if (ImGui::BeginTabItem((tr("portals.matrix_tab") + "###matrix").c_str())) {
             pvs_matrix(v.world->model, v.matrix, v.source);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("stab tree")) {
+        if (ImGui::BeginTabItem((tr("portals.tree_tab") + "###tree").c_str())) {
             if (v.source >= 0) stab_tree(v.world->model, v.tree);
             ImGui::EndTabItem();
         }
@@ -332,21 +336,22 @@ void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
 }
 
 void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelLayout& l, UiActions& out) {
-    begin_column_box(l, Box::state, "Portals");
+    begin_column_box(l, Box::state, (tr("portals.title") + "###state").c_str());
     const PortalView& v = s.view();
     const auto& m = v.world->model;
     bool show_3d = three_d;
-    if (ImGui::Checkbox("3D walk-through", &show_3d)) out.toggle_3d = true;
+    if (ImGui::Checkbox((tr("portals.walk_3d") + "###3d").c_str(), &show_3d)) out.toggle_3d = true;
     ImGui::SameLine();
-    ImGui::TextColored(dim_text, "%s frusta", s.bounding_box_frusta() ? "bounding-box" : "exact");
-    ImGui::Text("drawn %u · back-face %u · frustum %u · visits %u · portals %u", v.drawn, v.culled_back_face, v.culled_frustum,
-                v.visits, v.portals_passed);
+    ImGui::TextColored(dim_text, "%s", tr(s.bounding_box_frusta() ? "portals.box_frusta" : "portals.exact_frusta").c_str());
+    const auto n = [](std::uint32_t value) { return std::to_string(value); };
+    wrapped_text(tr("portals.counts", {{"drawn", n(v.drawn)}, {"back_face", n(v.culled_back_face)}, {"frustum", n(v.culled_frustum)},
+                                       {"visits", n(v.visits)}, {"portals", n(v.portals_passed)}}));
     if (ImGui::BeginTabBar("portal tabs")) {
-        if (ImGui::BeginTabItem("PVS matrix")) {
+        if (ImGui::BeginTabItem((tr("portals.matrix_tab") + "###matrix").c_str())) {
             pvs_matrix(m, v.world->pvs.matrix, v.eye_cell);
             ImGui::EndTabItem();
         }
-        if (ImGui::BeginTabItem("stab tree")) {
+        if (ImGui::BeginTabItem((tr("portals.tree_tab") + "###tree").c_str())) {
             if (v.eye_cell >= 0) stab_tree(m, v.world->pvs.trees[std::size_t(v.eye_cell)]);
             ImGui::EndTabItem();
         }

@@ -9,6 +9,7 @@
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -17,7 +18,7 @@ void raycast_image(const RayCastSession& s, float x, float y, float w, float h) 
     const float cell = std::clamp(std::min(w * 0.35f / float(v.viewport.width), h * 0.35f / float(v.viewport.height)), 3.0f, 16.0f);
     const float iw = cell * float(v.viewport.width), ih = cell * float(v.viewport.height);
     place(x + 12, y + h - ih - 40, iw + 16, ih + 36);
-    ImGui::Begin("Image", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
+    ImGui::Begin((tr("raycast.image") + "###image").c_str(), nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
     ImDrawList* d = ImGui::GetWindowDrawList();
     const ImVec2 o = ImGui::GetCursorScreenPos();
     const auto& polygons = s.scene().polygons;
@@ -41,29 +42,31 @@ void raycast_image(const RayCastSession& s, float x, float y, float w, float h) 
 }
 
 void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "Ray");
+    begin_column_box(l, Box::state, (tr("raycast.title") + "###state").c_str());
     const RayView& v = s.view();
-    wrapped_text(std::string(algo::to_string(v.acceleration)) + " · " + std::to_string(v.viewport.width) + "×" +
-                     std::to_string(v.viewport.height) + " rays · t = 0 on the near plane, 1 on the far plane",
+    const auto n = [](auto value) { return std::to_string(value); };
+    wrapped_text(tr("raycast.detail", {{"acceleration", window_strings().say(algo::term(v.acceleration))},
+                                       {"width", n(v.viewport.width)}, {"height", n(v.viewport.height)}}),
                  dim_text);
     if (v.ray_x >= 0) {
-        ImGui::Text("pixel (%d, %d): %u tests so far", v.ray_x, v.ray_y, v.ray_tests);
+        wrapped_text(tr("raycast.pixel", {{"x", n(v.ray_x)}, {"y", n(v.ray_y)}, {"tests", n(v.ray_tests)}}));
         if (v.acceleration == algo::Acceleration::grid && !v.cells.empty())
-            ImGui::Text("%zu cells walked, now in [%d, %d, %d] of %d×%d×%d", v.cells.size(), v.cells.back().x,
-                        v.cells.back().y, v.cells.back().z, v.grid->cells.x, v.grid->cells.y, v.grid->cells.z);
-        if (v.acceleration == algo::Acceleration::octree) ImGui::Text("%d octree nodes entered", v.nodes);
+            wrapped_text(tr("raycast.cells", {{"walked", n(v.cells.size())}, {"i", n(v.cells.back().x)}, {"j", n(v.cells.back().y)},
+                                              {"k", n(v.cells.back().z)}, {"nx", n(v.grid->cells.x)}, {"ny", n(v.grid->cells.y)},
+                                              {"nz", n(v.grid->cells.z)}}));
+        if (v.acceleration == algo::Acceleration::octree) wrapped_text(tr("raycast.nodes", {{"nodes", n(v.nodes)}}));
         if (v.tested >= 0)
-            ImGui::Text("tested polygon %d: %s", s.scene().polygons[std::size_t(v.tested)].id,
-                        v.tested_hit ? ("hit at t = " + std::to_string(v.tested_t)).c_str() : "missed");
+            wrapped_text(tr(v.tested_hit ? "raycast.tested_hit" : "raycast.tested_missed",
+                            {{"polygon", n(s.scene().polygons[std::size_t(v.tested)].id)}, {"t", algo::format_number(v.tested_t)}}));
         if (v.nearest >= 0)
-            ImGui::TextColored(ImVec4(0.9f, 0.62f, 0, 1), "nearest: polygon %d at t = %.5g", s.scene().polygons[std::size_t(v.nearest)].id, v.nearest_t);
+            wrapped_text(tr("raycast.nearest", {{"polygon", n(s.scene().polygons[std::size_t(v.nearest)].id)}, {"t", algo::format_number(v.nearest_t)}}),
+                         ImVec4(0.9f, 0.62f, 0, 1));
         else
-            ImGui::TextColored(dim_text, "nearest: none yet");
+            wrapped_text(tr("raycast.nearest_none"), dim_text);
     }
-    char totals[160];
-    std::snprintf(totals, sizeof totals, "%llu rays · %llu primitive tests (%.3g per ray)", (unsigned long long)v.rays,
-                  (unsigned long long)v.tests, v.rays ? double(v.tests) / double(v.rays) : 0.0);
-    wrapped_text(totals, dim_text);
+    char per_ray[32];
+    std::snprintf(per_ray, sizeof per_ray, "%.3g", v.rays ? double(v.tests) / double(v.rays) : 0.0);
+    wrapped_text(tr("raycast.totals", {{"rays", n(v.rays)}, {"tests", n(v.tests)}, {"per_ray", per_ray}}), dim_text);
     end_column_box(l, Box::state);
 }
 

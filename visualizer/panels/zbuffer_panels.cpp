@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -11,6 +12,8 @@
 #include "core/events.h"
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -20,6 +23,11 @@ using algo::DepthFormat;
 constexpr std::array formats = {DepthFormat::int16, DepthFormat::int24, DepthFormat::int32,
                                 DepthFormat::float32, DepthFormat::float32_reversed, DepthFormat::linear24};
 
+std::string g4(double v) {  // four significant digits: what a student compares
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
 
 // The eye distance a window depth d stands for (perspective: d = a + b/z).
 double eye_distance(double d, algo::DepthRange r) {
@@ -66,11 +74,10 @@ void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
         const float x = x_of(distance_of_code(v.format, c, r));
         d->AddLine(ImVec2(x, y - 8), ImVec2(x, y + 8), IM_COL32(120, 190, 255, 255), canvas_px(1));
     }
-    d->AddText(ImVec2(x0, y + 10), IM_COL32(200, 200, 200, 255), ("near " + algo::format_number(r.near)).c_str());
-    const std::string far_text = "far " + algo::format_number(r.far);
+    d->AddText(ImVec2(x0, y + 10), IM_COL32(200, 200, 200, 255), tr("zbuffer.near_at", {{"near", algo::format_number(r.near)}}).c_str());
+    const std::string far_text = tr("zbuffer.far_at", {{"far", algo::format_number(r.far)}});
     d->AddText(ImVec2(x1 - ImGui::CalcTextSize(far_text.c_str()).x, y + 10), IM_COL32(200, 200, 200, 255), far_text.c_str());
-    d->AddText(ImVec2(x0, at.y), IM_COL32(200, 200, 200, 255),
-               "stored depth codes against eye distance: a tick every 1/64 of the codes");
+    d->AddText(ImVec2(x0, at.y), IM_COL32(200, 200, 200, 255), tr("zbuffer.axis").c_str());
     if (v.pixel_x >= 0) {  // the pixel under test on the same axis
         const float x = x_of(std::clamp(eye_distance(v.pixel_depth, r), r.near, r.far));
         d->AddTriangleFilled(ImVec2(x, y - 10), ImVec2(x - 6, y - 20), ImVec2(x + 6, y - 20), IM_COL32(255, 230, 90, 255));
@@ -94,8 +101,8 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     const FatGrid grid = zbuffer_frame_grid(s, x, y, w, h);
     const float cell = grid.cell;
     const ImVec2 frame(grid.x0, grid.y0), depth(frame.x + cell * float(v.viewport.width) + margin, frame.y);
-    d->AddText(ImVec2(frame.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "frame buffer");
-    d->AddText(ImVec2(depth.x, y + margin - 2), IM_COL32(220, 220, 220, 255), "depth buffer (bright = near)");
+    d->AddText(ImVec2(frame.x, y + margin - 2), IM_COL32(220, 220, 220, 255), tr("zbuffer.frame").c_str());
+    d->AddText(ImVec2(depth.x, y + margin - 2), IM_COL32(220, 220, 220, 255), tr("zbuffer.depth").c_str());
     const algo::Color background{26, 28, 33};
     const auto at = [&](int px, int py) { return std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px); };
     pixel_grid(d, frame, cell, v.viewport, [&](int px, int py) {
@@ -119,13 +126,13 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
 }
 
 void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout& l, UiActions& out) {
-    begin_column_box(l, Box::state, "Depth buffer");
+    begin_column_box(l, Box::state, (tr("zbuffer.title") + "###state").c_str());
     const ZView& v = s.view();
     int current = 0;
     for (std::size_t i = 0; i < formats.size(); ++i)
         if (formats[i] == v.format) current = int(i);
     ImGui::SetNextItemWidth(220);
-    if (ImGui::BeginCombo("format", std::string(algo::to_string(v.format)).c_str())) {
+    if (ImGui::BeginCombo((tr("zbuffer.format") + "###format").c_str(), std::string(algo::to_string(v.format)).c_str())) {
         for (std::size_t i = 0; i < formats.size(); ++i)
             if (ImGui::Selectable(std::string(algo::to_string(formats[i])).c_str(), int(i) == current))
                 out.depth_format = formats[i];
@@ -133,36 +140,36 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
     }
     ImGui::SameLine();
     bool three_d = in_3d;
-    if (ImGui::Checkbox("3D view", &three_d)) out.toggle_3d = true;
+    if (ImGui::Checkbox((tr("zbuffer.view_3d") + "###3d").c_str(), &three_d)) out.toggle_3d = true;
     float near = float(v.range.near), far = float(v.range.far);
     ImGui::SetNextItemWidth(150);
-    const bool near_moved = ImGui::SliderFloat("near", &near, 1e-3f, 10.0f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    const bool near_moved = ImGui::SliderFloat((tr("zbuffer.near") + "###near").c_str(), &near, 1e-3f, 10.0f, "%.4g", ImGuiSliderFlags_Logarithmic);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(150);
-    const bool far_moved = ImGui::SliderFloat("far", &far, 1.0f, 1e5f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    const bool far_moved = ImGui::SliderFloat((tr("zbuffer.far") + "###far").c_str(), &far, 1.0f, 1e5f, "%.4g", ImGuiSliderFlags_Logarithmic);
     if ((near_moved || far_moved) && near < far) out.depth_range = algo::DepthRange{near, far};
-    ImGui::TextColored(dim_text, "%s stored values are nearer · far code %llu", algo::smaller_is_nearer(v.format) ? "smaller" : "larger",
-                       (unsigned long long)v.far_code);
+    wrapped_text(tr(algo::smaller_is_nearer(v.format) ? "zbuffer.smaller_nearer" : "zbuffer.larger_nearer", {{"far", std::to_string(v.far_code)}}),
+                 dim_text);
     // The distance the resolvable step is shown for: the user's choice, kept in ImGui's own widget storage as a
     // slider's value is (the geometric mean of near and far until moved)
     ImGuiStorage* storage = ImGui::GetStateStorage();
     const ImGuiID probe_id = ImGui::GetID("probe distance");
     float probe = storage->GetFloat(probe_id, float(std::sqrt(v.range.near * v.range.far)));
     ImGui::SetNextItemWidth(150);
-    if (ImGui::SliderFloat("distance", &probe, float(v.range.near), float(v.range.far), "%.4g", ImGuiSliderFlags_Logarithmic))
+    if (ImGui::SliderFloat((tr("zbuffer.distance") + "###distance").c_str(), &probe, float(v.range.near), float(v.range.far), "%.4g", ImGuiSliderFlags_Logarithmic))
         storage->SetFloat(probe_id, probe);
     const double z = std::clamp(double(probe), v.range.near, v.range.far);
     ImGui::SameLine();
-    ImGui::Text("resolvable step there: %.4g", algo::resolvable_step(v.format, z, v.range));
+    ImGui::TextUnformatted(tr("zbuffer.step", {{"step", g4(algo::resolvable_step(v.format, z, v.range))}}).c_str());
+    const auto n = [](auto value) { return std::to_string(value); };
     if (v.pixel_x >= 0) {
         const double zp = eye_distance(v.pixel_depth, v.range);
-        ImGui::TextColored(dim_text, "at the pixel under test, z = %.4g: %.4g", zp, algo::resolvable_step(v.format, zp, v.range));
+        wrapped_text(tr("zbuffer.step_at_pixel", {{"z", g4(zp)}, {"step", g4(algo::resolvable_step(v.format, zp, v.range))}}), dim_text);
+        wrapped_text(tr("zbuffer.pixel", {{"x", n(v.pixel_x)}, {"y", n(v.pixel_y)}, {"new", n(v.incoming)},
+                                          {"relation", v.incoming < v.stored ? "<" : "≥"}, {"stored", n(v.stored)}}));
     }
-    if (v.pixel_x >= 0)
-        ImGui::Text("pixel (%d, %d): new %llu %s stored %llu", v.pixel_x, v.pixel_y, (unsigned long long)v.incoming,
-                    v.incoming < v.stored ? "<" : "≥", (unsigned long long)v.stored);
-    ImGui::TextColored(dim_text, "%llu tested · %llu written · %zu pixels unlike the ray cast", (unsigned long long)v.tested,
-                       (unsigned long long)v.written, s.pixels_unlike_ray_cast());
+    wrapped_text(tr("zbuffer.counts", {{"tested", n(v.tested)}, {"written", n(v.written)}, {"unlike", n(s.pixels_unlike_ray_cast())}}),
+                 dim_text);
     end_column_box(l, Box::state);
 }
 

@@ -7,6 +7,8 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -47,14 +49,14 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
     for (const auto* part : {v.a.get(), v.b.get()})
         for (std::size_t k = 0; k < part->depth.size(); ++k)
             if (part->polygon[k] >= 0) shade.lo = std::min(shade.lo, part->depth[k]), shade.hi = std::max(shade.hi, part->depth[k]);
-    const char* titles[3][2] = {{"part A: colours (first half)", "part A: depth buffer (white: near)"},
-                                {"part B: colours (the rest)", "part B: depth buffer"},
-                                {"merged: the nearer of A and B", "merged: the nearer depth"}};
+    const std::string titles[3][2] = {{tr("zmerge.a_colours"), tr("zmerge.a_depth")},
+                                      {tr("zmerge.b_colours"), tr("zmerge.b_depth")},
+                                      {tr("zmerge.merged_colours"), tr("zmerge.merged_depth")}};
     for (int part = 0; part < 3; ++part)
         for (int kind = 0; kind < 2; ++kind) {
             const int column = wide ? part : kind, row = wide ? kind : part;
             const ImVec2 o(x + margin + float(column) * (cell * W + margin), y + margin + title + float(row) * (cell * H + margin + title));
-            d->AddText(ImVec2(o.x, o.y - title), IM_COL32(220, 220, 220, 255), titles[part][kind]);
+            d->AddText(ImVec2(o.x, o.y - title), IM_COL32(220, 220, 220, 255), titles[part][kind].c_str());
             pixel_grid(d, o, cell, v.viewport, [&](int px, int py) {
                 const std::size_t k = at(px, py);
                 const bool unmerged = v.merged[k] == -2;
@@ -78,13 +80,13 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
 }
 
 void zmerge_state_panel(const ZMergeSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, "Merge");
+    begin_column_box(l, Box::state, (tr("zmerge.title") + "###state").c_str());
     const ZMergeView& v = s.view();
-    ImGui::TextColored(dim_text, "%s · smaller codes are nearer · on a tie B stays",
-                       std::string(algo::to_string(s.lesson().depth_format)).c_str());
+    const auto n = [](auto value) { return std::to_string(value); };
+    wrapped_text(tr("zmerge.rule", {{"format", std::string(algo::to_string(s.lesson().depth_format))}}), dim_text);
     if (v.x >= 0)
-        ImGui::Text("pixel (%d, %d): Za = %u, Zb = %u → %s", v.x, v.y, v.depth_a, v.depth_b, v.from_a ? "A" : "B");
-    ImGui::Text("%llu pixels from A · %llu from B", (unsigned long long)v.from_a_count, (unsigned long long)v.from_b_count);
+        wrapped_text(tr("zmerge.pixel", {{"x", n(v.x)}, {"y", n(v.y)}, {"za", n(v.depth_a)}, {"zb", n(v.depth_b)}, {"from", v.from_a ? "A" : "B"}}));
+    wrapped_text(tr("zmerge.counts", {{"a", n(v.from_a_count)}, {"b", n(v.from_b_count)}}));
     end_column_box(l, Box::state);
 }
 
