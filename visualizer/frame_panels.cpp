@@ -78,7 +78,8 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
     if (const LessonScript* script = lp.classroom.script())
         for (std::size_t k = 0; k < script->places().size() && k < s.lesson().chapters.size(); ++k)
             if (const auto at = script->places()[k].starts)
-                marks.push_back({*at, s.lesson().chapters[k].question.has_value(), s.lesson().chapters[k].title});
+                marks.push_back({*at, s.lesson().chapters[k].question.has_value(),
+                                 in_language(s.lesson().chapters[k].titles, lp.classroom.language(), s.lesson().languages)});
     timeline_panel(s, lp.playback, open ? open->choices.size() : 0, s.lesson().chapters.empty() ? "" : language_hint(lp.classroom),
                    marks, layout, actions);
 }

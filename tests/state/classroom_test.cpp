@@ -213,3 +213,27 @@ TEST_CASE("the student's language is kept across lessons; the narration follows 
     room.choose_language("fr");
     CHECK(room.language() == "en");
 }
+
+TEST_CASE("a lesson's and its chapters' titles and summary may be given per language, like the narration", "[lesson][errors]") {
+    const Lesson shipped = load_lesson(HSR_SOURCE_DIR "/lessons/13_depth_sort_cycle.toml");
+    CHECK(shipped.title == "Depth sort: three bars in a cycle");  // the first language's, for the command line
+    CHECK(in_language(shipped.titles, "de", shipped.languages) == "Tiefensortierung: drei Balken im Zyklus");
+    REQUIRE_FALSE(shipped.chapters.empty());
+    CHECK(shipped.chapters[0].title == "Q must go first");
+    CHECK(in_language(shipped.chapters[0].titles, "de", shipped.languages) == "Q muss zuerst");
+    CHECK(in_language(shipped.chapters[0].titles, "fr", shipped.languages) == "Q must go first");  // else the first language
+
+    const std::string scene = "scene = \"" HSR_SOURCE_DIR "/assets/scenes/cs_segments.toml\"\nalgorithm = \"cohen_sutherland\"\n";
+    const Lesson both = load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml",
+                                         "languages = [\"en\", \"de\"]\ntitle = { en = \"Clip\", de = \"Clippen\" }\nsummary.de = \"Nur deutsch\"\n" + scene);
+    CHECK(both.title == "Clip");
+    CHECK(in_language(both.summaries, "de", both.languages) == "Nur deutsch");
+    CHECK(both.summary == "Nur deutsch");  // no English summary: the one there is
+    // a language the lesson does not list, a title that is no text, and no title at all: errors naming the field
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml", "title = { en = \"a\", fr = \"b\" }\n" + scene),
+                      Catch::Contains("t.toml:1") && Catch::Contains("title.fr"));
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml", "title = 3\n" + scene), Catch::Contains("title"));
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml", scene), Catch::Contains("title"));
+    CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml", "title = \"t\"\n" + scene + "[[chapters]]\nstep = 1\ntitle.xx = \"?\"\n"),
+                      Catch::Contains("chapters[0].title.xx"));
+}

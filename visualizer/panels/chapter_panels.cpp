@@ -26,7 +26,8 @@ void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* n
         wrapped_text(tr("chapters.no_questions"));
     if (!lesson.chapters.empty()) {
         std::string showed = tr("chapters.showed");
-        for (std::size_t k = 0; k < lesson.chapters.size(); ++k) showed += (k ? " · " : " ") + lesson.chapters[k].title;
+        for (std::size_t k = 0; k < lesson.chapters.size(); ++k)
+            showed += (k ? " · " : " ") + in_language(lesson.chapters[k].titles, room.language(), lesson.languages);
         wrapped_text(showed, dim_text);
     }
     if (next) wrapped_text(tr("chapters.next", {{"title", next->title}}), dim_text);
@@ -40,16 +41,16 @@ void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* n
 void chapter_lesson_panel(const Session& s, const Classroom& room, const std::string& detail, const PanelLayout& l) {
     const Lesson& lesson = s.lesson();
     begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
-    wrapped_text(lesson.title);
+    wrapped_text(in_language(lesson.titles, room.language(), lesson.languages));
     wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(lesson.algorithm.id)}, {"difficulty", std::to_string(lesson.difficulty)}, {"detail", detail}}),
                  dim_text);
     ImGui::Separator();
     if (const auto c = room.chapter(s)) {
         const Chapter& ch = lesson.chapters[*c];
-        wrapped_text(std::to_string(*c + 1) + "/" + std::to_string(lesson.chapters.size()) + "  " + ch.title, chapter_colour);
+        wrapped_text(std::to_string(*c + 1) + "/" + std::to_string(lesson.chapters.size()) + "  " + in_language(ch.titles, room.language(), lesson.languages), chapter_colour);
         wrapped_text(reflow(in_language(ch.narration, room.language(), lesson.languages)));
     } else {
-        wrapped_text(reflow(lesson.summary), dim_text);
+        wrapped_text(reflow(in_language(lesson.summaries, room.language(), lesson.languages)), dim_text);
     }
     end_column_box(l, Box::lesson);
 }

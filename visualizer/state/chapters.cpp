@@ -2,7 +2,6 @@
 #include "state/chapters.h"
 
 namespace hsr::viz {
-namespace {
 
 Texts read_texts(const algo::TomlReader& r, const toml::node* n, const std::string& field, const std::vector<std::string>& languages) {
     Texts t;
@@ -23,6 +22,8 @@ Texts read_texts(const algo::TomlReader& r, const toml::node* n, const std::stri
     }
     return t;
 }
+
+namespace {
 
 EventPattern read_pattern(const algo::TomlReader& r, const toml::table& t, std::string_view kind_key, const std::string& field) {
     EventPattern p{r.text(t, kind_key, field), {}};
@@ -56,7 +57,8 @@ std::vector<Chapter> read_chapters(const algo::TomlReader& r, const toml::table&
         r.only_keys(*t, f, {"title", "when", "match", "step", "pause", "opens", "narration", "question"});
         Chapter c;
         c.line = int(t->source().begin.line);
-        c.title = r.text(*t, "title", f, "");
+        c.titles = read_texts(r, t->get("title"), algo::join(f, "title"), languages);
+        c.title = in_language(c.titles, languages.front(), languages);
         c.narration = read_texts(r, t->get("narration"), algo::join(f, "narration"), languages);
         c.pause = r.boolean(*t, "pause", f, false);
         c.opens = r.boolean(*t, "opens", f, false);

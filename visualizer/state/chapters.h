@@ -4,7 +4,7 @@
 //
 //   languages = ["en", "de"]                 # the first is the default
 //   [[chapters]]
-//   title = "The outcodes"
+//   title = { en = "The outcodes", de = "Die Outcodes" }   # or one text, in the first language
 //   when = "OutcodeComputed"                 # an event kind; or step = 12
 //   match = { endpoint = "p2" }              # optional: fields the event must have (as its trace writes them)
 //   pause = true
@@ -51,7 +51,8 @@ struct Question {
 };
 
 struct Chapter {
-    std::string title;
+    std::string title;  // in the lesson's first language (the checks, the course list)
+    Texts titles;       // by language
     Texts narration;
     std::optional<EventPattern> when;     // the first event like this starts the chapter …
     std::optional<std::size_t> step;      // … or this step
@@ -61,6 +62,8 @@ struct Chapter {
     int line = 0;                         // in the lesson file
 };
 
+// `field`'s texts: one text (the first language's) or a table of texts by language, each of `languages`.
+Texts read_texts(const algo::TomlReader& r, const toml::node* n, const std::string& field, const std::vector<std::string>& languages);
 std::vector<Chapter> read_chapters(const algo::TomlReader& r, const toml::table& root, std::vector<std::string>& languages);
 
 // Does an event (its trace line, parsed) fit the pattern? Values compare as text (strings without quotes).

@@ -45,6 +45,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         lesson.scene = algo::read_scene(r);
         lesson.title = lesson.scene.name;
         lesson.summary = lesson.scene.description;
+        lesson.titles = {{"en", lesson.title}}, lesson.summaries = {{"en", lesson.summary}};
         const std::string fallback = lesson.scene.polygons.empty() ? "cohen_sutherland" : "sutherland_hodgman";
         // (a scene plays with a clipping machine unless --algorithm names another)
         lesson.algorithm = algorithm_named(nullptr, nullptr, algorithm.value_or(fallback), path);
@@ -54,8 +55,11 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
 
     r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
-    lesson.title = r.text(root, "title", "");
-    lesson.summary = r.text(root, "summary", "", "");
+    lesson.titles = read_texts(r, root.get("title"), "title", lesson.languages);
+    if (lesson.titles.empty()) r.fail(&root, "title", "a lesson needs title = \"…\"");
+    lesson.title = in_language(lesson.titles, lesson.languages.front(), lesson.languages);
+    lesson.summaries = read_texts(r, root.get("summary"), "summary", lesson.languages);
+    lesson.summary = in_language(lesson.summaries, lesson.languages.front(), lesson.languages);
     lesson.algorithm = algorithm_named(&r, root.get("algorithm"), algorithm.value_or(r.text(root, "algorithm", "")), path);
     lesson.difficulty = int(r.integer(root, "difficulty", "", 1));
     if (lesson.difficulty < 1 || lesson.difficulty > 5)

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // A lesson file (lessons/NN_topic.toml) names an algorithm and a scene:
 //
-//   title = "3D Cohen–Sutherland line clipping"
+//   title = "3D Cohen–Sutherland line clipping"   # or { en = "…", de = "…" }, as the narration (chapters.h)
 //   algorithm = "cohen_sutherland"          # an id of algorithms/registry.cpp
 //   scene = "../assets/scenes/cs_segments.toml"   # relative to the lesson file
 //   difficulty = 1                           # 1 … 5
 //   prerequisites = []                       # lesson file names
-//   summary = "…"
+//   summary = "…"                            # or { en = "…", de = "…" }
 //   splitter = "balanced"                  # BSP lessons only
 //   format = "int16"                       # z-buffer lessons: the depth format (depth_format.h's format_id)
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
@@ -35,8 +35,9 @@ namespace hsr::viz {
 
 struct Lesson {
     std::string source;  // the lesson (or scene) file
-    std::string title;
+    std::string title;    // in the first language (the command line, the course list)
     std::string summary;
+    Texts titles, summaries;  // by language (the window shows the student's)
     algo::AlgorithmInfo algorithm;
     int difficulty = 1;
     std::vector<std::string> prerequisites;

@@ -18,11 +18,17 @@ namespace {
 
 // Every text the window shows of a lesson, with the field it comes from.
 std::vector<std::pair<std::string, std::string>> lesson_texts(const Lesson& l) {
-    std::vector<std::pair<std::string, std::string>> texts{{"title", l.title}, {"summary", l.summary}};
+    std::vector<std::pair<std::string, std::string>> texts;
+    // a field given in one language is named as the file most likely wrote it: title = "…"
+    const auto add = [&](const std::string& field, const Texts& by_language) {
+        for (const auto& [language, text] : by_language) texts.emplace_back(by_language.size() == 1 ? field : field + "." + language, text);
+    };
+    add("title", l.titles);
+    add("summary", l.summaries);
     for (std::size_t k = 0; k < l.chapters.size(); ++k) {
         const Chapter& c = l.chapters[k];
         const std::string at = "chapters[" + std::to_string(k) + "]";
-        texts.emplace_back(at + ".title", c.title);
+        add(at + ".title", c.titles);
         for (const auto& [language, text] : c.narration) texts.emplace_back(at + ".narration." + language, text);
         if (!c.question) continue;
         for (const auto& [language, text] : c.question->ask) texts.emplace_back(at + ".question.ask." + language, text);
