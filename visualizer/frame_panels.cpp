@@ -70,7 +70,7 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
     if (lp.show_keys) keys_panel(layout);
     if (lp.show_presets)
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
-    if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, layout, actions);
+    if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, lp.classroom.chosen_language(), layout, actions);
     toast_panel(lp.toasts, seconds_now(), layout);
     narration_panel(s, layout);
     const Question* open = lp.classroom.open_question(s);

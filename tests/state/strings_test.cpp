@@ -10,7 +10,9 @@
 
 #include "catch.h"
 #include "sayings.h"
+#include "state/course.h"
 #include "state/families.h"
+#include "state/practice/practice.h"
 #include "state/strings.h"
 
 using namespace hsr::viz;
@@ -27,8 +29,11 @@ TEST_CASE("the shipped catalogues: English and German, the same keys, the same v
 
 TEST_CASE("every key the window's code asks for is in the English catalogue", "[strings]") {
     const Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
-    // every "section.key" literal in a tr( call, also the two sides of a choice: tr(right ? "a.yes" : "a.no")
+    // every "section.key" literal in a tr( call, also the two sides of a choice: tr(right ? "a.yes" : "a.no"); and
+    // every literal naming one of the catalogue's sections anywhere (a table of keys: {"Space", "keys.play"})
     const std::regex call(R"re(\btr\(([^;]*))re"), key_literal(R"re("([a-z_]+\.[a-z_.]+)")re");
+    std::set<std::string> sections;
+    for (const std::string& key : s.keys("en")) sections.insert(key.substr(0, key.find('.')));
     std::set<std::string> asked;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(HSR_SOURCE_DIR "/visualizer")) {
         if (entry.path().extension() != ".cpp" && entry.path().extension() != ".h") continue;
@@ -41,12 +46,35 @@ TEST_CASE("every key the window's code asks for is in the English catalogue", "[
             for (auto k = std::sregex_iterator(args.begin(), args.end(), key_literal); k != std::sregex_iterator(); ++k)
                 asked.insert((*k)[1]);
         }
+        for (auto k = std::sregex_iterator(source.begin(), source.end(), key_literal); k != std::sregex_iterator(); ++k) {
+            const std::string key = (*k)[1];
+            if (sections.contains(key.substr(0, key.find('.')))) asked.insert(key);
+        }
     }
     CHECK(asked.size() >= 20);  // the migration is real: the timeline, the boxes, the practice box
     for (const std::string& key : asked) {
         INFO(key);
         CHECK(s.has(key));
     }
+}
+
+TEST_CASE("the names the code writes in English (topics, practice topics) are in the catalogue's [names]", "[strings]") {
+    Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
+    std::set<std::string> names{"Lessons that cannot be loaded"};
+    for (const CourseLesson& l : load_course()) names.insert(l.topic);
+    for (const practice::Topic& t : practice::topics()) names.insert(std::string(t.title));
+    CHECK(names.size() >= 20);
+    s.use("de");
+    std::size_t translated = 0;
+    for (const std::string& name : names) {
+        INFO(name);
+        CHECK(s.has("names." + name));
+        translated += s.name(name) != name;  // German keeps a few loan words: "Clipping", "Culling"
+    }
+    CHECK(translated + 2 >= names.size());
+    s.use("en");
+    CHECK(s.name("Depth sort") == "Depth sort");
+    CHECK(s.name("no such name") == "no such name");
 }
 
 TEST_CASE("a template names its values: filled in any order, a missing one left as written", "[strings]") {

@@ -3,32 +3,54 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <utility>
+
+#include "state/strings.h"
 
 namespace hsr::viz {
 
 void keys_panel(const PanelLayout& l) {
+    // each key with what it does (the catalogue's [keys], in the student's language)
     static constexpr std::pair<const char*, const char*> rows[] = {
-        {"Space", "play / pause"},          {"→  ←", "one Step forward / back"},
-        {"Shift+→  Shift+←", "one event (micro-step)"}, {"Home  End", "first / last step"},
-        {"PageDown  PageUp", "next / previous chapter"}, {"N  Shift+N", "next / previous lesson"}, {"1 … 9", "answer the open question"},
-        {"L", "narration language"},       {"P", "presets: extreme cases, a random scene (0), back (B)"},
-        {"X", "practice: exercises the machine grades (1 … 9 or a typed number, Enter: next)"},
-        {"R", "error against run time for this algorithm's family"},       {"V", "the other view: 3D, the camera's, the walk-through; in a 2D BSP plan, drive the eye with the arrows"},
-        {"F5", "reload the lesson (edits reload by themselves)"}, {"E", "export PNG, trace and scene to hsrviz-export/"},
-        {"Ctrl+Z  Ctrl+Y  S", "undo, redo, save an edited 2D scene"}, {"F1  Esc", "show / hide these keys"}, {"[  ]", "panel column narrower / wider (remembered)"},
-        {"Ctrl+=  Ctrl+−  Ctrl+0", "larger / smaller type and panels, back to the start"},
-        {"drag, wheel", "orbit and zoom the 3D view; drag an eye or a segment's end in 2D"},
-        {"Shift+drag, right-click", "2D scenes: a new segment; z-buffer pixels: a new triangle; delete what is clicked"},
+        {"Space", "keys.play"},
+        {"→  ←", "keys.step"},
+        {"Shift+→  Shift+←", "keys.micro"},
+        {"Home  End", "keys.ends"},
+        {"PageDown  PageUp", "keys.chapter"},
+        {"N  Shift+N", "keys.lesson"},
+        {"1 … 9", "keys.answer"},
+        {"L", "keys.language"},
+        {"P", "keys.presets"},
+        {"X", "keys.practice"},
+        {"R", "keys.report"},
+        {"V", "keys.view"},
+        {"F5", "keys.reload"},
+        {"E", "keys.export"},
+        {"Ctrl+Z  Ctrl+Y  S", "keys.edit"},
+        {"F1  Esc", "keys.keys"},
+        {"[  ]", "keys.column"},
+        {"Ctrl+=  Ctrl+−  Ctrl+0", "keys.type_size"},
+        {"drag, wheel", "keys.drag"},
+        {"Shift+drag, right-click", "keys.draw"},
     };
-    ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::Begin("Keys", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+    // centred on the view, never wider than it (a long translation wraps in its column rather than leave the screen)
+    const float view_w = l.width - l.side, view_h = l.height - l.bottom;
+    ImGui::SetNextWindowPos(ImVec2(view_w / 2, view_h / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(view_w - 24, 46 * ImGui::GetFontSize()), 0), ImGuiCond_Always);  // 0: fit the height
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(view_w - 24, view_h - 24));
+    ImGui::Begin((tr("keys.title") + "###keys").c_str(), nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoResize |
+                                                             ImGuiWindowFlags_NoScrollbar);  // its height fits the rows (the wheel still scrolls)
+    float key_w = 0;
+    for (const auto& [k, what] : rows) key_w = std::max(key_w, ImGui::CalcTextSize(k).x);
     if (ImGui::BeginTable("keys", 2)) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, key_w);
+        ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& [k, what] : rows) {
             ImGui::TableNextColumn();
             ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%s", k);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(what);
+            ImGui::TextWrapped("%s", tr(what).c_str());
         }
         ImGui::EndTable();
     }

@@ -10,7 +10,7 @@
 
 namespace hsr::viz {
 
-void lesson_menu(const std::vector<CourseLesson>& course, const std::string& playing, std::size_t cursor,
+void lesson_menu(const std::vector<CourseLesson>& course, const std::string& playing, std::size_t cursor, const std::string& language,
                  const PanelLayout& layout, UiActions& out);
 
 }  // namespace hsr::viz

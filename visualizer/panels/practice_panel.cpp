@@ -23,9 +23,10 @@ void chooser(const practice::PracticeMode& mode, UiActions& out) {
     std::uint64_t series = mode.series();
     bool changed = false;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
-    if (ImGui::BeginCombo("##topic", std::string(all[topic].title).c_str())) {
+    const Strings& words = window_strings();
+    if (ImGui::BeginCombo("##topic", words.name(all[topic].title).c_str())) {
         for (std::size_t k = 0; k < all.size(); ++k)
-            if (ImGui::Selectable(std::string(all[k].title).c_str(), k == topic)) topic = k, changed = true;
+            if (ImGui::Selectable(words.name(all[k].title).c_str(), k == topic)) topic = k, changed = true;
         ImGui::EndCombo();
     }
     ImGui::TextUnformatted(tr("practice.level").c_str());

@@ -16,11 +16,12 @@ std::vector<CourseLesson> load_course() {
         CourseLesson c{path, std::filesystem::path(path).filename().string()};
         try {
             const Lesson l = load_lesson(path);
-            c.title = l.title, c.algorithm = std::string(l.algorithm.id), c.difficulty = l.difficulty;
+            c.title = l.title, c.titles = l.titles, c.languages = l.languages, c.algorithm = std::string(l.algorithm.id), c.difficulty = l.difficulty;
             c.prerequisites = l.prerequisites;
             c.topic = std::string(with_family(l.algorithm, [](auto family) { return decltype(family)::Session::facts.topic; }));
         } catch (const std::exception& e) {
-            c.title = c.file, c.topic = "Lessons that cannot be loaded", c.problem = e.what();
+            c.title = c.file, c.titles = {{"en", c.file}}, c.languages = {"en"};
+            c.topic = "Lessons that cannot be loaded", c.problem = e.what();
         }
         course.push_back(std::move(c));
     }

@@ -6,11 +6,15 @@
 #include <string>
 #include <vector>
 
+#include "state/chapters.h"
+
 namespace hsr::viz {
 
 struct CourseLesson {
     std::string path, file;  // file: "05_bsp_traversal.toml"
-    std::string title, topic, algorithm;
+    std::string title, topic, algorithm;  // title in the lesson's first language
+    Texts titles;                          // by language
+    std::vector<std::string> languages;
     int difficulty = 0;
     std::vector<std::string> prerequisites;  // lesson file names
     std::string problem;                     // why it cannot be loaded ("" when it can): listed, never hidden

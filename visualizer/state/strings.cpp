@@ -139,6 +139,12 @@ std::string Strings::word(std::string_view english) const {
     return std::string(english);
 }
 
+std::string Strings::name(std::string_view english) const {
+    if (const auto c = catalogues_.find(language_); c != catalogues_.end())
+        if (const auto it = c->second.find("names." + std::string(english)); it != c->second.end()) return it->second;
+    return std::string(english);
+}
+
 std::string Strings::say(const algo::Phrase& phrase) const {
     if (!phrase.saying) return {};
     std::vector<algo::NamedValue> values = phrase.values;

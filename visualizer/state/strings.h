@@ -47,6 +47,9 @@ public:
     // A machine's word given in English, as a lesson's choice gives it ("entering"): in the language used when a
     // machine's term says it, else as given.
     std::string word(std::string_view english) const;
+    // A name the code writes in English (a topic, a practice topic's title) in the student's language: the
+    // catalogue's [names], else as written.
+    std::string name(std::string_view english) const;
     std::string english(std::string_view key) const;            // the English template as written ("" if none)
     std::vector<std::string> keys(const std::string& language) const;  // a catalogue's keys, sorted
     // Does the catalogue hold the key in English?
