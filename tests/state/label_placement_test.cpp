@@ -57,3 +57,21 @@ TEST_CASE("in a crowd, labels with no free spot are left out after the first few
     for (int k = 0; k < 60; ++k) spread.push_back({float(40 * (k % 10)), float(40 * (k / 10)), 20, 12});
     for (const Placed& q : place_labels(spread, 16)) CHECK(q.shown);
 }
+
+TEST_CASE("no label is placed on a part of the view an inset covers; a point under one is labelled above it", "[labels]") {
+    const ViewRect inset{20, 380, 300, 660};
+    // the usual spot (upper right) would reach into the inset: another spot is taken
+    const LabelBox beside{10, 390, 60, 14};
+    const Placed p = place_labels({beside}, 12, {inset})[0];
+    CHECK(p.shown);
+    const bool clear = p.left >= inset.right || p.left + beside.width <= inset.left || p.top >= inset.bottom || p.top + beside.height <= inset.top;
+    CHECK(clear);
+    // a point inside the inset ("to the eye" under the screen inset): its label sits just above the inset
+    const LabelBox under{150, 500, 200, 14};
+    const Placed q = place_labels({under}, 12, {inset})[0];
+    CHECK(q.shown);
+    CHECK(q.top + under.height <= inset.top);
+    CHECK(q.top >= inset.top - 3 * under.height);
+    // without the inset, it keeps its usual spot by its point
+    CHECK(place_labels({under})[0].top == 500 - 14);
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -45,6 +46,12 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
     d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour,
                tr("depth_sort.display_list").c_str());
     const float y = at.y + 22;
+    struct Note {
+        float x;
+        std::string text;
+        ImU32 colour;
+    };
+    std::vector<Note> notes;  // under the chips; drawn after them, a note wider than its chip never over the next one
     const auto place_chip = [&](std::uint32_t i, float target) {
         float& x = anim.x[i];
         if (std::isnan(x)) x = v.cut >= 0 && std::size_t(v.cut) < anim.x.size() && !std::isnan(anim.x[std::size_t(v.cut)])
@@ -63,14 +70,25 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
         if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_colour, ("#" + std::to_string(i)).c_str());
         const std::string note = int(i) == v.moved ? tr("depth_sort.moved_note") : int(i) == v.cycle ? tr("depth_sort.cycle_note")
                                  : int(i) == v.r   ? "R" : int(i) == v.q ? "Q" : "";
-        if (!note.empty()) d->AddText(ImVec2(a.x + 2, b.y + 2), int(i) == v.cycle ? cut_colour : text_colour, note.c_str());
+        if (!note.empty()) notes.push_back({a.x + 2, note, int(i) == v.cycle ? cut_colour : text_colour});
     };
     for (std::size_t k = 0; k < v.drawn.size(); ++k) place_chip(v.drawn[k], at.x + float(k) * (chip + 4));
     for (std::size_t k = 0; k < v.list.size(); ++k) place_chip(v.list[k], list_x0 + float(k) * (chip + 4));
+    // each note on the first line under the chips where it clears the note before it ("verschoben" is wider than a chip)
+    std::sort(notes.begin(), notes.end(), [](const Note& p, const Note& q) { return p.x < q.x; });
+    const float line = ImGui::GetTextLineHeight();
+    std::vector<float> line_ends;  // the right end of the last note on each line
+    for (const Note& note : notes) {
+        std::size_t row = 0;
+        while (row < line_ends.size() && note.x < line_ends[row] + 4) ++row;
+        if (row == line_ends.size()) line_ends.push_back(0);
+        line_ends[row] = note.x + ImGui::CalcTextSize(note.text.c_str()).x;
+        d->AddText(ImVec2(note.x, y + 30 + float(row) * line), note.colour, note.text.c_str());
+    }
     if (v.cut >= 0) {
         const std::string cut = tr("depth_sort.was_cut", {{"polygon", std::to_string(v.cut)}, {"front", std::to_string(v.polygons.size() - 2)},
                                                           {"back", std::to_string(v.polygons.size() - 1)}});
-        d->AddText(ImVec2(at.x, y + 48), cut_colour, cut.c_str());
+        d->AddText(ImVec2(at.x, y + 32 + float(std::max<std::size_t>(line_ends.size(), 1)) * line), cut_colour, cut.c_str());
     }
 }
 
@@ -126,17 +144,27 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
 
 }  // namespace
 
+DepthSortInsets depth_sort_insets(float x, float y, float w, float h) {
+    // the two insets share the view's lower part: as large as leaves the canvas in the middle its room
+    const float size = std::clamp(std::min(w * 0.34f, h * 0.40f), 110.0f, 420.0f);
+    return {size, ImVec2(x + 34, y + h - size - 34), ImVec2(x + w - size - 16, y + h - size - 34)};
+}
+
+std::vector<ViewRect> DepthSortInsets::covered() const {
+    const float title = 22;  // the line above each square
+    return {{screen.x, screen.y - title, screen.x + size, screen.y + size}, {painted.x, painted.y - title, painted.x + size, painted.y + size}};
+}
+
 void depth_sort_canvas(const DepthSortSession& s, ChipPlaces& chips, const algo::Image& painted, float x, float y, float w,
                        float h, bool animate) {
     ImDrawList* d = begin_canvas("##depth sort canvas", x, y, w, h);
     display_list(s, chips, d, ImVec2(x + 16, y + 10), w - 32, animate);
-    // the two insets share the view's lower part: as large as leaves the canvas in the middle its room
-    const float size = std::clamp(std::min(w * 0.34f, h * 0.40f), 110.0f, 420.0f);
-    screen_inset(s, d, {ImVec2(x + 34, y + h - size - 34), size});
-    const ImVec2 at(x + w - size - 16, y + h - size - 34);
+    const DepthSortInsets insets = depth_sort_insets(x, y, w, h);
+    screen_inset(s, d, {insets.screen, insets.size});
+    const ImVec2 at = insets.painted;
     d->AddText(ImVec2(at.x, at.y - 20), text_colour,
                tr(s.view().front_to_back ? "depth_sort.drawn_so_far" : "depth_sort.painted_so_far").c_str());
-    draw_image(d, painted, at, ImVec2(size, size));
+    draw_image(d, painted, at, ImVec2(insets.size, insets.size));
     ImGui::End();
 }
 

@@ -203,7 +203,7 @@ void error_panel(const std::string& message, bool stopped, const PanelLayout& l,
     ImGui::End();
 }
 
-void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x, float y, float w, float h) {
+void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x, float y, float w, float h, const std::vector<ViewRect>& covered) {
     ImDrawList* d = ImGui::GetBackgroundDrawList();
     // on the screen, in the view; placed from the last given (the element under study is given last) so that
     // no label covers another
@@ -221,7 +221,7 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
         shown.push_back(&*it);
         boxes.push_back({sx, sy, size.x, size.y});
     }
-    const std::vector<Placed> at = place_labels(boxes);
+    const std::vector<Placed> at = place_labels(boxes, 12, covered);
     for (std::size_t k = 0; k < shown.size(); ++k) {
         if (!at[k].shown) continue;  // no free spot in a crowd of labels
         const Label& label = *shown[k];

@@ -7,9 +7,10 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "state/column_fit.h"
 #include "panels/ui_actions.h"
 #include "render/label.h"
+#include "state/column_fit.h"
+#include "state/label_placement.h"
 #include "state/session.h"
 
 namespace hsr::viz {
@@ -50,6 +51,7 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
 void error_panel(const std::string& message, bool stopped, const PanelLayout& layout, UiActions& out);
 
 // Labels of the 3D view, projected with the viewer's camera into the viewport (x, y, w, h in pixels, top-left).
-void draw_labels(const std::vector<Label>& labels, const glm::mat4& view_projection, float x, float y, float w, float h);
+void draw_labels(const std::vector<Label>& labels, const glm::mat4& view_projection, float x, float y, float w, float h,
+                 const std::vector<ViewRect>& covered = {});
 
 }  // namespace hsr::viz

@@ -22,6 +22,7 @@ public:
     void draw_scene(const DepthSortSession& s, SceneFrame& f) const {
         draw_depth_sort_view(s.view(), f.batches, f.labels);
         f.detail = tr("depth_sort.detail");
+        f.covered = depth_sort_insets(0, 0, f.view_w, f.view_h).covered();
     }
     void draw_panels(const DepthSortSession& s, PanelFrame& f) {
         // repainted only when what is drawn changes (a step, a seek, a reload): the list back to front, then what

@@ -47,6 +47,8 @@ struct SceneFrame {
     std::optional<glm::mat4> view_projection;  // a camera of the screen's own for the 3D view (else the orbit camera)
     float aspect = 1;                          // of the 3D view
     bool second_view = false;
+    float view_w = 0, view_h = 0;              // the 3D view's size
+    std::vector<ViewRect> covered;             // parts of the view the screen's canvases draw over: labels keep off
 };
 
 // What draw_panels draws into, after the 3D view.
