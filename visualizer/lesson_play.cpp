@@ -124,7 +124,8 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
     place_before_error.reset();
     family.reset();  // a new scene starts at its first step
     load(o);
-    tell("playing " + path + " with " + algorithm.value_or("the lesson's algorithm"));
+    tell("playing " + path + " with " + algorithm.value_or("the lesson's algorithm"),
+         algorithm ? tr("notes.playing_with", {{"file", path}, {"algorithm", *algorithm}}) : tr("notes.playing", {{"file", path}}));
 }
 
 void Lessonplay::toggle_practice(const AppOptions& o) {
@@ -248,10 +249,13 @@ void Lessonplay::toggle_report(const std::string& scenes_dir) {
 void Lessonplay::collect_report() {
     std::optional<BackgroundMeasurement::Outcome> done = measuring.take();
     if (!done) return;
-    if (!done->error.empty()) return tell(done->cancelled ? "measurement cancelled" : "could not measure: " + done->error);
+    if (!done->error.empty())
+        return done->cancelled ? tell("measurement cancelled", tr("notes.cancelled"))
+                               : tell("could not measure: " + done->error, tr("notes.not_measured", {{"error", done->error}}));
     report = std::move(done->rows);
     tell("measured " + std::to_string(report.size()) + " rows of error against run time" +
-         (session() ? " for " + std::string(session()->lesson().algorithm.id) : std::string()));
+             (session() ? " for " + std::string(session()->lesson().algorithm.id) : std::string()),
+         tr("notes.measured", {{"rows", std::to_string(report.size())}}));
 }
 
 void Lessonplay::cancel_report() {
@@ -260,17 +264,17 @@ void Lessonplay::cancel_report() {
     collect_report();
 }
 
-void Lessonplay::tell(const std::string& text) {
+void Lessonplay::tell(const std::string& text, const std::string& shown) {
     std::printf("hsrviz: %s\n", algo::printable(text, 2000).c_str());
     std::fflush(stdout);  // seen at once by whoever reads the terminal or a log (a watched reload, a test)
-    toasts.say(algo::printable(text, 2000), seconds_now());
+    toasts.say(algo::printable(shown.empty() ? text : shown, 2000), seconds_now());
 }
 
 void Lessonplay::save_edited(const algo::Scene& scene) {
     const std::string folder = output_folder("hsrviz-export");
     const std::string file = folder + "/" + std::filesystem::path(path).stem().string() + "-edited.toml";
     const bool ok = make_folder(folder) && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
-    tell((ok ? "saved the edited scene to " : "could not write ") + file);
+    tell((ok ? "saved the edited scene to " : "could not write ") + file, tr(ok ? "notes.saved" : "notes.not_written", {{"file", file}}));
 }
 
 void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) {
@@ -286,7 +290,8 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
     }
     if (a.reload || watch.changed(dt)) {
         load(o);
-        tell(error.empty() ? "reloaded " + path : "could not reload " + path + " (its error is shown)");
+        tell(error.empty() ? "reloaded " + path : "could not reload " + path + " (its error is shown)",
+             tr(error.empty() ? "notes.reloaded" : "notes.not_reloaded", {{"file", path}}));
     }
     if (course.empty()) course = load_course();
     if (a.toggle_menu) {
@@ -404,7 +409,9 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         playback.playing = false;
         classroom.attach(p);  // an edit's rerun may have stopped before the classroom followed it
         tell("stopped (" + stopped_by + ") after " + seconds_said(meter) + ", at step " + std::to_string(p.cursor()) + " of " +
-             std::to_string(p.known()) + " known so far");
+                 std::to_string(p.known()) + " known so far",
+             tr("notes.stopped", {{"by", stopped_by}, {"time", seconds_said(meter)}, {"step", std::to_string(p.cursor())},
+                                  {"known", std::to_string(p.known())}}));
     }
     classroom.close_revealed(p);
     with_family_screen([&](auto& s, auto& screen) { screen.after_step(s, p.cursor() != cursor, dt); });

@@ -93,8 +93,9 @@ struct Lessonplay {
     const CourseLesson* next_in_course() const;
     // S: the scene as edited, to hsrviz-export/NAME-edited.toml
     void save_edited(const algo::Scene& scene);
-    // Says what happened: on the terminal ("hsrviz: …") and for a few seconds in the window.
-    void tell(const std::string& text);
+    // Says what happened: on the terminal ("hsrviz: …", English, for logs and tests) and for a few seconds in the
+    // window, in the student's language where `shown` is given.
+    void tell(const std::string& text, const std::string& shown = {});
     // R: opens the report (measuring it off this thread the first time) or closes it (cancelling a measurement).
     void toggle_report(const std::string& scenes_dir);
     // The report's rows, once a measurement started by R is in (said in the window).

@@ -192,14 +192,13 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
 // ── [SECTION] error, labels ─────────────────────────────────────────────────────────────────────────────────
 void error_panel(const std::string& message, bool stopped, const PanelLayout& l, UiActions& out) {
     place(40, 40, l.width - 80, 220);
-    ImGui::Begin(stopped ? "The lesson was not opened##error" : "The lesson could not be loaded##error", nullptr, fixed);
+    ImGui::Begin((tr(stopped ? "error.stopped" : "error.broken") + "###error").c_str(), nullptr, fixed);
     ImGui::PushStyleColor(ImGuiCol_Text, bit_set);
     wrapped_text(message);
     ImGui::PopStyleColor();
     ImGui::Separator();
-    wrapped_text(stopped ? "Press F5 (or the button) to open it again, or M to choose another lesson."
-                         : "Fix the file and press F5 (or the button) to load it again.");
-    out.reload |= ImGui::Button(stopped ? "Open again (F5)" : "Reload (F5)");
+    wrapped_text(tr(stopped ? "error.how_stopped" : "error.how_broken"));
+    out.reload |= ImGui::Button((tr(stopped ? "error.open_again" : "error.reload") + "###reload").c_str());
     ImGui::End();
 }
 

@@ -3,15 +3,17 @@
 
 #include <imgui.h>
 
+#include "state/strings.h"
+
 namespace hsr::viz {
 
 void preset_panel(const std::vector<Preset>& presets, bool has_random, std::uint32_t next_seed, bool away_from_lesson,
                   const PanelLayout& l, UiActions& out) {
     ImGui::SetNextWindowPos(ImVec2((l.width - l.side) / 2, (l.height - l.bottom) / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSizeConstraints(ImVec2(420, 0), ImVec2(l.width - l.side - 40, l.height - l.bottom - 40));
-    ImGui::Begin("Presets: extreme cases and random scenes (P)", nullptr,
+    ImGui::Begin((tr("presets.title") + "###presets").c_str(), nullptr,
                  ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
-    if (presets.empty()) ImGui::TextDisabled("No extreme cases for this algorithm yet.");
+    if (presets.empty()) ImGui::TextDisabled("%s", tr("presets.none").c_str());
     for (std::size_t k = 0; k < presets.size(); ++k) {
         ImGui::PushID(int(k));
         const std::string label = (k < 9 ? std::to_string(k + 1) + "  " : "   ") + presets[k].name;
@@ -23,11 +25,11 @@ void preset_panel(const std::vector<Preset>& presets, bool has_random, std::uint
     }
     ImGui::Separator();
     if (has_random) {
-        const std::string label = "0  A random scene (seed " + std::to_string(next_seed) + ")";
+        const std::string label = "0  " + tr("presets.random", {{"seed", std::to_string(next_seed)}}) + "###random";
         if (ImGui::Button(label.c_str())) out.random_scene = true;
     }
-    if (away_from_lesson && ImGui::Button("B  Back to the lesson")) out.back_to_lesson = true;
-    ImGui::TextDisabled("The scene plays with the lesson's algorithm. Esc closes.");
+    if (away_from_lesson && ImGui::Button(("B  " + tr("presets.back") + "###back").c_str())) out.back_to_lesson = true;
+    ImGui::TextDisabled("%s", tr("presets.how").c_str());
     ImGui::End();
 }
 

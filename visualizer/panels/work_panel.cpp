@@ -6,6 +6,7 @@
 
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -13,7 +14,7 @@ void work_panel(const algo::WorkProgress& p, float width, float height) {
     const float box = std::min(width - 24, 36 * ImGui::GetFontSize());
     ImGui::SetNextWindowPos(ImVec2(width / 2, height / 2), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(box, 0));
-    ImGui::Begin("Working##work", nullptr, fixed | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
+    ImGui::Begin((tr("work.title") + "###work").c_str(), nullptr, fixed | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs);
     wrapped_text(p.sentence());
     // The bar: its share when the total is known, else a block sweeping to and fro (the window is alive)
     const float bar_w = ImGui::GetContentRegionAvail().x, bar_h = ImGui::GetFrameHeight();
@@ -29,7 +30,7 @@ void work_panel(const algo::WorkProgress& p, float width, float height) {
         draw->AddRectFilled(ImVec2(x, at.y), ImVec2(x + block, at.y + bar_h), ImGui::GetColorU32(highlight_bg));
     }
     ImGui::Dummy(ImVec2(bar_w, bar_h));
-    wrapped_text("Esc stops it.", dim_text);
+    wrapped_text(tr("work.stop"), dim_text);
     ImGui::End();
 }
 
