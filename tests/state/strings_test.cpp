@@ -146,6 +146,13 @@ TEST_CASE("the machines narrate in the language the window speaks; their traces 
     CHECK(lessons.size() >= 29);
     for (const std::filesystem::path& lesson : lessons) {
         auto session = make_session(load_lesson(lesson.string()));
+        // a lesson narrated in German has its titles in German too, its own and each chapter's
+        const Lesson& l = session->lesson();
+        if (std::find(l.languages.begin(), l.languages.end(), "de") != l.languages.end()) {
+            INFO(lesson.filename());
+            CHECK(l.titles.contains("de"));
+            for (const Chapter& c : l.chapters) CHECK((c.titles.contains("de") && c.narration.contains("de")));
+        }
         session->prefetch(prefetch_events);
         REQUIRE(session->complete());
         std::size_t translated = 0;

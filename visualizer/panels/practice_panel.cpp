@@ -50,7 +50,8 @@ void chooser(const practice::PracticeMode& mode, UiActions& out) {
 void choices(const practice::Exercise& e, UiActions& out) {
     const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     for (std::size_t i = 0; i < e.choices.size(); ++i) {
-        const std::string label = std::to_string(i + 1) + "  " + e.choices[i] + "##practice" + std::to_string(i);
+        // shown in the student's language where it is a word the catalogue or a machine has; answered as given
+        const std::string label = std::to_string(i + 1) + "  " + window_strings().word(e.choices[i]) + "##practice" + std::to_string(i);
         const float width = ImGui::CalcTextSize(label.c_str(), nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
         if (i > 0) {
             ImGui::SameLine();
@@ -81,9 +82,10 @@ void practice_panel(const practice::PracticeMode& mode, const PanelLayout& l, Ui
             }
         } else {
             // the deciding event's sentence is the narration's now: the player stands on it
-            wrapped_text(tr(*mode.right ? "practice.right" : "practice.not_quite", {{"given", mode.given}}), *mode.right ? right_colour : bit_set);
+            const Strings& words = window_strings();
+            wrapped_text(tr(*mode.right ? "practice.right" : "practice.not_quite", {{"given", words.word(mode.given)}}), *mode.right ? right_colour : bit_set);
             if (!*mode.right)
-                wrapped_text(tr("practice.machine", {{"answer", e->answer}, {"step", std::to_string(e->deciding_step + 1)}}));
+                wrapped_text(tr("practice.machine", {{"answer", words.word(e->answer)}, {"step", std::to_string(e->deciding_step + 1)}}));
             if (ImGui::Button((tr("practice.next") + "###next exercise").c_str())) out.practice_next = true;
         }
     }
