@@ -21,14 +21,15 @@ using algo::Vec3;
 constexpr double half_width = 3.5, half_height = 2.5, eye_z = 10, near_plane = 4, far_plane = 16;
 const Vec3 volume_lo(-half_width, -half_height, eye_z - far_plane), volume_hi(half_width, half_height, eye_z - near_plane);
 
-std::string number_text(double v) {
+// %g with a true minus sign (−), as the question's boxes print their corners
+std::string minus_sign_text(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", v);
     std::string t = text;
     if (t.front() == '-') t.replace(0, 1, "−");
     return t;
 }
-std::string point_text(const Vec3& p) { return "(" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + ")"; }
+std::string point_text(const Vec3& p) { return "(" + minus_sign_text(p.x) + ", " + minus_sign_text(p.y) + ", " + minus_sign_text(p.z) + ")"; }
 
 algo::Scene squares_scene(Dice& d, Level l) {
     algo::Scene scene;

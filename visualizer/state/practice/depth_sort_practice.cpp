@@ -24,12 +24,6 @@ struct SortTriangle {
     dvec3 corner[3];  // pixel x, pixel y (down), depth (away from the eye)
 };
 
-std::string number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
 // Corners on whole pixels (easy) or on a half-pixel grid; depths 2 … 9 in steps of 1 (easy) or 0.5. Hard draws the
 // second triangle around the first's middle, so that extents overlap and the planes or the split must decide.
 SortTriangle draw_triangle(Dice& d, Level l, std::optional<dvec2> around) {

@@ -20,11 +20,6 @@ struct Rect {
     double depth;
 };
 
-std::string number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
 std::string rect_text(int x0, int y0, int x1, int y1) {
     return "pixels x " + std::to_string(x0) + "…" + std::to_string(x1 - 1) + ", y " + std::to_string(y0) + "…" + std::to_string(y1 - 1);
 }

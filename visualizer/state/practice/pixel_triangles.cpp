@@ -12,12 +12,6 @@ namespace {
 using glm::dvec2;
 constexpr double eye_z = 10;  // the camera's; a triangle at world z is at distance 10 − z
 
-std::string number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
 // The signed area of (a, b, p), in pixels²: which side of the edge a → b the point p is on.
 double edge(dvec2 a, dvec2 b, dvec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 

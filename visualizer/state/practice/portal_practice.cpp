@@ -16,11 +16,6 @@ namespace {
 
 constexpr double room = 2;  // each room is room × room in the plan
 
-std::string number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
 std::string room_name(std::size_t k) { return std::string(1, char('A' + k)); }
 
 struct Opening {

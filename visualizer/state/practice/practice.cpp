@@ -89,6 +89,12 @@ bool grade(const Exercise& e, std::string_view reply) {
            e.choices[std::size_t(k - 1)] == e.answer;
 }
 
+std::string number_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
 std::string decimal_text(double v, int digits) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", digits, v);

@@ -67,6 +67,7 @@ bool grade(const Exercise& e, std::string_view reply);
 
 // A number as an answer: at most `digits` decimals, no trailing zeros ("0.4839", "0.8", "-3").
 std::string decimal_text(double v, int digits);
+std::string number_text(double v);  // %g: six significant digits, as a question prints its scene's numbers
 
 // The lesson file the window plays an exercise from: its algorithm, its stages, and its scene saved as `scene_file`
 // (a name beside the lesson file).

@@ -15,7 +15,7 @@ namespace {
 
 constexpr algo::DepthFormat format = algo::DepthFormat::int24;
 
-std::string number_text(double v) {
+std::string ten_digit_text(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.10g", v);  // 39.999953 must not print as 40
     return text;
@@ -86,10 +86,10 @@ std::optional<Tested> run(const algo::Scene& scene) {
 }
 
 std::string setting_text(const Drawn& s) {
-    return "A perspective camera with near = " + number_text(s.near) + " and far = " + number_text(s.far) +
+    return "A perspective camera with near = " + ten_digit_text(s.near) + " and far = " + ten_digit_text(s.far) +
            " stores depth in 24 bits as round((2^24 − 1)(a + b/z)), a = far/(far − near), b = far·near/(near − far). "
-           "Square 1 at distance z = " + number_text(s.farther) + " is drawn first, then square 2 at z = " +
-           number_text(s.nearer) + ", both facing the eye.";
+           "Square 1 at distance z = " + ten_digit_text(s.farther) + " is drawn first, then square 2 at z = " +
+           ten_digit_text(s.nearer) + ", both facing the eye.";
 }
 nlohmann::json given(const Drawn& s, const char* kind) {
     return {{"kind", kind}, {"near", s.near}, {"far", s.far}, {"bits", 24}, {"farther", s.farther}, {"nearer", s.nearer}};
