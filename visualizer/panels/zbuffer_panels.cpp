@@ -159,8 +159,11 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
     if (ImGui::SliderFloat((tr("zbuffer.distance") + "###distance").c_str(), &probe, float(v.range.near), float(v.range.far), "%.4g", ImGuiSliderFlags_Logarithmic))
         storage->SetFloat(probe_id, probe);
     const double z = std::clamp(double(probe), v.range.near, v.range.far);
+    // beside the slider when it fits there, else under it
+    const std::string step = tr("zbuffer.step", {{"step", g4(algo::resolvable_step(v.format, z, v.range))}});
     ImGui::SameLine();
-    ImGui::TextUnformatted(tr("zbuffer.step", {{"step", g4(algo::resolvable_step(v.format, z, v.range))}}).c_str());
+    if (ImGui::CalcTextSize(step.c_str()).x > ImGui::GetContentRegionAvail().x) ImGui::NewLine();
+    wrapped_text(step);
     const auto n = [](auto value) { return std::to_string(value); };
     if (v.pixel_x >= 0) {
         const double zp = eye_distance(v.pixel_depth, v.range);

@@ -6,6 +6,7 @@
 #include "render/backface_renderer.h"
 #include "screens/screen.h"
 #include "state/backface_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -20,7 +21,7 @@ public:
     }
     void draw_scene(const BackfaceSession& s, SceneFrame& f) const {
         draw_backface_view(s.view(), s.lesson().scene, f.batches, f.labels);
-        f.detail = std::string(algo::to_string(s.view().test)) + " test · eye at the scene camera";
+        f.detail = tr("backface.caption", {{"test", window_strings().say(algo::term(s.view().test))}});
     }
     void draw_panels(const BackfaceSession& s, PanelFrame& f) const { backface_state_panel(s, f.layout); }
 };

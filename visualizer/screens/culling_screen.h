@@ -8,6 +8,7 @@
 #include "render/culling_renderer.h"
 #include "screens/screen.h"
 #include "state/culling_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -26,9 +27,9 @@ public:
     void draw_scene(const S& s, SceneFrame& f) const {
         const CullingWorld& w = *s.view().world;
         draw_culling_view(s.view(), f.batches, f.labels);
-        f.detail = std::to_string(w.scene.polygons.size()) + " primitives · " +
-                   (w.hierarchy.kind == algo::HierarchyKind::bvh ? "BVH" : "octree") +
-                   (f.second_view ? " · from the camera" : " · god's-eye view");
+        f.detail = tr(f.second_view ? "culling.caption_camera" : "culling.caption_above",
+                      {{"primitives", std::to_string(w.scene.polygons.size())},
+                       {"hierarchy", w.hierarchy.kind == algo::HierarchyKind::bvh ? tr("culling.bvh") : tr("culling.octree")}});
         if (f.second_view) {  // the view from the scene's own camera
             algo::Camera eye = w.scene.camera;
             eye.aspect = f.aspect;

@@ -7,16 +7,17 @@
 #include "render/portal_renderer.h"
 #include "screens/screen.h"
 #include "state/portal_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
-inline constexpr const char* portal_detail = "cells and portals · plan (x, y) is the world's (x, -z)";
+inline std::string portal_detail() { return tr("portals.caption"); }
 
 template <>
 class Screen<PvsSession> : public ScreenDefaults {
 public:
     void frame(const PvsSession&, OrbitCamera&) const {}  // no 3D view: the plan covers it
-    void draw_scene(const PvsSession&, SceneFrame& f) const { f.detail = portal_detail; }
+    void draw_scene(const PvsSession&, SceneFrame& f) const { f.detail = portal_detail(); }
     void draw_panels(const PvsSession& s, PanelFrame& f) const {
         portal_plan_canvas(s, 0, 0, f.view_w, f.view_h);
         pvs_state_panel(s, f.layout);
@@ -35,7 +36,7 @@ public:
     }
     void draw_scene(const PortalRenderSession& s, SceneFrame& f) const {
         if (f.second_view) draw_portal_view(s.view(), f.batches, f.labels);
-        f.detail = portal_detail;
+        f.detail = portal_detail();
     }
     void draw_panels(const PortalRenderSession& s, PanelFrame& f) const {
         if (!f.second_view) portal_plan_canvas(s, 0, 0, f.view_w, f.view_h, f.actions);

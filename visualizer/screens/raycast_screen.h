@@ -7,6 +7,7 @@
 #include "render/raycast_renderer.h"
 #include "screens/screen.h"
 #include "state/raycast_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -22,8 +23,8 @@ public:
     }
     void draw_scene(const RayCastSession& s, SceneFrame& f) const {
         draw_raycast_view(s.view(), s.scene(), f.batches, f.labels);
-        f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) +
-                   " rays · double precision · " + std::string(algo::to_string(s.view().acceleration));
+        f.detail = tr("raycast.caption", {{"width", std::to_string(s.lesson().grid.width)}, {"height", std::to_string(s.lesson().grid.height)},
+                                          {"acceleration", window_strings().say(algo::term(s.view().acceleration))}});
     }
     void draw_panels(const RayCastSession& s, PanelFrame& f) const {
         raycast_image(s, 0, 0, f.view_w, f.view_h);

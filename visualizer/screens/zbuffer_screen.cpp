@@ -5,6 +5,7 @@
 
 #include "render/frustum.h"
 #include "render/zbuffer_renderer.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
@@ -30,8 +31,8 @@ void Screen<ZBufferSession>::frame(const ZBufferSession& s, OrbitCamera& camera)
 
 void Screen<ZBufferSession>::draw_scene(const ZBufferSession& s, SceneFrame& f) const {
     if (f.second_view) draw_zbuffer_3d(s.view(), s.lesson().scene, f.batches, f.labels);
-    f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) + " pixels · " +
-               std::string(algo::to_string(s.format())) + " · top-left rule";
+    f.detail = tr("zbuffer.caption", {{"width", std::to_string(s.lesson().grid.width)}, {"height", std::to_string(s.lesson().grid.height)},
+                                      {"format", std::string(algo::to_string(s.format()))}});
 }
 
 void Screen<ZBufferSession>::draw_panels(const ZBufferSession& s, PanelFrame& f) const {

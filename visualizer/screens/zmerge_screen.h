@@ -5,6 +5,7 @@
 #include "panels/zmerge_panels.h"
 #include "screens/screen.h"
 #include "state/zmerge_session.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -13,8 +14,8 @@ class Screen<ZMergeSession> : public ScreenDefaults {
 public:
     void frame(const ZMergeSession&, OrbitCamera&) const {}  // no 3D view: the canvas covers it
     void draw_scene(const ZMergeSession& s, SceneFrame& f) const {
-        f.detail = std::to_string(s.lesson().grid.width) + "×" + std::to_string(s.lesson().grid.height) + " pixels · " +
-                   std::string(algo::to_string(s.lesson().depth_format));
+        f.detail = tr("zmerge.caption", {{"width", std::to_string(s.lesson().grid.width)}, {"height", std::to_string(s.lesson().grid.height)},
+                                         {"format", std::string(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ZMergeSession& s, PanelFrame& f) const {
         zmerge_canvas(s, 0, 0, f.view_w, f.view_h);
