@@ -32,7 +32,7 @@ public:
                        {"hierarchy", w.hierarchy.kind == algo::HierarchyKind::bvh ? tr("culling.bvh") : tr("culling.octree")}});
         if (f.second_view) {  // the view from the scene's own camera
             algo::Camera eye = w.scene.camera;
-            eye.aspect = f.aspect;
+            eye.aspect = f.aspect();
             f.view_projection = glm::mat4(algo::view_projection(eye));
         }
     }

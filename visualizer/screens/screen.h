@@ -45,9 +45,9 @@ struct SceneFrame {
     std::vector<Label>& labels;
     std::string detail;                        // the caption under the lesson's title
     std::optional<glm::mat4> view_projection;  // a camera of the screen's own for the 3D view (else the orbit camera)
-    float aspect = 1;                          // of the 3D view
     bool second_view = false;
-    float view_w = 0, view_h = 0;              // the 3D view's size
+    float view_w = 1, view_h = 1;              // the 3D view's size
+    float aspect() const { return view_w / view_h; }
     std::vector<ViewRect> covered;             // parts of the view the screen's canvases draw over: labels keep off
 };
 

@@ -26,6 +26,15 @@ void flatten(const toml::table& t, const std::string& prefix, std::map<std::stri
     }
 }
 
+// The template a language's catalogue has for `key`, if it has one.
+const std::string* entry(const std::map<std::string, std::map<std::string, std::string>, std::less<>>& catalogues,
+                         std::string_view language, const std::string& key) {
+    const auto catalogue = catalogues.find(language);
+    if (catalogue == catalogues.end()) return nullptr;
+    const auto it = catalogue->second.find(key);
+    return it == catalogue->second.end() ? nullptr : &it->second;
+}
+
 }  // namespace
 
 void Strings::add(const std::string& language, const std::string& path, std::string_view text) {
@@ -93,10 +102,8 @@ std::vector<std::string> Strings::languages() const {
 }
 
 std::string Strings::english(std::string_view key) const {
-    const auto english = catalogues_.find("en");
-    if (english == catalogues_.end()) return {};
-    const auto it = english->second.find(std::string(key));
-    return it == english->second.end() ? std::string() : it->second;
+    const std::string* t = entry(catalogues_, "en", std::string(key));
+    return t ? *t : std::string();
 }
 
 std::vector<std::string> Strings::keys(const std::string& language) const {
@@ -107,22 +114,19 @@ std::vector<std::string> Strings::keys(const std::string& language) const {
 }
 
 bool Strings::has(std::string_view key) const {
-    const auto english = catalogues_.find("en");
-    return english != catalogues_.end() && english->second.find(std::string(key)) != english->second.end();
+    return entry(catalogues_, "en", std::string(key)) != nullptr;
 }
 
 std::string Strings::text(std::string_view key, StringValues values) const {
-    for (const std::string* language : {&language_, static_cast<const std::string*>(nullptr)}) {
-        const auto catalogue = catalogues_.find(language ? *language : std::string("en"));
-        if (catalogue == catalogues_.end()) continue;
-        if (const auto it = catalogue->second.find(std::string(key)); it != catalogue->second.end()) return fill(it->second, values);
-    }
+    // the student's language, else English, else the key itself (a missing key shows, it does not crash)
+    for (const std::string_view language : {std::string_view(language_), std::string_view("en")})
+        if (const std::string* t = entry(catalogues_, language, std::string(key))) return fill(*t, values);
     return std::string(key);
 }
 
 std::string_view Strings::pattern_of(const algo::Saying& s) const {
-    if (const auto catalogue = catalogues_.find(language_); catalogue != catalogues_.end() && language_ != "en")
-        if (const auto it = catalogue->second.find("machine." + std::string(s.key)); it != catalogue->second.end()) return it->second;
+    if (language_ != "en")
+        if (const std::string* t = entry(catalogues_, language_, "machine." + std::string(s.key))) return *t;
     return s.english;  // English is the machine's own (the catalogue's English copy is checked equal to it by a test)
 }
 
@@ -131,8 +135,7 @@ std::string Strings::say(const algo::Saying& term) const { return std::string(pa
 std::string Strings::word(std::string_view english) const {
     if (language_ == "en") return std::string(english);
     // the catalogue's own [words] first (true, false), then the machines' terms
-    if (const auto c = catalogues_.find(language_); c != catalogues_.end())
-        if (const auto it = c->second.find("words." + std::string(english)); it != c->second.end()) return it->second;
+    if (const std::string* t = entry(catalogues_, language_, "words." + std::string(english))) return *t;
     for (const auto family : algo::machine_sayings())
         for (const algo::Saying& saying : family)
             if (saying.english == english && saying.english.find('{') == std::string_view::npos) return say(saying);
@@ -140,9 +143,8 @@ std::string Strings::word(std::string_view english) const {
 }
 
 std::string Strings::name(std::string_view english) const {
-    if (const auto c = catalogues_.find(language_); c != catalogues_.end())
-        if (const auto it = c->second.find("names." + std::string(english)); it != c->second.end()) return it->second;
-    return std::string(english);
+    const std::string* t = entry(catalogues_, language_, "names." + std::string(english));
+    return t ? *t : std::string(english);
 }
 
 std::string Strings::say(const algo::Phrase& phrase) const {
