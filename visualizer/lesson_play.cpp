@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <new>
 
 #include "scene/input_file.h"
@@ -17,6 +18,16 @@
 
 namespace hsr::viz {
 namespace {
+
+// An exercise's title in every language the window speaks.
+std::map<std::string, std::string> titles(const practice::Exercise& e) {
+    std::map<std::string, std::string> out;
+    const Strings& words = window_strings();
+    for (const std::string& language : words.languages())
+        out[language] = words.text_in(language, "practice.lesson_title",
+                                      {{"topic", e.topic}, {"series", std::to_string(e.series)}, {"number", std::to_string(e.index + 1)}});
+    return out;
+}
 
 std::string seconds_said(const algo::WorkMeter& meter) {  // "3.1 s"
     char b[32];
@@ -158,7 +169,7 @@ void Lessonplay::play_exercise(const AppOptions& o) {
     const std::string name = "practice-" + e->topic + "-series" + std::to_string(e->series) + "-" + std::to_string(e->index + 1);
     const std::string scene_file = folder + "/" + name + ".toml", file = folder + "/" + name + "-lesson.toml";
     if (!make_folder(folder) || !(std::ofstream(scene_file) << algo::scene_toml(e->scene) << std::flush) ||
-        !(std::ofstream(file) << practice::lesson_toml(*e, name + ".toml") << std::flush)) {
+        !(std::ofstream(file) << practice::lesson_toml(*e, name + ".toml", titles(*e)) << std::flush)) {
         tell("practice: could not write " + file);
         return;
     }

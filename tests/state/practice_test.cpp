@@ -431,6 +431,14 @@ TEST_CASE("practice: the exercise's scene, saved and played as the window plays 
             CHECK(event["step"] == e.deciding_step);
             CHECK(event["text"] == e.deciding);
         }
+    // the window writes the title in every language it speaks; English stays the lesson's first language
+    const Exercise e = p::exercise(p::topics().front(), 5, 0, Level::easy);
+    std::ofstream(path) << hsr::algo::scene_toml(e.scene);
+    std::ofstream(lesson_path) << p::lesson_toml(e, "hsrviz_practice_scene.toml", {{"de", "Übung \"5\""}, {"en", "Practice 5"}});
+    const hsr::viz::Lesson titled = hsr::viz::load_lesson(lesson_path);
+    CHECK(titled.languages == std::vector<std::string>{"en", "de"});
+    CHECK(titled.title == "Practice 5");
+    CHECK(titled.titles.at("de") == "Übung \"5\"");
     std::filesystem::remove(path);
     std::filesystem::remove(lesson_path);
 }

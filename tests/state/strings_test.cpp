@@ -14,6 +14,7 @@
 #include "state/families.h"
 #include "state/practice/practice.h"
 #include "state/strings.h"
+#include "zbuffer/depth_format.h"
 
 using namespace hsr::viz;
 
@@ -34,6 +35,8 @@ TEST_CASE("every key the window's code asks for is in the English catalogue", "[
     const std::regex call(R"re(\btr\(([^;]*))re"), key_literal(R"re("([a-z_]+\.[a-z_.]+)")re");
     std::set<std::string> sections;
     for (const std::string& key : s.keys("en")) sections.insert(key.substr(0, key.find('.')));
+    std::set<std::string> exercise_keys;
+    for (const hsr::algo::Saying& saying : practice::practice_sayings()) exercise_keys.insert(std::string(saying.key));
     std::set<std::string> asked;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(HSR_SOURCE_DIR "/visualizer")) {
         if (entry.path().extension() != ".cpp" && entry.path().extension() != ".h") continue;
@@ -48,7 +51,8 @@ TEST_CASE("every key the window's code asks for is in the English catalogue", "[
         }
         for (auto k = std::sregex_iterator(source.begin(), source.end(), key_literal); k != std::sregex_iterator(); ++k) {
             const std::string key = (*k)[1];
-            if (sections.contains(key.substr(0, key.find('.')))) asked.insert(key);
+            // a practice question's template names its key under [exercise] (the test below holds those)
+            if (sections.contains(key.substr(0, key.find('.'))) && !exercise_keys.contains(key)) asked.insert(key);
         }
     }
     CHECK(asked.size() >= 20);  // the migration is real: the timeline, the boxes, the practice box
@@ -63,6 +67,9 @@ TEST_CASE("the names the code writes in English (topics, practice topics) are in
     std::set<std::string> names{"Lessons that cannot be loaded"};
     for (const CourseLesson& l : load_course()) names.insert(l.topic);
     for (const practice::Topic& t : practice::topics()) names.insert(std::string(t.title));
+    for (const auto f : {hsr::algo::DepthFormat::int16, hsr::algo::DepthFormat::int24, hsr::algo::DepthFormat::int32, hsr::algo::DepthFormat::float32,
+                         hsr::algo::DepthFormat::float32_reversed, hsr::algo::DepthFormat::linear24})
+        names.insert(std::string(hsr::algo::to_string(f)));
     CHECK(names.size() >= 20);
     s.use("de");
     std::size_t translated = 0;
@@ -132,6 +139,51 @@ TEST_CASE("the catalogue's English copy of the machines' sentences is the machin
             INFO(key << " is in en.toml but no machine says it");
             CHECK(said.contains(key));
         }
+}
+
+TEST_CASE("the catalogue's English copy of the practice questions is the code's own, key for key", "[strings]") {
+    const Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
+    std::set<std::string> said;
+    for (const hsr::algo::Saying& saying : practice::practice_sayings()) {
+        const std::string key = "exercise." + std::string(saying.key);
+        INFO(key);
+        CHECK(said.insert(key).second);  // no key twice
+        CHECK(s.english(key) == saying.english);
+    }
+    CHECK(said.size() >= 40);
+    for (const std::string& key : s.keys("en"))
+        if (key.rfind("exercise.", 0) == 0) {
+            INFO(key << " is in en.toml but no practice question says it");
+            CHECK(said.contains(key));
+        }
+}
+
+TEST_CASE("practice asks in the language the window speaks; its answers and JSON stay English", "[strings]") {
+    Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
+    const std::regex unfilled(R"(\{[a-z_0-9]+[}?])");
+    const auto in = [&](const practice::Wording& w) { return practice::said(w, [&](const hsr::algo::Saying& t) { return s.pattern("exercise", t); }); };
+    for (const practice::Topic& topic : practice::topics())
+        for (const practice::Level level : {practice::Level::easy, practice::Level::medium, practice::Level::hard})
+            for (std::uint64_t i = 0; i < 12; ++i) {
+                const practice::Exercise e = practice::exercise(topic, 7, i, level);
+                INFO(topic.id << " exercise " << i << ": " << e.question);
+                s.use("en");
+                CHECK(in(e.asked) == e.question);  // English: what `hsrviz practice` prints, from the same template
+                s.use("de");
+                const std::string german = in(e.asked);
+                CHECK(german != e.question);
+                CHECK_FALSE(std::regex_search(german, unfilled));
+                CHECK_FALSE(std::regex_search(e.question, unfilled));
+                REQUIRE(e.offered.size() == e.choices.size());
+                for (std::size_t k = 0; k < e.choices.size(); ++k) {
+                    const practice::Wording* w = e.choice(e.choices[k]);
+                    REQUIRE(w == &e.offered[k]);  // a reply given finds the words it was shown in
+                    // in other words, unless the same in every language (an outcode's bits, a room's letter)
+                    if (w->saying) CHECK(in(*w) != e.choices[k]);
+                    CHECK_FALSE(std::regex_search(in(*w), unfilled));
+                }
+                if (!e.choices.empty()) CHECK(e.choice(e.answer) != nullptr);
+            }
 }
 
 TEST_CASE("the machines narrate in the language the window speaks; their traces stay English", "[strings]") {

@@ -12,6 +12,7 @@
 
 #include <imgui.h>
 
+#include "state/chapters.h"
 #include "state/label_placement.h"
 #include "state/strings.h"
 
@@ -32,11 +33,13 @@ std::string step_text(const Session& s) {
 // ── [SECTION] lesson, pseudocode, narration ─────────────────────────────────────────────────────────────────
 void lesson_panel(const Session& s, const std::string& detail, const PanelLayout& l) {
     begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
-    wrapped_text(s.lesson().title);
+    const Lesson& lesson = s.lesson();
+    const std::string& language = window_strings().language();
+    wrapped_text(lesson.titles.empty() ? lesson.title : in_language(lesson.titles, language, lesson.languages));
     wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(s.lesson().algorithm.id)}, {"difficulty", std::to_string(s.lesson().difficulty)}, {"detail", detail}}),
                  dim_text);
     ImGui::Separator();
-    wrapped_text(reflow(s.lesson().summary), dim_text);
+    wrapped_text(reflow(lesson.summaries.empty() ? lesson.summary : in_language(lesson.summaries, language, lesson.languages)), dim_text);
     end_column_box(l, Box::lesson);
 }
 

@@ -47,11 +47,22 @@ void chooser(const practice::PracticeMode& mode, UiActions& out) {
     }
 }
 
+// A practice wording in the student's language (the catalogue's [exercise]; English where it has none).
+std::string in_words(const practice::Wording& w) {
+    const Strings& words = window_strings();
+    return practice::said(w, [&](const algo::Saying& s) { return words.pattern("exercise", s); });
+}
+// A reply or an answer: a choice in the student's language, a number as typed.
+std::string reply_text(const practice::Exercise& e, const std::string& english) {
+    const practice::Wording* w = e.choice(english);
+    return w ? in_words(*w) : english;
+}
+
 void choices(const practice::Exercise& e, UiActions& out) {
     const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     for (std::size_t i = 0; i < e.choices.size(); ++i) {
-        // shown in the student's language where it is a word the catalogue or a machine has; answered as given
-        const std::string label = std::to_string(i + 1) + "  " + window_strings().word(e.choices[i]) + "##practice" + std::to_string(i);
+        // shown in the student's language, answered in the exercise's English
+        const std::string label = std::to_string(i + 1) + "  " + in_words(e.offered[i]) + "##practice" + std::to_string(i);
         const float width = ImGui::CalcTextSize(label.c_str(), nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
         if (i > 0) {
             ImGui::SameLine();
@@ -72,7 +83,7 @@ void practice_panel(const practice::PracticeMode& mode, const PanelLayout& l, Ui
     chooser(mode, out);
     ImGui::Separator();
     if (const auto& e = mode.current) {
-        wrapped_text(e->question);
+        wrapped_text(in_words(e->asked));
         if (mode.waiting()) {
             if (!e->choices.empty()) {
                 choices(*e, out);
@@ -82,10 +93,10 @@ void practice_panel(const practice::PracticeMode& mode, const PanelLayout& l, Ui
             }
         } else {
             // the deciding event's sentence is the narration's now: the player stands on it
-            const Strings& words = window_strings();
-            wrapped_text(tr(*mode.right ? "practice.right" : "practice.not_quite", {{"given", words.word(mode.given)}}), *mode.right ? right_colour : bit_set);
+            wrapped_text(tr(*mode.right ? "practice.right" : "practice.not_quite", {{"given", reply_text(*e, mode.given)}}),
+                         *mode.right ? right_colour : bit_set);
             if (!*mode.right)
-                wrapped_text(tr("practice.machine", {{"answer", words.word(e->answer)}, {"step", std::to_string(e->deciding_step + 1)}}));
+                wrapped_text(tr("practice.machine", {{"answer", reply_text(*e, e->answer)}, {"step", std::to_string(e->deciding_step + 1)}}));
             if (ImGui::Button((tr("practice.next") + "###next exercise").c_str())) out.practice_next = true;
         }
     }

@@ -131,10 +131,14 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
     int current = 0;
     for (std::size_t i = 0; i < formats.size(); ++i)
         if (formats[i] == v.format) current = int(i);
-    ImGui::SetNextItemWidth(220);
-    if (ImGui::BeginCombo((tr("zbuffer.format") + "###format").c_str(), std::string(algo::to_string(v.format)).c_str())) {
+    // as wide as the widest format's name in the student's language, at any type size
+    const auto name = [](DepthFormat f) { return window_strings().name(algo::to_string(f)); };
+    float widest = 0;
+    for (const DepthFormat f : formats) widest = std::max(widest, ImGui::CalcTextSize(name(f).c_str()).x);
+    ImGui::SetNextItemWidth(widest + ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::BeginCombo((tr("zbuffer.format") + "###format").c_str(), name(v.format).c_str())) {
         for (std::size_t i = 0; i < formats.size(); ++i)
-            if (ImGui::Selectable(std::string(algo::to_string(formats[i])).c_str(), int(i) == current))
+            if (ImGui::Selectable(name(formats[i]).c_str(), int(i) == current))
                 out.depth_format = formats[i];
         ImGui::EndCombo();
     }

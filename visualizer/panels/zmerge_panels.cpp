@@ -83,7 +83,7 @@ void zmerge_state_panel(const ZMergeSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("zmerge.title") + "###state").c_str());
     const ZMergeView& v = s.view();
     const auto n = [](auto value) { return std::to_string(value); };
-    wrapped_text(tr("zmerge.rule", {{"format", std::string(algo::to_string(s.lesson().depth_format))}}), dim_text);
+    wrapped_text(tr("zmerge.rule", {{"format", window_strings().name(algo::to_string(s.lesson().depth_format))}}), dim_text);
     if (v.x >= 0)
         wrapped_text(tr("zmerge.pixel", {{"x", n(v.x)}, {"y", n(v.y)}, {"za", n(v.depth_a)}, {"zb", n(v.depth_b)}, {"from", v.from_a ? "A" : "B"}}));
     wrapped_text(tr("zmerge.counts", {{"a", n(v.from_a_count)}, {"b", n(v.from_b_count)}}));

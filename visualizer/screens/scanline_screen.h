@@ -16,7 +16,7 @@ public:
     void draw_scene(const ScanLineSession& s, SceneFrame& f) const {
         f.detail = tr("scanline.detail", {{"width", std::to_string(s.lesson().grid.width)},
                                           {"height", std::to_string(s.lesson().grid.height)},
-                                          {"format", std::string(algo::to_string(s.lesson().depth_format))}});
+                                          {"format", window_strings().name(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
         scanline_canvas(s, 0, 0, f.view_w, f.view_h);

@@ -32,7 +32,7 @@ void Screen<ZBufferSession>::frame(const ZBufferSession& s, OrbitCamera& camera)
 void Screen<ZBufferSession>::draw_scene(const ZBufferSession& s, SceneFrame& f) const {
     if (f.second_view) draw_zbuffer_3d(s.view(), s.lesson().scene, f.batches, f.labels);
     f.detail = tr("zbuffer.caption", {{"width", std::to_string(s.lesson().grid.width)}, {"height", std::to_string(s.lesson().grid.height)},
-                                      {"format", std::string(algo::to_string(s.format()))}});
+                                      {"format", window_strings().name(algo::to_string(s.format()))}});
 }
 
 void Screen<ZBufferSession>::draw_panels(const ZBufferSession& s, PanelFrame& f) const {

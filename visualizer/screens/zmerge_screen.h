@@ -15,7 +15,7 @@ public:
     void frame(const ZMergeSession&, OrbitCamera&) const {}  // no 3D view: the canvas covers it
     void draw_scene(const ZMergeSession& s, SceneFrame& f) const {
         f.detail = tr("zmerge.caption", {{"width", std::to_string(s.lesson().grid.width)}, {"height", std::to_string(s.lesson().grid.height)},
-                                         {"format", std::string(algo::to_string(s.lesson().depth_format))}});
+                                         {"format", window_strings().name(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ZMergeSession& s, PanelFrame& f) const {
         zmerge_canvas(s, 0, 0, f.view_w, f.view_h);

@@ -117,20 +117,22 @@ bool Strings::has(std::string_view key) const {
     return entry(catalogues_, "en", std::string(key)) != nullptr;
 }
 
-std::string Strings::text(std::string_view key, StringValues values) const {
-    // the student's language, else English, else the key itself (a missing key shows, it does not crash)
-    for (const std::string_view language : {std::string_view(language_), std::string_view("en")})
+std::string Strings::text(std::string_view key, StringValues values) const { return text_in(language_, key, values); }
+
+std::string Strings::text_in(std::string_view wanted, std::string_view key, StringValues values) const {
+    // that language, else English, else the key itself (a missing key shows, it does not crash)
+    for (const std::string_view language : {wanted, std::string_view("en")})
         if (const std::string* t = entry(catalogues_, language, std::string(key))) return fill(*t, values);
     return std::string(key);
 }
 
-std::string_view Strings::pattern_of(const algo::Saying& s) const {
+std::string_view Strings::pattern(std::string_view section, const algo::Saying& s) const {
     if (language_ != "en")
-        if (const std::string* t = entry(catalogues_, language_, "machine." + std::string(s.key))) return *t;
-    return s.english;  // English is the machine's own (the catalogue's English copy is checked equal to it by a test)
+        if (const std::string* t = entry(catalogues_, language_, std::string(section) + "." + std::string(s.key))) return *t;
+    return s.english;  // English is the code's own (the catalogue's English copy is checked equal to it by a test)
 }
 
-std::string Strings::say(const algo::Saying& term) const { return std::string(pattern_of(term)); }
+std::string Strings::say(const algo::Saying& term) const { return std::string(pattern("machine", term)); }
 
 std::string Strings::word(std::string_view english) const {
     if (language_ == "en") return std::string(english);
@@ -151,7 +153,7 @@ std::string Strings::say(const algo::Phrase& phrase) const {
     if (!phrase.saying) return {};
     std::vector<algo::NamedValue> values = phrase.values;
     for (const auto& [name, term] : phrase.terms) values.emplace_back(name, say(*term));
-    return fill(pattern_of(*phrase.saying), values);
+    return fill(pattern("machine", *phrase.saying), values);
 }
 
 Strings& window_strings() {

@@ -40,10 +40,14 @@ public:
     // The template for `key` in the language used (else English, else the key itself, so that a gap shows rather
     // than crashes), its {names} filled from `values`; a name without a value stays as written.
     std::string text(std::string_view key, StringValues values = {}) const;
+    std::string text_in(std::string_view language, std::string_view key, StringValues values = {}) const;  // in that one
     // What a machine's event says (algo::phrase(event)), in the language used: its template under [machine] in that
     // language's catalogue, else the machine's own English; its terms (a test's name) likewise.
     std::string say(const algo::Phrase& phrase) const;
     std::string say(const algo::Saying& term) const;  // a word or name the machine uses, without values
+    // A template whose English is in the code (a machine's under [machine], a practice question's under [exercise]):
+    // the catalogue's `section`.KEY in the language used, else the code's English.
+    std::string_view pattern(std::string_view section, const algo::Saying& s) const;
     // A machine's word given in English, as a lesson's choice gives it ("entering"): in the language used when a
     // machine's term says it, else as given.
     std::string word(std::string_view english) const;
@@ -63,7 +67,6 @@ private:
     std::string language_ = "en";
     std::vector<std::string> problems_;
     void add(const std::string& language, const std::string& path, std::string_view text);
-    std::string_view pattern_of(const algo::Saying& s) const;
     void check();
 };
 

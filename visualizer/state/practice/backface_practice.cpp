@@ -80,6 +80,24 @@ std::optional<Tested> run(const algo::Scene& scene, algo::BackfaceTest test) {
         if (const auto* f = std::get_if<algo::FaceTested>(e)) return Tested{*f, algo::describe(*e), step};
     return std::nullopt;
 }
+// What the questions say, each template once (the catalogues' [exercise.backface] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying facing_view_vector{"backface.facing_view_vector",
+                                    "Back-face culling by the view-vector test: the eye is at {eye}; the triangle {triangle} is "
+                                    "wound counter-clockwise seen from its front. Is it front-facing or back-facing?"};
+constexpr Saying facing_plane_equation{"backface.facing_plane_equation",
+                                       "Back-face culling by the plane-equation test: the eye is at {eye}; the triangle {triangle} "
+                                       "is wound counter-clockwise seen from its front. Is it front-facing or back-facing?"};
+constexpr Saying front{"backface.front", "front-facing: kept"};
+constexpr Saying back{"backface.back", "back-facing: culled"};
+constexpr Saying distance{"backface.distance",
+                          "Back-face culling by the plane equation: the triangle {triangle} is wound counter-clockwise seen "
+                          "from its front, and N = (B − A) × (C − A) scaled to unit length, D = −N · A. The eye is at {eye}. "
+                          "What is N · eye + D (its signed distance from the plane)? Two decimals are enough."};
+constexpr Saying all[] = {facing_view_vector, facing_plane_equation, front, back, distance};
+}  // namespace say
+
 std::string algorithm_id(algo::BackfaceTest test) {
     return test == algo::BackfaceTest::view_vector ? "backface_view_vector" : "backface_plane_equation";
 }
@@ -91,7 +109,6 @@ nlohmann::json given(const Drawn& t, const char* kind) {
     return {{"kind", kind}, {"a", numbers(t.a)}, {"b", numbers(t.b)}, {"c", numbers(t.c)}, {"eye", numbers(t.eye)}};
 }
 
-const std::vector<std::string> facing_choices = {"front-facing: kept", "back-facing: culled"};
 
 std::optional<Exercise> facing_exercise(Dice& d, Level l) {
     const auto t = draw(d, l);
@@ -101,11 +118,9 @@ std::optional<Exercise> facing_exercise(Dice& d, Level l) {
     const auto tested = run(scene, test);
     if (!tested || tested->event.facing == algo::Facing::edge_on) return std::nullopt;
     Exercise x;
-    x.question = "Back-face culling by the " + std::string(algo::to_string(test)) + " test: the eye is at " +
-                 point_text(t->eye) + "; the triangle " + triangle_text(*t) +
-                 " is wound counter-clockwise seen from its front. Is it front-facing or back-facing?";
-    x.choices = facing_choices;
-    x.answer = tested->event.facing == algo::Facing::front ? facing_choices[0] : facing_choices[1];
+    x.ask(Wording(test == algo::BackfaceTest::view_vector ? say::facing_view_vector : say::facing_plane_equation,
+                  {{"eye", point_text(t->eye)}, {"triangle", triangle_text(*t)}}));
+    x.offer({Wording(say::front), Wording(say::back)}, tested->event.facing == algo::Facing::front ? 0 : 1);
     x.deciding = tested->sentence;
     x.deciding_step = tested->step;
     x.given = given(*t, "facing");
@@ -121,10 +136,7 @@ std::optional<Exercise> distance_exercise(Dice& d, Level l) {
     const auto tested = run(scene, algo::BackfaceTest::plane_equation);
     if (!tested) return std::nullopt;
     Exercise x;
-    x.question = "Back-face culling by the plane equation: the triangle " + triangle_text(*t) +
-                 " is wound counter-clockwise seen from its front, and N = (B − A) × (C − A) scaled to unit length, "
-                 "D = −N · A. The eye is at " + point_text(t->eye) +
-                 ". What is N · eye + D (its signed distance from the plane)? Two decimals are enough.";
+    x.ask(Wording(say::distance, {{"eye", point_text(t->eye)}, {"triangle", triangle_text(*t)}}));
     x.answer = decimal_text(tested->event.value, 4);
     x.tolerance = 0.005;
     x.deciding = tested->sentence;
@@ -142,7 +154,8 @@ std::vector<Topic> backface_topics() {
              {"backface_view_vector", "backface_plane_equation", "backface_screen_winding"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return d.coin() ? facing_exercise(d, draw.level) : distance_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

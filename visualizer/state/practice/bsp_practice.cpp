@@ -29,8 +29,27 @@ std::string point_text(dvec2 p) {
     for (std::size_t at = t.find('-'); at != std::string::npos; at = t.find('-', at)) t.replace(at, 1, "−");
     return t;
 }
-std::string wall_text(const std::vector<Wall>& walls, std::size_t k) {
-    return "wall " + std::to_string(k + 1) + " from " + point_text(walls[k].a) + " to " + point_text(walls[k].b);
+// What the questions say, each template once (the catalogues' [exercise.bsp] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying wall{"bsp.wall", "wall {number} from {a} to {b}"};
+constexpr Saying wall_side{"bsp.wall_side",
+                           "BuildBSP makes the first wall of each list its node's splitter. The root's is {root} (its front "
+                           "is the left of a → b, as you walk from a to b). Where does {wall} lie, seen from wall 1's line?"};
+constexpr Saying front{"bsp.front", "front"};
+constexpr Saying back{"bsp.back", "back"};
+constexpr Saying spanning{"bsp.spanning", "spanning"};
+constexpr Saying coplanar{"bsp.coplanar", "coplanar"};
+constexpr Saying eye_side{"bsp.eye_side",
+                          "DisplayBSP paints back to front from the eye at {eye}. The root's splitter is {root} (its front is "
+                          "the left of a → b, as you walk from a to b). Where is the eye, seen from wall 1's line?"};
+constexpr Saying eye_in_front{"bsp.eye_in_front", "in front: its back subtree is painted first"};
+constexpr Saying eye_behind{"bsp.eye_behind", "behind: its front subtree is painted first"};
+constexpr Saying all[] = {wall, wall_side, front, back, spanning, coplanar, eye_side, eye_in_front, eye_behind};
+}  // namespace say
+
+Wording wall_text(const std::vector<Wall>& walls, std::size_t k) {
+    return Wording(say::wall, {{"number", std::to_string(k + 1)}, {"a", point_text(walls[k].a)}, {"b", point_text(walls[k].b)}});
 }
 nlohmann::json numbers(dvec2 p) { return nlohmann::json::array({p.x, p.y}); }
 
@@ -104,8 +123,6 @@ nlohmann::json given(const std::vector<Wall>& walls, dvec2 eye, const char* kind
     return {{"kind", kind}, {"walls", w}, {"eye", numbers(eye)}, {"wall", asked + 1}};
 }
 
-const std::vector<std::string> side_choices = {"front", "back", "spanning", "coplanar"};
-const std::string front_rule = "its front is the left of a → b, as you walk from a to b";
 
 std::optional<Exercise> build_exercise(Dice& d, Level l) {
     const auto drawn = draw(d, l);
@@ -118,15 +135,12 @@ std::optional<Exercise> build_exercise(Dice& d, Level l) {
         const auto* c = std::get_if<algo::PolygonClassified>(&events[step]);
         if (!c || c->node != 0 || c->polygon != algo::BspPolygonId(asked)) continue;
         Exercise x;
-        x.question = "BuildBSP makes the first wall of each list its node's splitter. The root's is " + wall_text(walls, 0) +
-                     " (" + front_rule + "). Where does " + wall_text(walls, asked) + " lie, seen from wall 1's line?";
-        x.choices = side_choices;
-        switch (c->side) {
-            case algo::PolygonSide::front: x.answer = side_choices[0]; break;
-            case algo::PolygonSide::back: x.answer = side_choices[1]; break;
-            case algo::PolygonSide::spanning: x.answer = side_choices[2]; break;
-            case algo::PolygonSide::coplanar: x.answer = side_choices[3]; break;
-        }
+        x.ask(Wording(say::wall_side, {}, {{"root", {wall_text(walls, 0)}}, {"wall", {wall_text(walls, asked)}}}));
+        const std::size_t side = c->side == algo::PolygonSide::front      ? 0
+                                 : c->side == algo::PolygonSide::back     ? 1
+                                 : c->side == algo::PolygonSide::spanning ? 2
+                                                                          : 3;
+        x.offer({Wording(say::front), Wording(say::back), Wording(say::spanning), Wording(say::coplanar)}, side);
         x.deciding = algo::describe(events[step], original_name);
         x.deciding_step = step;
         x.given = given(walls, eye, "wall_side", asked);
@@ -137,8 +151,6 @@ std::optional<Exercise> build_exercise(Dice& d, Level l) {
     return std::nullopt;
 }
 
-const std::vector<std::string> eye_choices = {"in front: its back subtree is painted first",
-                                              "behind: its front subtree is painted first"};
 
 std::optional<Exercise> traversal_exercise(Dice& d, Level l) {
     const auto drawn = draw(d, l);
@@ -150,10 +162,8 @@ std::optional<Exercise> traversal_exercise(Dice& d, Level l) {
         const auto* c = std::get_if<algo::EyeClassified>(&events[step]);
         if (!c || c->node != 0 || c->side == algo::Side::on) continue;
         Exercise x;
-        x.question = "DisplayBSP paints back to front from the eye at " + point_text(eye) + ". The root's splitter is " +
-                     wall_text(walls, 0) + " (" + front_rule + "). Where is the eye, seen from wall 1's line?";
-        x.choices = eye_choices;
-        x.answer = eye_choices[c->side == algo::Side::front ? 0 : 1];
+        x.ask(Wording(say::eye_side, {{"eye", point_text(eye)}}, {{"root", {wall_text(walls, 0)}}}));
+        x.offer({Wording(say::eye_in_front), Wording(say::eye_behind)}, c->side == algo::Side::front ? 0 : 1);
         x.deciding = algo::describe(events[step], original_name);
         x.deciding_step = step;
         x.given = given(walls, eye, "eye_side", 0);
@@ -170,7 +180,8 @@ std::vector<Topic> bsp_topics() {
     return {{"bsp", "BSP trees: building and painting back to front", {"bsp_build", "bsp_traversal"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return d.coin() ? build_exercise(d, draw.level) : traversal_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

@@ -27,10 +27,42 @@ using algo::Vec4;
 // once the student knows the cube.
 ClipSpace space_for(Level l) { return l == Level::easy ? ClipSpace::cube : ClipSpace::homogeneous; }
 
-std::string setting(ClipSpace s) {
-    return s == ClipSpace::cube ? "in the canonical view volume −1 ≤ x, y, z ≤ 1"
-                                : "in clip space (inside: −w ≤ x, y, z ≤ w and w ≥ ε, ε a tiny positive number)";
-}
+// What the questions say, each template once (the catalogues' [exercise.clip] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying cube{"clip.cube", "in the canonical view volume −1 ≤ x, y, z ≤ 1"};
+constexpr Saying clip_space{"clip.clip_space", "in clip space (inside: −w ≤ x, y, z ≤ w and w ≥ ε, ε a tiny positive number)"};
+constexpr Saying bits_cube{"clip.bits_cube", "Bits in the notes' order: z > 1, z < −1, y > 1, y < −1, x > 1, x < −1."};
+constexpr Saying bits_clip_space{"clip.bits_clip_space",
+                                 "Bits in the notes' order: z > w, z < −w, y > w, y < −w, x > w, x < −w; then \"+w\" when w < ε."};
+constexpr Saying outcode{"clip.outcode", "Cohen–Sutherland, {setting}: what is the outcode of {name} = {point}? {bits}"};
+constexpr Saying trivial{"clip.trivial",
+                         "Cohen–Sutherland, {setting}: the segment runs from p1 = {p1} to p2 = {p2}. What does the first test "
+                         "of the two outcodes decide?"};
+constexpr Saying accepted{"clip.accepted", "trivially accepted (c1 | c2 = 0)"};
+constexpr Saying rejected{"clip.rejected", "trivially rejected (c1 & c2 ≠ 0)"};
+constexpr Saying neither{"clip.neither", "neither: the segment is cut at a plane"};
+constexpr Saying t_enter{"clip.t_enter",
+                         "Liang–Barsky, {setting}: the segment p(t) = p1 + t (p2 − p1), 0 ≤ t ≤ 1, from p1 = {p1} to p2 = {p2}. "
+                         "At which t does its visible part start (t_enter)? Two decimals are enough."};
+constexpr Saying t_leave{"clip.t_leave",
+                         "Liang–Barsky, {setting}: the segment p(t) = p1 + t (p2 − p1), 0 ≤ t ≤ 1, from p1 = {p1} to p2 = {p2}. "
+                         "At which t does its visible part end (t_leave)? Two decimals are enough."};
+constexpr Saying edge{"clip.edge",
+                      "Sutherland–Hodgman, {setting}: stage {plane} ({inequality}) takes the edge from s = {s} to e = {e}. "
+                      "Which case is it?"};
+constexpr Saying in_in{"clip.in_in", "in→in: emits e"};
+constexpr Saying in_out{"clip.in_out", "in→out: emits the intersection i"};
+constexpr Saying out_out{"clip.out_out", "out→out: emits nothing"};
+constexpr Saying out_in{"clip.out_in", "out→in: emits i, then e"};
+constexpr Saying stage_count{"clip.stage_count",
+                             "Sutherland–Hodgman, {setting}, clips the polygon {polygon} against one plane after another, in "
+                             "the order {order}. How many vertices does the polygon have after stage {plane}?"};
+constexpr Saying all[] = {cube, clip_space, bits_cube, bits_clip_space, outcode, trivial, accepted, rejected, neither,
+                          t_enter, t_leave, edge, in_in, in_out, out_out, out_in, stage_count};
+}  // namespace say
+
+Wording setting(ClipSpace s) { return Wording(s == ClipSpace::cube ? say::cube : say::clip_space); }
 
 nlohmann::json numbers(const Vec4& p) { return nlohmann::json::array({p.x, p.y, p.z, p.w}); }
 std::string point_text(const Vec4& p, ClipSpace s) { return algo::format_point(p, s); }
@@ -109,10 +141,13 @@ std::vector<std::string> outcode_choices(Dice& d, algo::Outcode answer, ClipSpac
     return choices;
 }
 
-std::string bit_order(ClipSpace s) {
-    return s == ClipSpace::cube ? "Bits in the notes' order: z > 1, z < −1, y > 1, y < −1, x > 1, x < −1."
-                                : "Bits in the notes' order: z > w, z < −w, y > w, y < −w, x > w, x < −w; "
-                                  "then \"+w\" when w < ε.";
+Wording bit_order(ClipSpace s) { return Wording(s == ClipSpace::cube ? say::bits_cube : say::bits_clip_space); }
+
+// Choices that read the same in every language (outcodes), the right one first among them.
+std::vector<Wording> as_is(const std::vector<std::string>& texts) {
+    std::vector<Wording> words;
+    for (const std::string& t : texts) words.push_back(Wording::as_is(t));
+    return words;
 }
 
 std::optional<Exercise> outcode_exercise(Dice& d, Level l) {
@@ -128,10 +163,10 @@ std::optional<Exercise> outcode_exercise(Dice& d, Level l) {
         if (!o || o->round != 1 || o->endpoint != asked) continue;
         const std::string name = asked == algo::Endpoint::p1 ? "p1" : "p2";
         Exercise x;
-        x.question = "Cohen–Sutherland, " + setting(s) + ": what is the outcode of " + name + " = " +
-                     point_text(o->p, s) + "? " + bit_order(s);
-        x.answer = algo::to_string(o->code);
-        x.choices = outcode_choices(d, o->code, s);
+        x.ask(Wording(say::outcode, {{"name", name}, {"point", point_text(o->p, s)}},
+                      {{"setting", {setting(s)}}, {"bits", {bit_order(s)}}}));
+        const std::vector<std::string> codes = outcode_choices(d, o->code, s);
+        x.offer(as_is(codes), std::size_t(std::find(codes.begin(), codes.end(), algo::to_string(o->code)) - codes.begin()));
         x.deciding = algo::describe(*e, s);
         x.deciding_step = step;
         x.given = {{"kind", "outcode"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"}, {"point", numbers(o->p)}};
@@ -142,8 +177,6 @@ std::optional<Exercise> outcode_exercise(Dice& d, Level l) {
     return std::nullopt;
 }
 
-const std::vector<std::string> trivial_choices = {"trivially accepted (c1 | c2 = 0)", "trivially rejected (c1 & c2 ≠ 0)",
-                                                  "neither: the segment is cut at a plane"};
 
 std::optional<Exercise> trivial_test_exercise(Dice& d, Level l) {
     const ClipSpace s = space_for(l);
@@ -162,12 +195,9 @@ std::optional<Exercise> trivial_test_exercise(Dice& d, Level l) {
         const auto* c = std::get_if<algo::CodesCompared>(e);
         if (!c) continue;
         Exercise x;
-        x.question = "Cohen–Sutherland, " + setting(s) + ": the segment runs from p1 = " + point_text(p1, s) +
-                     " to p2 = " + point_text(p2, s) + ". What does the first test of the two outcodes decide?";
-        x.choices = trivial_choices;
-        x.answer = (c->c1 | c->c2).inside() ? trivial_choices[0]
-                   : !(c->c1 & c->c2).inside() ? trivial_choices[1]
-                                               : trivial_choices[2];
+        x.ask(Wording(say::trivial, {{"p1", point_text(p1, s)}, {"p2", point_text(p2, s)}}, {{"setting", {setting(s)}}}));
+        x.offer({Wording(say::accepted), Wording(say::rejected), Wording(say::neither)},
+                (c->c1 | c->c2).inside() ? 0 : !(c->c1 & c->c2).inside() ? 1 : 2);
         x.deciding = algo::describe(*e, s);
         x.deciding_step = step;
         x.given = {{"kind", "trivial_test"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
@@ -208,9 +238,8 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     const double t_enter = last[0] ? last[0]->after : 0.0, t_leave = last[1] ? last[1]->after : 1.0;
     if (!last[k] || t_leave - t_enter < 0.02) return std::nullopt;  // a visible part too short to read
     Exercise x;
-    x.question = "Liang–Barsky, " + setting(s) + ": the segment p(t) = p1 + t (p2 − p1), 0 ≤ t ≤ 1, from p1 = " +
-                 point_text(p1, s) + " to p2 = " + point_text(p2, s) + ". At which t does its visible part " +
-                 (k == 0 ? "start (t_enter)" : "end (t_leave)") + "? Two decimals are enough.";
+    x.ask(Wording(k == 0 ? say::t_enter : say::t_leave, {{"p1", point_text(p1, s)}, {"p2", point_text(p2, s)}},
+                  {{"setting", {setting(s)}}}));
     x.answer = decimal_text(last[k]->after, 4);
     x.tolerance = 0.005;
     x.deciding = sentence[k];
@@ -264,8 +293,6 @@ std::string stage_order(ClipSpace s) {
                                 : "z max, z min, y max, y min, x max, x min, w min";
 }
 
-const std::vector<std::string> edge_choices = {"in→in: emits e", "in→out: emits the intersection i",
-                                               "out→out: emits nothing", "out→in: emits i, then e"};
 
 // Replays the stages from the events to know each stage's input (the machine gives indices, the student points).
 std::optional<Exercise> edge_case_exercise(Dice& d, Level l) {
@@ -304,11 +331,14 @@ std::optional<Exercise> edge_case_exercise(Dice& d, Level l) {
     if (cut_edges.empty()) return std::nullopt;
     const Candidate& c = cut_edges[std::size_t(d.below(int(cut_edges.size())))];
     Exercise x;
-    x.question = "Sutherland–Hodgman, " + setting(s) + ": stage " + std::string(algo::plane_name(c.edge.plane)) + " (" +
-                 std::string(algo::plane_inequality(c.edge.plane, s)) + ") takes the edge from s = " +
-                 point_text(c.from, s) + " to e = " + point_text(c.to, s) + ". Which case is it?";
-    x.choices = edge_choices;
-    x.answer = edge_choices[std::size_t(c.edge.edge_case)];
+    x.ask(Wording(say::edge,
+                  {{"plane", std::string(algo::plane_name(c.edge.plane))},
+                   {"inequality", std::string(algo::plane_inequality(c.edge.plane, s))},
+                   {"s", point_text(c.from, s)},
+                   {"e", point_text(c.to, s)}},
+                  {{"setting", {setting(s)}}}));
+    // in the order of algo::EdgeCase
+    x.offer({Wording(say::in_in), Wording(say::in_out), Wording(say::out_out), Wording(say::out_in)}, std::size_t(c.edge.edge_case));
     x.deciding = c.sentence;
     x.deciding_step = c.step;
     x.given = {{"kind", "edge_case"}, {"space", s == ClipSpace::cube ? "cube" : "homogeneous"},
@@ -347,9 +377,9 @@ std::optional<Exercise> stage_count_exercise(Dice& d, Level l) {
     if (changed.empty()) return std::nullopt;
     const Candidate& c = changed[std::size_t(d.below(int(changed.size())))];
     Exercise x;
-    x.question = "Sutherland–Hodgman, " + setting(s) + ", clips the polygon " + polygon_text(*polygon, s) +
-                 " against one plane after another, in the order " + stage_order(s) +
-                 ". How many vertices does the polygon have after stage " + std::string(algo::plane_name(c.stage.plane)) + "?";
+    x.ask(Wording(say::stage_count,
+                  {{"polygon", polygon_text(*polygon, s)}, {"order", stage_order(s)}, {"plane", std::string(algo::plane_name(c.stage.plane))}},
+                  {{"setting", {setting(s)}}}));
     x.answer = std::to_string(c.stage.output_vertices);
     x.tolerance = 0;
     x.deciding = c.sentence;
@@ -374,13 +404,14 @@ MakeExercise either(std::optional<Exercise> (*a)(Dice&, Level), std::optional<Ex
 
 std::vector<Topic> clipping_topics() {
     return {
-        {"cohen_sutherland", "Cohen–Sutherland: outcodes and the trivial tests", {"cohen_sutherland"}, either(outcode_exercise, trivial_test_exercise)},
+        {"cohen_sutherland", "Cohen–Sutherland: outcodes and the trivial tests", {"cohen_sutherland"}, either(outcode_exercise, trivial_test_exercise), {say::all}},
         {"liang_barsky", "Liang–Barsky: where the visible part starts and ends", {"liang_barsky"},
          [](Draw draw) {
              Dice d(draw.seed);
              return parameter_exercise(d, draw.level);
-         }},
-        {"sutherland_hodgman", "Sutherland–Hodgman: edge cases and vertex counts", {"sutherland_hodgman"}, either(edge_case_exercise, stage_count_exercise)},
+         },
+         {say::all}},
+        {"sutherland_hodgman", "Sutherland–Hodgman: edge cases and vertex counts", {"sutherland_hodgman"}, either(edge_case_exercise, stage_count_exercise), {say::all}},
     };
 }
 

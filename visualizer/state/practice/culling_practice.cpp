@@ -67,9 +67,18 @@ bool touches_the_volume(const algo::Aabb& b) {
     return false;
 }
 
-const std::vector<std::string> outcome_choices = {"wholly inside: accepted, with everything below it",
-                                                  "wholly outside: rejected, with everything below it",
-                                                  "partly inside: its primitives kept, its children tested"};
+// What the question says (the catalogues' [exercise.culling] translate it).
+namespace say {
+using algo::Saying;
+constexpr Saying node{"culling.node",
+                      "Hierarchical view-frustum culling, an orthographic camera: its view volume is the box from {volume_lo} "
+                      "to {volume_hi} in world coordinates. Octree node {node}'s cell runs from {lo} to {hi}. Against the "
+                      "view volume, it is:"};
+constexpr Saying inside{"culling.inside", "wholly inside: accepted, with everything below it"};
+constexpr Saying outside{"culling.outside", "wholly outside: rejected, with everything below it"};
+constexpr Saying partial{"culling.partial", "partly inside: its primitives kept, its children tested"};
+constexpr Saying all[] = {node, inside, outside, partial};
+}  // namespace say
 
 std::optional<Exercise> node_exercise(Dice& d, Level l) {
     algo::Scene scene = squares_scene(d, l);
@@ -94,16 +103,14 @@ std::optional<Exercise> node_exercise(Dice& d, Level l) {
     const auto& c = std::get<algo::NodeCulled>(events[step]);
     const algo::Aabb& box = tree.nodes[c.node].box;
     Exercise x;
-    x.question = "Hierarchical view-frustum culling, an orthographic camera: its view volume is the box from " + point_text(volume_lo) +
-                 " to " + point_text(volume_hi) + " in world coordinates. Octree node " + std::to_string(c.node) + "'s cell runs from " +
-                 point_text(box.lo) + " to " + point_text(box.hi) + ". Against the view volume, it is:";
-    x.choices = outcome_choices;
-    switch (c.outcome) {
-        case algo::NodeOutcome::inside: x.answer = outcome_choices[0]; break;
-        case algo::NodeOutcome::outside: x.answer = outcome_choices[1]; break;
-        case algo::NodeOutcome::partial: x.answer = outcome_choices[2]; break;
-        case algo::NodeOutcome::too_small: return std::nullopt;  // not with detail culling off
-    }
+    if (c.outcome == algo::NodeOutcome::too_small) return std::nullopt;  // not with detail culling off
+    x.ask(Wording(say::node, {{"volume_lo", point_text(volume_lo)},
+                              {"volume_hi", point_text(volume_hi)},
+                              {"node", std::to_string(c.node)},
+                              {"lo", point_text(box.lo)},
+                              {"hi", point_text(box.hi)}}));
+    x.offer({Wording(say::inside), Wording(say::outside), Wording(say::partial)},
+            c.outcome == algo::NodeOutcome::inside ? 0 : c.outcome == algo::NodeOutcome::outside ? 1 : 2);
     x.deciding = algo::describe(events[step]);
     x.deciding_step = step;
     x.given = {{"kind", "node_outcome"},
@@ -122,7 +129,8 @@ std::vector<Topic> culling_topics() {
              [](Draw draw) {
                  Dice d(draw.seed);
                  return node_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

@@ -96,15 +96,23 @@ std::string triangle_text(const SortTriangle& t) {
     return s + ")";
 }
 
-const std::vector<std::string> settling_choices = {
-    "test 1: the x extents are apart",
-    "test 2: the y extents are apart",
-    "test 3: R is wholly behind Q's plane",
-    "test 4: Q is wholly in front of R's plane",
-    "test 5: the projections are apart",
-    "swapped, 3 or 4 holds: Q moves ahead of R",
-    "none: a triangle is split by the other's plane",
-};
+// What the question says, each template once (the catalogues' [exercise.depth_sort] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying settling{"depth_sort.settling",
+                          "Newell's depth sort, looking along the depth axis: triangle 1 (#0 in the list) {triangle_1} and "
+                          "triangle 2 (#1) {triangle_2}, corners as (x, y, depth) on the 32 × 24 grid, x to the right, y down, "
+                          "depth growing away from the eye. Triangle {r} reaches farthest and heads the list: it is R, and "
+                          "triangle {q} (Q) overlaps it in depth. Which test first settles the pair?"};
+constexpr Saying test_1{"depth_sort.test_1", "test 1: the x extents are apart"};
+constexpr Saying test_2{"depth_sort.test_2", "test 2: the y extents are apart"};
+constexpr Saying test_3{"depth_sort.test_3", "test 3: R is wholly behind Q's plane"};
+constexpr Saying test_4{"depth_sort.test_4", "test 4: Q is wholly in front of R's plane"};
+constexpr Saying test_5{"depth_sort.test_5", "test 5: the projections are apart"};
+constexpr Saying swapped{"depth_sort.swapped", "swapped, 3 or 4 holds: Q moves ahead of R"};
+constexpr Saying split{"depth_sort.split", "none: a triangle is split by the other's plane"};
+constexpr Saying all[] = {settling, test_1, test_2, test_3, test_4, test_5, swapped, split};
+}  // namespace say
 
 std::optional<Exercise> settling_exercise(Dice& d, Level l) {
     SortTriangle t[2];
@@ -135,12 +143,14 @@ std::optional<Exercise> settling_exercise(Dice& d, Level l) {
     const auto& examined = std::get<algo::PairExamined>(events[*pair]);
     const std::size_t r = examined.r + 1, q = examined.q + 1;
     Exercise e;
-    e.question = "Newell's depth sort, looking along the depth axis: triangle 1 (#0 in the list) " + triangle_text(t[0]) + " and triangle 2 (#1) " +
-                 triangle_text(t[1]) + ", corners as (x, y, depth) on the 32 × 24 grid, x to the right, y down, depth "
-                 "growing away from the eye. Triangle " + std::to_string(r) + " reaches farthest and heads the list: it is "
-                 "R, and triangle " + std::to_string(q) + " (Q) overlaps it in depth. Which test first settles the pair?";
-    e.choices = settling_choices;
-    e.answer = settling_choices[answer];
+    e.ask(Wording(say::settling, {{"triangle_1", triangle_text(t[0])},
+                                  {"triangle_2", triangle_text(t[1])},
+                                  {"r", std::to_string(r)},
+                                  {"q", std::to_string(q)}}));
+    // in the order of the tests (answer: the test's number − 1, the swapped tests 5, a cut 6)
+    e.offer({Wording(say::test_1), Wording(say::test_2), Wording(say::test_3), Wording(say::test_4), Wording(say::test_5),
+             Wording(say::swapped), Wording(say::split)},
+            answer);
     e.deciding = algo::describe(events[*settled]);
     e.deciding_step = *settled;
     e.hold_at = *pair;
@@ -160,7 +170,8 @@ std::vector<Topic> depth_sort_topics() {
     return {{"depthsort", "Depth sort: which test settles a pair", {"depth_sort"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return settling_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

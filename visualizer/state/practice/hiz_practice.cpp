@@ -20,8 +20,24 @@ struct Rect {
     double depth;
 };
 
-std::string rect_text(int x0, int y0, int x1, int y1) {
-    return "pixels x " + std::to_string(x0) + "…" + std::to_string(x1 - 1) + ", y " + std::to_string(y0) + "…" + std::to_string(y1 - 1);
+// What the question says, each template once (the catalogues' [exercise.hiz] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying occluded_asked{"hiz.occluded",
+                                "Hierarchical visibility with a Z-pyramid on a 32 × 24 grid (x to the right, y down; depth is the "
+                                "distance from the eye, the background at depth 10). Drawn so far over the footprint below: "
+                                "{drawn}. Octree node {node} comes up: its box's footprint covers pixels x {x0}…{x1}, y {y0}…{y1}, "
+                                "and its nearest depth is {near}. Is it occluded?"};
+constexpr Saying rectangle{"hiz.rectangle", "rectangle {number}, pixels x {x0}…{x1}, y {y0}…{y1}, depth {depth}"};
+constexpr Saying nothing{"hiz.nothing", "nothing"};
+constexpr Saying occluded{"hiz.occluded_choice", "occluded: it and everything below it are skipped"};
+constexpr Saying not_occluded{"hiz.not_occluded", "not occluded: its primitives are rendered"};
+constexpr Saying all[] = {occluded_asked, rectangle, nothing, occluded, not_occluded};
+}  // namespace say
+
+// A rectangle of pixels as the question names it: its first and last pixel along x and along y.
+std::vector<algo::NamedValue> pixels(int x0, int y0, int x1, int y1) {
+    return {{"x0", std::to_string(x0)}, {"x1", std::to_string(x1 - 1)}, {"y0", std::to_string(y0)}, {"y1", std::to_string(y1 - 1)}};
 }
 
 // The occluder: a large rectangle at depth 2 or 3; behind it and beside it, clusters of small rectangles at depths
@@ -59,8 +75,6 @@ algo::Scene scene_of(const std::vector<Rect>& rects) {
     return scene;
 }
 
-const std::vector<std::string> occlusion_choices = {"occluded: it and everything below it are skipped",
-                                                    "not occluded: its primitives are rendered"};
 
 std::optional<Exercise> occlusion_exercise(Dice& d, Level l) {
     const std::vector<Rect> rects = draw_rects(d, l);
@@ -100,22 +114,23 @@ std::optional<Exercise> occlusion_exercise(Dice& d, Level l) {
     if (f.empty()) return std::nullopt;
     const double near_depth = 10 - tree.nodes[tested.node].box.hi.z;
     Exercise e;
-    std::string drawn_text;
+    std::vector<Wording> drawn_words;
     nlohmann::json drawn_json = nlohmann::json::array();
     for (std::size_t k : before) {
         const Rect& r = rects[k];
         if (r.x1 <= f.x0 || f.x1 <= r.x0 || r.y1 <= f.y0 || f.y1 <= r.y0) continue;  // not over the footprint
-        drawn_text += (drawn_text.empty() ? "" : "; ") + std::string("rectangle ") + std::to_string(k + 1) + ", " +
-                      rect_text(r.x0, r.y0, r.x1, r.y1) + ", depth " + number_text(r.depth);
+        std::vector<algo::NamedValue> values = pixels(r.x0, r.y0, r.x1, r.y1);
+        values.emplace_back("number", std::to_string(k + 1));
+        values.emplace_back("depth", number_text(r.depth));
+        drawn_words.push_back(Wording(say::rectangle, std::move(values)));
         drawn_json.push_back({{"pixels", {r.x0, r.y0, r.x1, r.y1}}, {"depth", r.depth}});
     }
-    e.question = "Hierarchical visibility with a Z-pyramid on a 32 × 24 grid (x to the right, y down; depth is the distance "
-                 "from the eye, the background at depth 10). Drawn so far over the footprint below: " +
-                 (drawn_text.empty() ? std::string("nothing") : drawn_text) + ". Octree node " +
-                 std::to_string(tested.node) + " comes up: its box's footprint covers " + rect_text(f.x0, f.y0, f.x1, f.y1) +
-                 ", and its nearest depth is " + number_text(near_depth) + ". Is it occluded?";
-    e.choices = occlusion_choices;
-    e.answer = occlusion_choices[tested.outcome == algo::HizOutcome::occluded ? 0 : 1];
+    std::vector<algo::NamedValue> values = pixels(f.x0, f.y0, f.x1, f.y1);
+    values.emplace_back("node", std::to_string(tested.node));
+    values.emplace_back("near", number_text(near_depth));
+    if (drawn_words.empty()) drawn_words.push_back(Wording(say::nothing));
+    e.ask(Wording(say::occluded_asked, std::move(values), {{"drawn", std::move(drawn_words)}}));
+    e.offer({Wording(say::occluded), Wording(say::not_occluded)}, tested.outcome == algo::HizOutcome::occluded ? 0 : 1);
     e.deciding = algo::describe(events[step]);
     e.deciding_step = step;
     e.given = {{"kind", "hiz_occluded"}, {"drawn", drawn_json}, {"footprint", {f.x0, f.y0, f.x1, f.y1}}, {"near", near_depth}};
@@ -131,7 +146,8 @@ std::vector<Topic> hiz_topics() {
     return {{"hiz", "Hi-Z: is a node hidden behind what is drawn?", {"cull_hiz"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return occlusion_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

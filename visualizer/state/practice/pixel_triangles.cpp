@@ -94,18 +94,39 @@ std::optional<std::pair<int, int>> pick_pixel(Dice& d, const std::vector<PixelTr
     return pixels[std::size_t(d.below(int(pixels.size())))];
 }
 
-std::string pixel_triangles_text(const std::vector<PixelTriangle>& t) {
-    std::string s;
+namespace say {
+using algo::Saying;
+constexpr Saying first{"pixel_triangles.first", "triangle {number} ({corners}, depth {depth})"};
+constexpr Saying then{"pixel_triangles.then", "then triangle {number} ({corners}, depth {depth})"};
+constexpr Saying grid{"pixel_triangles.grid",
+                      "{triangles}, on a 32 × 24 grid: corners in pixels, x to the right and y down, pixel (i, j) the square "
+                      "from (i, j) to (i + 1, j + 1), taken at its centre; depth is the distance from the eye, and the nearer "
+                      "wins. (The machine numbers them from 0: triangle 1 is its #0.)"};
+constexpr Saying triangle{"pixel_triangles.triangle", "triangle {number}"};
+constexpr Saying background{"pixel_triangles.background", "none: the background"};
+constexpr Saying all[] = {first, then, grid, triangle, background};
+}  // namespace say
+
+Wording pixel_triangles_text(const std::vector<PixelTriangle>& t) {
+    std::vector<Wording> drawn;
     for (std::size_t k = 0; k < t.size(); ++k) {
-        s += (k == 0 ? "" : k + 1 == t.size() ? " and then " : ", then ") + std::string("triangle ") + std::to_string(k + 1) + " (";
+        std::string corners;
         for (int c = 0; c < 3; ++c)
-            s += (c ? ", " : "") + std::string("(") + number_text(t[k].corner[c].x) + ", " + number_text(t[k].corner[c].y) + ")";
-        s += ", depth " + number_text(t[k].depth) + ")";
+            corners += (c ? ", " : "") + std::string("(") + number_text(t[k].corner[c].x) + ", " + number_text(t[k].corner[c].y) + ")";
+        drawn.push_back(Wording(k == 0 ? say::first : say::then,
+                                {{"number", std::to_string(k + 1)}, {"corners", corners}, {"depth", number_text(t[k].depth)}}));
     }
-    return s + " on a 32 × 24 grid: corners in pixels, x to the right and y down, pixel (i, j) the square from (i, j) to "
-               "(i + 1, j + 1), taken at its centre; depth is the distance from the eye, and the nearer wins. (The machine "
-               "numbers them from 0: triangle 1 is its #0.)";
+    return Wording(say::grid, {}, {{"triangles", drawn}});
 }
+
+std::vector<Wording> triangle_choices(std::size_t triangles) {
+    std::vector<Wording> choices;
+    for (std::size_t k = 0; k < triangles; ++k) choices.push_back(Wording(say::triangle, {{"number", std::to_string(k + 1)}}));
+    choices.push_back(Wording(say::background));
+    return choices;
+}
+
+std::span<const algo::Saying> pixel_triangle_sayings() { return say::all; }
 
 nlohmann::json pixel_triangles_given(const std::vector<PixelTriangle>& t, const char* kind, int x, int y, std::size_t triangle) {
     nlohmann::json tri = nlohmann::json::array();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,8 +47,12 @@ std::vector<std::pair<int, int>> pixels_covered(const std::vector<PixelTriangle>
 // One of those pixels, by the dice; nothing when there is none.
 std::optional<std::pair<int, int>> pick_pixel(Dice& d, const std::vector<PixelTriangle>& t, int at_least);
 
-// "triangle 1 ((20, 15), (2, 9), (27, 14), depth 5), then triangle 2 (…)", and what the grid's numbers mean.
-std::string pixel_triangles_text(const std::vector<PixelTriangle>& t);
+// "triangle 1 ((20, 15), (2, 9), (27, 14), depth 5); then triangle 2 (…)", and what the grid's numbers mean.
+Wording pixel_triangles_text(const std::vector<PixelTriangle>& t);
+// "triangle 1" … "triangle n", then "none: the background": the choices of a question about what a pixel shows.
+std::vector<Wording> triangle_choices(std::size_t triangles);
+// The templates of those (the catalogues' [exercise.pixel_triangles]).
+std::span<const algo::Saying> pixel_triangle_sayings();
 nlohmann::json pixel_triangles_given(const std::vector<PixelTriangle>& t, const char* kind, int x, int y, std::size_t triangle);
 
 }  // namespace hsr::viz::practice

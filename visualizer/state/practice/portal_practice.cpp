@@ -18,6 +18,18 @@ constexpr double room = 2;  // each room is room × room in the plan
 
 std::string room_name(std::size_t k) { return std::string(1, char('A' + k)); }
 
+// What the question says, each template once (the catalogues' [exercise.portals] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying farthest{"portals.farthest",
+                          "Cells and portals: {rooms} square rooms in a row, {size} × {size} each in the plan, A from x = 0 to "
+                          "{size}, B next to it, and so on, all from y = 0 to {size}. The openings in the walls: {openings}. "
+                          "Which is the farthest room in A's PVS (some sightline from A reaches it through every opening on "
+                          "the way)?"};
+constexpr Saying opening{"portals.opening", "{from}–{to} at x = {x} from y = {y0} to {y1}"};
+constexpr Saying all[] = {farthest, opening};
+}  // namespace say
+
 struct Opening {
     double y0, y1;  // in the wall x = room · (k + 1) between rooms k and k + 1
 };
@@ -75,19 +87,20 @@ std::optional<Exercise> farthest_exercise(Dice& d, Level l) {
     }
     if (!started || !farthest || farthest_cell == 0) return std::nullopt;
     Exercise e;
-    std::string walls;
+    std::vector<Wording> walls;
     nlohmann::json given_openings = nlohmann::json::array();
     for (std::size_t k = 0; k < openings.size(); ++k) {
-        walls += (k ? "; " : "") + room_name(k) + "–" + room_name(k + 1) + " at x = " + number_text(room * double(k + 1)) +
-                 " from y = " + number_text(openings[k].y0) + " to " + number_text(openings[k].y1);
+        walls.push_back(Wording(say::opening, {{"from", room_name(k)},
+                                               {"to", room_name(k + 1)},
+                                               {"x", number_text(room * double(k + 1))},
+                                               {"y0", number_text(openings[k].y0)},
+                                               {"y1", number_text(openings[k].y1)}}));
         given_openings.push_back({room * double(k + 1), openings[k].y0, openings[k].y1});
     }
-    e.question = "Cells and portals: " + std::to_string(openings.size() + 1) + " square rooms in a row, " + number_text(room) +
-                 " × " + number_text(room) + " each in the plan, A from x = 0 to " + number_text(room) +
-                 ", B next to it, and so on, all from y = 0 to " + number_text(room) + ". The openings in the walls: " + walls +
-                 ". Which is the farthest room in A's PVS (some sightline from A reaches it through every opening on the way)?";
-    for (std::size_t k = 1; k <= openings.size(); ++k) e.choices.push_back(room_name(k));
-    e.answer = room_name(farthest_cell);
+    e.ask(Wording(say::farthest, {{"rooms", std::to_string(openings.size() + 1)}, {"size", number_text(room)}}, {{"openings", walls}}));
+    std::vector<Wording> rooms;
+    for (std::size_t k = 1; k <= openings.size(); ++k) rooms.push_back(Wording::as_is(room_name(k)));
+    e.offer(std::move(rooms), farthest_cell - 1);
     e.deciding = algo::describe(events[*farthest], model);
     e.deciding_step = *farthest;
     e.hold_at = *started;
@@ -104,7 +117,8 @@ std::vector<Topic> portal_topics() {
              [](Draw draw) {
                  Dice d(draw.seed);
                  return farthest_exercise(d, draw.level);
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

@@ -23,6 +23,33 @@ std::span<const Topic> topics() {
     return all;
 }
 
+std::vector<algo::Saying> practice_sayings() {
+    std::vector<algo::Saying> all;
+    for (const Topic& t : topics())
+        for (const auto group : t.sayings)  // topics share some (the pixel triangles)
+            for (const algo::Saying& s : group)
+                if (std::none_of(all.begin(), all.end(), [&](const algo::Saying& known) { return known.key == s.key; })) all.push_back(s);
+    return all;
+}
+
+void Exercise::ask(Wording w) {
+    question = english(w);
+    asked = std::move(w);
+}
+
+void Exercise::offer(std::vector<Wording> words, std::size_t right) {
+    choices.clear();
+    for (const Wording& w : words) choices.push_back(english(w));
+    answer = choices.at(right);
+    offered = std::move(words);
+}
+
+const Wording* Exercise::choice(std::string_view english) const {
+    for (std::size_t k = 0; k < choices.size() && k < offered.size(); ++k)
+        if (choices[k] == english) return &offered[k];
+    return nullptr;
+}
+
 const Topic* find_topic(std::string_view id) {
     for (const Topic& t : topics())
         if (t.id == id) return &t;
@@ -66,9 +93,18 @@ std::optional<double> number(std::string_view s) {
 }
 }  // namespace
 
-std::string lesson_toml(const Exercise& e, std::string_view scene_file) {
+std::string lesson_toml(const Exercise& e, std::string_view scene_file, const std::map<std::string, std::string>& titles) {
     std::string t = "# Written by hsrviz's practice: exercise " + std::to_string(e.index + 1) + " of series " + std::to_string(e.series) + "\n";
-    t += "title = \"Practice: " + e.topic + ", series " + std::to_string(e.series) + ", exercise " + std::to_string(e.index + 1) + "\"\n";
+    if (titles.empty()) {
+        t += "title = \"Practice: " + e.topic + ", series " + std::to_string(e.series) + ", exercise " + std::to_string(e.index + 1) + "\"\n";
+    } else {  // a JSON string is a TOML basic string
+        std::vector<std::string> languages;  // English first: a lesson's first language is what the command line says
+        if (titles.contains("en")) languages.push_back("en");
+        for (const auto& [language, title] : titles)
+            if (language != "en") languages.push_back(language);
+        t += "languages = " + nlohmann::json(languages).dump() + "\n";
+        for (const auto& [language, title] : titles) t += "title." + language + " = " + nlohmann::json(title).dump() + "\n";
+    }
     t += "algorithm = \"" + e.algorithm + "\"\n";
     t += "scene = \"" + std::string(scene_file) + "\"\n";
     if (!e.cull.empty()) t += "cull = \"" + e.cull + "\"\n";

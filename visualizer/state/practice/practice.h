@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
+#include "state/practice/wording.h"
 
 namespace hsr::viz::practice {
 
@@ -25,8 +27,11 @@ struct Exercise {
     std::uint64_t series = 0;
     std::uint64_t index = 0;            // exercise `index` of the series
     Level level = Level::easy;
-    std::string question;
-    std::vector<std::string> choices;   // the answer is one of them; empty when the answer is a number
+    std::string question;               // in English, as `hsrviz practice` prints it: `asked`'s English
+    std::vector<std::string> choices;   // the answer is one of them (the English of `offered`); empty when the
+                                        // answer is a number
+    Wording asked;                      // the question in words any language can say (ask())
+    std::vector<Wording> offered;       // the choices likewise (offer())
     std::string answer;                 // a choice, or the number as the machine computed it ("0.25")
     double tolerance = 0;               // how far a typed number may be from the answer and still be right
     std::string deciding;               // the sentence of the machine's event that decides the answer
@@ -38,6 +43,12 @@ struct Exercise {
     std::string algorithm;              // event is its step `deciding_step`
     std::string cull;                   // culling exercises: the pipeline's stages, as a lesson's `cull` names them
                                         // (empty: a lesson's default, every stage)
+
+    void ask(Wording w);
+    // The choices, and the right one among them.
+    void offer(std::vector<Wording> choices, std::size_t right);
+    // The choice written as `english` says in words (a reply given, the answer); nothing when it is no choice.
+    const Wording* choice(std::string_view english) const;
 };
 
 // A topic's exercise maker: the exercise for one seed, or nothing when the scene drawn was degenerate or the question
@@ -53,7 +64,12 @@ struct Topic {
     std::string_view title;
     std::vector<std::string_view> algorithms;  // whose lessons practise this topic (registry ids)
     MakeExercise make;
+    // the templates its questions and choices use ([exercise] in a catalogue): its own, and those it shares
+    std::vector<std::span<const algo::Saying>> sayings;
 };
+
+// Every topic's templates, each once: what the catalogues' [exercise] sections translate.
+std::vector<algo::Saying> practice_sayings();
 
 std::span<const Topic> topics();
 const Topic* find_topic(std::string_view id);
@@ -70,8 +86,8 @@ std::string decimal_text(double v, int digits);
 std::string number_text(double v);  // %g: six significant digits, as a question prints its scene's numbers
 
 // The lesson file the window plays an exercise from: its algorithm, its stages, and its scene saved as `scene_file`
-// (a name beside the lesson file).
-std::string lesson_toml(const Exercise& e, std::string_view scene_file);
+// (a name beside the lesson file); its title in English, or in each language of `titles` (language → title).
+std::string lesson_toml(const Exercise& e, std::string_view scene_file, const std::map<std::string, std::string>& titles = {});
 
 // One line of `hsrviz practice`'s JSON Lines.
 nlohmann::ordered_json to_json(const Exercise& e);

@@ -85,18 +85,33 @@ std::optional<Tested> run(const algo::Scene& scene) {
     return std::nullopt;
 }
 
-std::string setting_text(const Drawn& s) {
-    return "A perspective camera with near = " + ten_digit_text(s.near) + " and far = " + ten_digit_text(s.far) +
-           " stores depth in 24 bits as round((2^24 − 1)(a + b/z)), a = far/(far − near), b = far·near/(near − far). "
-           "Square 1 at distance z = " + ten_digit_text(s.farther) + " is drawn first, then square 2 at z = " +
-           ten_digit_text(s.nearer) + ", both facing the eye.";
+// What the questions say, each template once (the catalogues' [exercise.precision] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying setting{"precision.setting",
+                         "A perspective camera with near = {near} and far = {far} stores depth in 24 bits as "
+                         "round((2^24 − 1)(a + b/z)), a = far/(far − near), b = far·near/(near − far). Square 1 at distance "
+                         "z = {farther} is drawn first, then square 2 at z = {nearer}, both facing the eye."};
+constexpr Saying codes_apart{"precision.codes_apart", "{setting} How many codes apart are the two squares' depths at the middle pixel?"};
+constexpr Saying fight{"precision.fight",
+                       "{setting} Does square 2 pass the depth test at the middle pixel (the test is strict: nearer means a "
+                       "smaller code)?"};
+constexpr Saying passes{"precision.passes", "it passes: its code is smaller, square 2 is seen"};
+constexpr Saying fails{"precision.fails", "it fails: the two share a code, square 1 stays"};
+constexpr Saying all[] = {setting, codes_apart, fight, passes, fails};
+}  // namespace say
+
+std::vector<std::pair<std::string_view, std::vector<Wording>>> setting_of(const Drawn& s) {
+    return {{"setting",
+             {Wording(say::setting, {{"near", ten_digit_text(s.near)},
+                                     {"far", ten_digit_text(s.far)},
+                                     {"farther", ten_digit_text(s.farther)},
+                                     {"nearer", ten_digit_text(s.nearer)}})}}};
 }
 nlohmann::json given(const Drawn& s, const char* kind) {
     return {{"kind", kind}, {"near", s.near}, {"far", s.far}, {"bits", 24}, {"farther", s.farther}, {"nearer", s.nearer}};
 }
 
-const std::vector<std::string> fight_choices = {"it passes: its code is smaller, square 2 is seen",
-                                                "it fails: the two share a code, square 1 stays"};
 
 std::optional<Exercise> exercise_of(Dice& d, Level l, bool codes_apart) {
     // whether two squares under a code apart share one is the question: most of the fight's gaps are under one
@@ -107,14 +122,12 @@ std::optional<Exercise> exercise_of(Dice& d, Level l, bool codes_apart) {
     if (!tested) return std::nullopt;
     Exercise e;
     if (codes_apart) {
-        e.question = setting_text(*s) + " How many codes apart are the two squares' depths at the middle pixel?";
+        e.ask(Wording(say::codes_apart, {}, setting_of(*s)));
         e.answer = std::to_string(tested->event.stored - tested->event.incoming);
         e.tolerance = 0;
     } else {
-        e.question = setting_text(*s) + " Does square 2 pass the depth test at the middle pixel (the test is strict: "
-                                        "nearer means a smaller code)?";
-        e.choices = fight_choices;
-        e.answer = fight_choices[tested->event.passes ? 0 : 1];
+        e.ask(Wording(say::fight, {}, setting_of(*s)));
+        e.offer({Wording(say::passes), Wording(say::fails)}, tested->event.passes ? 0 : 1);
     }
     e.deciding = tested->sentence;
     e.deciding_step = tested->step;
@@ -131,7 +144,8 @@ std::vector<Topic> precision_topics() {
     return {{"precision", "Depth precision: the codes of a 24-bit buffer", {"zbuffer_fill"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return exercise_of(d, draw.level, d.coin());
-             }}};
+             },
+             {say::all}}};
 }
 
 }  // namespace hsr::viz::practice

@@ -55,10 +55,20 @@ std::optional<Cast> cast(Dice& d, Level l) {
     return Cast{std::move(*t), x, y, std::move(scene), std::move(events), *ray};
 }
 
+// What the questions say, each template once (the catalogues' [exercise.raycast] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying hits{"raycast.hits",
+                      "Ray casting, every triangle tested: {triangles} How many of the triangles does the ray through pixel "
+                      "({x}, {y}) hit?"};
+constexpr Saying nearest{"raycast.nearest", "Ray casting, every triangle tested: {triangles} Which triangle does the ray through pixel ({x}, {y}) see?"};
+constexpr Saying all[] = {hits, nearest};
+}  // namespace say
+
 // What both questions share: the scene, where the ray starts (the hold) and where it ends (the deciding event).
-Exercise exercise_on(Cast& c, const std::string& asked, const char* kind) {
+Exercise exercise_on(Cast& c, const algo::Saying& asked, const char* kind) {
     Exercise e;
-    e.question = "Ray casting, every triangle tested: " + pixel_triangles_text(c.triangles) + " " + asked;
+    e.ask(Wording(asked, {{"x", std::to_string(c.x)}, {"y", std::to_string(c.y)}}, {{"triangles", {pixel_triangles_text(c.triangles)}}}));
     e.deciding = algo::describe(c.events[c.ray.finished]);
     e.deciding_step = c.ray.finished;
     e.hold_at = c.ray.started;
@@ -68,13 +78,12 @@ Exercise exercise_on(Cast& c, const std::string& asked, const char* kind) {
     return e;
 }
 
-std::string through(const Cast& c) { return "the ray through pixel (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")"; }
 
 std::optional<Exercise> hits_exercise(Dice& d, Level l) {
     auto c = cast(d, l);
     if (!c) return std::nullopt;
     const int hits = c->ray.hits;
-    Exercise e = exercise_on(*c, "How many of the triangles does " + through(*c) + " hit?", "hits");
+    Exercise e = exercise_on(*c, say::hits, "hits");
     e.answer = std::to_string(hits);
     e.tolerance = 0;
     return e;
@@ -85,10 +94,8 @@ std::optional<Exercise> nearest_exercise(Dice& d, Level l) {
     if (!c) return std::nullopt;
     const auto index = std::get<algo::RayFinished>(c->events[c->ray.finished]).index;
     const std::size_t triangles = c->triangles.size();
-    Exercise e = exercise_on(*c, "Which triangle does " + through(*c) + " see?", "visible");
-    for (std::size_t k = 0; k < triangles; ++k) e.choices.push_back("triangle " + std::to_string(k + 1));
-    e.choices.push_back("none: the background");
-    e.answer = index < 0 ? e.choices.back() : e.choices[std::size_t(index)];
+    Exercise e = exercise_on(*c, say::nearest, "visible");
+    e.offer(triangle_choices(triangles), index < 0 ? triangles : std::size_t(index));
     return e;
 }
 
@@ -98,7 +105,8 @@ std::vector<Topic> raycast_topics() {
     return {{"raycast", "Ray casting: what a ray hits and sees", {"raycast_brute", "raycast_grid", "raycast_octree"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return d.coin() ? hits_exercise(d, draw.level) : nearest_exercise(d, draw.level);
-             }}};
+             },
+             {say::all, pixel_triangle_sayings()}}};
 }
 
 }  // namespace hsr::viz::practice

@@ -33,9 +33,20 @@ std::optional<int> pick_line(Dice& d, const std::vector<PixelTriangle>& t) {
     return lines[std::size_t(d.below(int(lines.size())))];
 }
 
-std::string line_text(int y) {
-    return "scan line " + std::to_string(y) + " (through the pixel centres at y = " + std::to_string(y) + ".5)";
-}
+// What the questions say, each template once (the catalogues' [exercise.scanline] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying active_edges{"scanline.active_edges",
+                              "The scan-line algorithm draws {triangles} How many edges are in the active edge table on scan "
+                              "line {y} (through the pixel centres at y = {y}.5)?"};
+constexpr Saying enter_x{"scanline.enter_x",
+                         "The scan-line algorithm draws {triangles} On scan line {y} (through the pixel centres at y = {y}.5), "
+                         "at what x does the line go into triangle {triangle} (its in/out flag turns in)? Two decimals are enough."};
+constexpr Saying span_owner{"scanline.span_owner",
+                            "The scan-line algorithm draws {triangles} When scan line {y} (through the pixel centres at y = "
+                            "{y}.5) is output as spans, which triangle colours pixel ({x}, {y})?"};
+constexpr Saying all[] = {active_edges, enter_x, span_owner};
+}  // namespace say
 
 std::optional<Exercise> active_edges_exercise(Dice& d, Level l) {
     const auto t = draw_pixel_triangles(d, l);
@@ -52,8 +63,7 @@ std::optional<Exercise> active_edges_exercise(Dice& d, Level l) {
     }
     if (!started || !last_crossing) return std::nullopt;
     Exercise e;
-    e.question = "The scan-line algorithm draws " + pixel_triangles_text(*t) + " How many edges are in the active edge table on " +
-                 line_text(*y) + "?";
+    e.ask(Wording(say::active_edges, {{"y", std::to_string(*y)}}, {{"triangles", {pixel_triangles_text(*t)}}}));
     e.answer = std::to_string(crossings);
     e.tolerance = 0;
     e.deciding = algo::describe(events[*last_crossing]);
@@ -82,9 +92,8 @@ std::optional<Exercise> enter_x_exercise(Dice& d, Level l) {
     const std::size_t step = entering[std::size_t(d.below(int(entering.size())))];
     const auto& crossed = std::get<algo::EdgeCrossed>(events[step]);
     Exercise e;
-    e.question = "The scan-line algorithm draws " + pixel_triangles_text(*t) + " On " + line_text(*y) +
-                 ", at what x does the line go into triangle " + std::to_string(crossed.polygon + 1) +
-                 " (its in/out flag turns in)? Two decimals are enough.";
+    e.ask(Wording(say::enter_x, {{"y", std::to_string(*y)}, {"triangle", std::to_string(crossed.polygon + 1)}},
+                  {{"triangles", {pixel_triangles_text(*t)}}}));
     e.answer = decimal_text(crossed.x, 4);
     e.tolerance = 0.005;
     e.deciding = algo::describe(events[step]);
@@ -112,11 +121,8 @@ std::optional<Exercise> span_owner_exercise(Dice& d, Level l) {
     if (!started || !span) return std::nullopt;
     const auto owner = std::get<algo::SpanColored>(events[*span]).polygon;
     Exercise e;
-    e.question = "The scan-line algorithm draws " + pixel_triangles_text(*t) + " When " + line_text(y) +
-                 " is output as spans, which triangle colours pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")?";
-    for (std::size_t k = 0; k < t->size(); ++k) e.choices.push_back("triangle " + std::to_string(k + 1));
-    e.choices.push_back("none: the background");
-    e.answer = owner < 0 ? e.choices.back() : e.choices[std::size_t(owner)];
+    e.ask(Wording(say::span_owner, {{"x", std::to_string(x)}, {"y", std::to_string(y)}}, {{"triangles", {pixel_triangles_text(*t)}}}));
+    e.offer(triangle_choices(t->size()), owner < 0 ? t->size() : std::size_t(owner));
     e.deciding = algo::describe(events[*span]);
     e.deciding_step = *span;
     e.hold_at = *started;
@@ -136,7 +142,8 @@ std::vector<Topic> scanline_topics() {
                      case 1: return enter_x_exercise(d, draw.level);
                      default: return span_owner_exercise(d, draw.level);
                  }
-             }}};
+             },
+             {say::all, pixel_triangle_sayings()}}};
 }
 
 }  // namespace hsr::viz::practice

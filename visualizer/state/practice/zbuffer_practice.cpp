@@ -22,8 +22,17 @@ std::vector<algo::ZBufferEvent> play(const algo::Scene& scene) {
     return events;
 }
 
-const std::vector<std::string> test_choices = {"it passes: the triangle is nearer, its colour and depth are written",
-                                               "it fails: what the buffer holds is nearer"};
+// What the questions say, each template once (the catalogues' [exercise.zbuffer] translate them).
+namespace say {
+using algo::Saying;
+constexpr Saying depth_test{"zbuffer.depth_test",
+                            "The z-buffer draws {triangles} When triangle {triangle} is drawn, pixel ({x}, {y}) is tested. "
+                            "Does it pass the depth test?"};
+constexpr Saying passes{"zbuffer.passes", "it passes: the triangle is nearer, its colour and depth are written"};
+constexpr Saying fails{"zbuffer.fails", "it fails: what the buffer holds is nearer"};
+constexpr Saying visible{"zbuffer.visible", "The z-buffer draws {triangles} Which triangle is seen at pixel ({x}, {y}) when all are drawn?"};
+constexpr Saying all[] = {depth_test, passes, fails, visible};
+}  // namespace say
 
 std::optional<Exercise> depth_test_exercise(Dice& d, Level l) {
     const auto t = draw_pixel_triangles(d, l);
@@ -44,10 +53,9 @@ std::optional<Exercise> depth_test_exercise(Dice& d, Level l) {
     if (!step_of_test) return std::nullopt;
     const auto& tested = std::get<algo::PixelTested>(events[*step_of_test]);
     Exercise e;
-    e.question = "The z-buffer draws " + pixel_triangles_text(*t) + " When triangle " + std::to_string(polygon + 1) + " is drawn, pixel (" + std::to_string(x) + ", " +
-                 std::to_string(y) + ") is tested. Does it pass the depth test?";
-    e.choices = test_choices;
-    e.answer = test_choices[tested.passes ? 0 : 1];
+    e.ask(Wording(say::depth_test, {{"triangle", std::to_string(polygon + 1)}, {"x", std::to_string(x)}, {"y", std::to_string(y)}},
+                  {{"triangles", {pixel_triangles_text(*t)}}}));
+    e.offer({Wording(say::passes), Wording(say::fails)}, tested.passes ? 0 : 1);
     e.deciding = algo::describe(events[*step_of_test], algo::DepthFormat::int24);
     e.deciding_step = *step_of_test;
     e.given = pixel_triangles_given(*t, "depth_test", x, y, polygon + 1);
@@ -75,11 +83,8 @@ std::optional<Exercise> visible_exercise(Dice& d, Level l) {
     }
     if (!last_write) return std::nullopt;
     Exercise e;
-    e.question = "The z-buffer draws " + pixel_triangles_text(*t) + " Which triangle is seen at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                 ") when all are drawn?";
-    for (std::size_t k = 0; k < t->size(); ++k) e.choices.push_back("triangle " + std::to_string(k + 1));
-    e.choices.push_back("none: the background");
-    e.answer = e.choices[std::get<algo::DepthWritten>(events[*last_write]).index];
+    e.ask(Wording(say::visible, {{"x", std::to_string(x)}, {"y", std::to_string(y)}}, {{"triangles", {pixel_triangles_text(*t)}}}));
+    e.offer(triangle_choices(t->size()), std::get<algo::DepthWritten>(events[*last_write]).index);
     e.deciding = algo::describe(events[*last_write], algo::DepthFormat::int24);
     e.deciding_step = *last_write;
     e.hold_at = std::min(first_comparison.value_or(*last_write), *last_write);  // the first triangle may win
@@ -95,7 +100,8 @@ std::vector<Topic> zbuffer_topics() {
     return {{"zbuffer", "Z-buffer: the depth test, pixel by pixel", {"zbuffer_fill"}, [](Draw draw) {
                  Dice d(draw.seed);
                  return d.coin() ? depth_test_exercise(d, draw.level) : visible_exercise(d, draw.level);
-             }}};
+             },
+             {say::all, pixel_triangle_sayings()}}};
 }
 
 }  // namespace hsr::viz::practice
