@@ -75,7 +75,9 @@ void pipeline(const ClipView& v) {
         ImGui::PopStyleColor();
     }
     wrapped_text(tr("clipping.stage_counts", {{"input", std::to_string(v.stage_input.size())}, {"emitted", std::to_string(v.stage_output.size())}}));
-    if (v.edge >= 0) ImGui::Text("edge v%d → v%zu", v.edge, (std::size_t(v.edge) + 1) % std::max<std::size_t>(1, v.stage_input.size()));
+    if (v.edge >= 0)
+        wrapped_text(tr("clipping.edge", {{"from", std::to_string(v.edge)},
+                                          {"to", std::to_string((std::size_t(v.edge) + 1) % std::max<std::size_t>(1, v.stage_input.size()))}}));
 }
 
 }  // namespace

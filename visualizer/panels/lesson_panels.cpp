@@ -183,7 +183,9 @@ void timeline_panel(const Session& s, const PlaybackState& playback, std::size_t
         ImGui::SetCursorScreenPos(ImVec2(x - tick, bar_max.y + 1));
         ImGui::PushID(int(k));
         if (ImGui::InvisibleButton("mark", ImVec2(2 * tick, 2 * tick))) out.seek = m.step;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s (step %zu)", m.question ? "question: " : "", m.title.c_str(), m.step);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s", tr(m.question ? "timeline.mark_question" : "timeline.mark",
+                                       {{"title", m.title}, {"step", std::to_string(m.step)}}).c_str());
         ImGui::PopID();
         const ImU32 colour = ImGui::GetColorU32(m.question ? ImVec4(0.94f, 0.89f, 0.26f, 1) : ImVec4(0.85f, 0.85f, 0.9f, 1));
         ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x, bar_max.y + 1), ImVec2(x - tick, bar_max.y + 1 + 2 * tick),
