@@ -400,6 +400,9 @@ TEST_CASE("practice grading: numbers with a comma or a minus sign, choices by nu
     CHECK_FALSE(grade(number, "a quarter"));
     CHECK_FALSE(grade(number, ""));
     CHECK_FALSE(grade(number, "nan"));
+    CHECK_FALSE(grade(number, "-0.25 m"));  // the whole reply is the number, or it is no number
+    CHECK_FALSE(grade(number, "+-0.25"));
+    CHECK_FALSE(grade(number, "-1e999"));   // out of a double's range
     hsr::viz::practice::Exercise choice;
     choice.choices = {"front-facing: kept", "back-facing: culled"};
     choice.answer = choice.choices[1];

@@ -15,6 +15,7 @@
 
 #include "scene/input_file.h"
 #include "analysis/painters.h"
+#include "cli/ids_png.h"
 #include "state/png_io.h"
 #include "state/arguments.h"
 #include "state/memory_budget.h"

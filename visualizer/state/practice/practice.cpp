@@ -2,9 +2,12 @@
 #include "state/practice/practice.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <locale>
+#include <sstream>
 #include <stdexcept>
 
 #include "state/practice/practice_random.h"
@@ -86,9 +89,14 @@ std::optional<double> number(std::string_view s) {
     for (char& c : text)
         if (c == ',') c = '.';  // 0,25 as German and many other languages write it
     if (text.rfind("−", 0) == 0) text.replace(0, std::string("−").size(), "-");
+    // the whole reply a number in the C locale's way (a stream: the browser build's C++ library has no
+    // std::from_chars for double); no sign but the minus, as from_chars would take
+    if (text.empty() || text.front() == '+' || std::isspace(static_cast<unsigned char>(text.front()))) return std::nullopt;
+    std::istringstream in(text);
+    in.imbue(std::locale::classic());
     double v = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+    in >> v;
+    if (in.fail() || in.peek() != std::char_traits<char>::eof() || !std::isfinite(v)) return std::nullopt;
     return v;
 }
 }  // namespace
