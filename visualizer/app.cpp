@@ -27,6 +27,7 @@
 #include "frame_panels.h"
 #include "gif_writer.h"
 #include "lesson_play.h"
+#include "platform.h"
 #include "panels/layout_audit.h"
 #include "panels/work_panel.h"
 #include "render/gl.h"
@@ -257,7 +258,8 @@ int run_app(const AppOptions& o) {
         std::vector<double> frame_ms;  // --frame-log
         std::uint64_t frame_start = SDL_GetPerformanceCounter();
         const bool offscreen = offscreen_driver();
-        while (running && !quit) {
+        run_frames([&] {  // one frame; false when the window is done (a browser calls it once per animation frame)
+            if (!running || quit) return false;
             // Input: scripted keys and gestures first (through the same queue), then every event
             UiActions actions;
             bool scripted_shift = false;
@@ -265,7 +267,7 @@ int run_app(const AppOptions& o) {
                 if (!push_scripted_input(o.keys[next_key], lp, renderer, scripted_shift)) {
                     std::fprintf(stderr, "hsrviz: --keys: unknown key or gesture \"%s\"\n", o.keys[next_key].c_str());
                     exit_code = 2;
-                    break;
+                    return false;
                 }
                 ++next_key;
             }
@@ -372,7 +374,8 @@ int run_app(const AppOptions& o) {
             }
             // Carry out the panels' requests (buttons, an answer clicked, the depth format, the 3D checkbox, a dragged eye)
             lp.update(from_panels, 0, o);
-        }
+            return running && !quit;
+        });
 
         // What the run wrote
         if (o.frame_log && !frame_ms.empty()) {

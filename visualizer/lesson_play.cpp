@@ -8,6 +8,7 @@
 #include <map>
 #include <new>
 
+#include "platform.h"
 #include "scene/input_file.h"
 #include "scene/toml_reader.h"
 #include "state/output_folder.h"
@@ -254,7 +255,7 @@ void Lessonplay::toggle_report(const std::string& scenes_dir) {
     if (!show_report) return cancel_report();
     if (!session() || !report.empty() || measuring.running()) return;
     const algo::AlgorithmInfo playing = session()->lesson().algorithm;
-    measuring.start([playing, scenes_dir](analysis::Progress& p) { return family_report(playing, scenes_dir, &p); });
+    measuring.start([playing, scenes_dir](analysis::Progress& p) { return family_report(playing, scenes_dir, &p); }, can_start_threads());
 }
 
 void Lessonplay::collect_report() {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "panels/panel_style.h"
+#include "platform.h"
 #include "state/glyphs.h"
 
 namespace hsr::viz {
@@ -47,9 +48,10 @@ bool Window::open(const AppOptions& o) {
         std::fprintf(stderr, "hsrviz: SDL_Init failed: %s\n", SDL_GetError());
         return false;
     }
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
-    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
+    const GlProfile& profile = gl_profile();
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, profile.es ? SDL_GL_CONTEXT_PROFILE_ES : SDL_GL_CONTEXT_PROFILE_CORE);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, profile.major);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, profile.minor);
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
     SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
     // An interactive window opens as the last one closed (unless --size says otherwise); scripted ones at their size
@@ -67,7 +69,7 @@ bool Window::open(const AppOptions& o) {
     }
     gl = SDL_GL_CreateContext(window);
     if (!gl) {
-        std::fprintf(stderr, "hsrviz: cannot create an OpenGL 3.3 context: %s\n", SDL_GetError());
+        std::fprintf(stderr, "hsrviz: cannot create an OpenGL%s %d.%d context: %s\n", profile.es ? " ES" : "", profile.major, profile.minor, SDL_GetError());
         return false;
     }
     SDL_GL_MakeCurrent(window, gl);
@@ -97,7 +99,7 @@ void setup_imgui(const Window& w, const AppOptions& o) {
     }
     unscaled_style() = ImGui::GetStyle();
     ImGui_ImplSDL2_InitForOpenGL(w.window, w.gl);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(gl_profile().glsl_version);
     apply_scale(initial_scale(o));
 }
 

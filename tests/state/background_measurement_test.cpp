@@ -51,6 +51,20 @@ TEST_CASE("a measurement in the background gives its rows once", "[state][report
     CHECK(m.fraction() == 1.f);
 }
 
+TEST_CASE("where no thread can be started, the measurement runs at once and take() has it", "[state][report]") {
+    BackgroundMeasurement m;
+    m.start([](Progress& p) { return slow_family(p, 3); }, false);
+    const auto o = m.take();  // no waiting: it ran inside start
+    REQUIRE(o);
+    CHECK(o->error.empty());
+    CHECK(o->rows.size() == 3);
+    CHECK_FALSE(m.running());
+    m.start([](Progress&) -> std::vector<Measurement> { throw std::runtime_error("a scene file is gone"); }, false);
+    const auto failed = m.take();
+    REQUIRE(failed);
+    CHECK(failed->error == "a scene file is gone");
+}
+
 TEST_CASE("a cancelled measurement ends before its next run and says it was cancelled", "[state][report]") {
     BackgroundMeasurement m;
     m.start([](Progress& p) { return slow_family(p, 100000); });  // 100 s if nobody stopped it

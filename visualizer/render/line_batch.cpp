@@ -7,10 +7,14 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "platform.h"
+
 namespace hsr::viz {
 namespace {
 
-constexpr const char* vertex_shader = R"(#version 330 core
+// The shaders' bodies: the same GLSL in OpenGL 3.3 core and in OpenGL ES 3.0 (WebGL 2); their first line is the
+// platform's (platform.h).
+constexpr const char* vertex_shader = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec4 color;
 uniform mat4 mvp;
@@ -22,14 +26,17 @@ void main() {
     v_color = color;
 })";
 
-constexpr const char* fragment_shader = R"(#version 330 core
+constexpr const char* fragment_shader = R"(
 in vec4 v_color;
 out vec4 frag;
 void main() { frag = v_color; })";
 
-GLuint compile(GLenum type, const char* source) {
+GLuint compile(GLenum type, const char* body) {
+    const GlProfile& gl = gl_profile();
+    const std::string source = std::string(gl.glsl_version) + "\n" + (type == GL_FRAGMENT_SHADER ? gl.fragment_preamble : "") + body;
+    const char* text = source.c_str();
     const GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, nullptr);
+    glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);

@@ -20,21 +20,23 @@ void BackgroundMeasurement::stop() {
     wait();
 }
 
-void BackgroundMeasurement::start(Measure measure) {
+void BackgroundMeasurement::start(Measure measure, bool on_a_thread) {
     stop();
     shared_ = std::make_shared<Shared>();
-    thread_ = std::thread([shared = shared_, measure = std::move(measure)] {
+    const auto measure_into = [](Shared& shared, const Measure& m) {
         Outcome outcome;
         try {
-            outcome.rows = measure(shared->progress);
+            outcome.rows = m(shared.progress);
         } catch (const analysis::MeasurementCancelled& e) {
             outcome.error = e.what(), outcome.cancelled = true;
         } catch (const std::exception& e) {  // a scene file gone, say: said in the window, not a crash
             outcome.error = e.what();
         }
-        const std::lock_guard lock(shared->mutex);
-        shared->outcome = std::move(outcome);
-    });
+        const std::lock_guard lock(shared.mutex);
+        shared.outcome = std::move(outcome);
+    };
+    if (!on_a_thread) return measure_into(*shared_, measure);
+    thread_ = std::thread([measure_into, shared = shared_, measure = std::move(measure)] { measure_into(*shared, measure); });
 }
 
 void BackgroundMeasurement::cancel() {

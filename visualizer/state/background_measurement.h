@@ -24,8 +24,9 @@ public:
     BackgroundMeasurement& operator=(const BackgroundMeasurement&) = delete;
     ~BackgroundMeasurement();  // cancels and waits
 
-    // Starts measure(progress) on its own thread (cancelling and waiting for one still running).
-    void start(Measure measure);
+    // Starts measure(progress) on its own thread (cancelling and waiting for one still running); or, where no thread
+    // can be started (a browser page without workers), measures here and now, and take() has the rows at once.
+    void start(Measure measure, bool on_a_thread = true);
     // Asks the running measurement to stop; it ends before its next timed run.
     void cancel();
     // Cancels and waits for the thread to end (a moment: the next timed run does not start); take() then has it.
