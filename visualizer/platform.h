@@ -13,6 +13,7 @@ struct GlProfile {
     bool es = false;                    // OpenGL ES (WebGL 2) rather than a core profile
     const char* glsl_version = "";      // every shader's first line ("#version 330 core")
     const char* fragment_preamble = ""; // what a fragment shader needs before its body (ES: a float precision)
+    bool browser_paced = false;         // a browser's animation frames pace the window (no swap interval to set)
 };
 const GlProfile& gl_profile();
 

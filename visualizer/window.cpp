@@ -73,7 +73,7 @@ bool Window::open(const AppOptions& o) {
         return false;
     }
     SDL_GL_MakeCurrent(window, gl);
-    SDL_GL_SetSwapInterval(1);
+    if (!profile.browser_paced) SDL_GL_SetSwapInterval(1);
     return true;
 }
 

@@ -12,13 +12,18 @@ for tool in bash grep cat; do ln -s "$(command -v $tool)" "bin/$tool"; done
 printf '#!/bin/sh\necho 1000\n' > bin/id
 printf '#!/bin/sh\nexit 1\n' > bin/dpkg-query
 chmod +x bin/id bin/dpkg-query
-for need in run test ci; do
+for need in run test ci web; do
   rc=0; PATH="$work/bin" bash "$src/scripts/install-deps" "$need" > "$need.out" 2> "$need.err" || rc=$?
   cat "$need.err"
   test "$rc" -eq 1
   grep -q "needs root. Ask an administrator to run:" "$need.err"
-  grep -q "^  apt-get install -y --no-install-recommends .*libsdl2-dev" "$need.err"
+  grep -q "^  apt-get install -y --no-install-recommends " "$need.err"
 done
+for need in run test ci; do grep -q "^  apt-get install -y --no-install-recommends .*libsdl2-dev" "$need.err"; done
+# the browser build: emscripten and a browser, none of the desktop's libraries or test tools
+grep -q " emscripten" web.err
+grep -q " chromium" web.err
+if grep -q -e libsdl2-dev -e catch2 -e clang "web.err"; then echo "scripts/web would install the desktop's packages"; exit 1; fi
 # by purpose: the window alone needs no test framework, benchmark library, X server or clang
 if grep -q -e catch2 -e libbenchmark-dev -e xvfb -e clang "run.err"; then echo "scripts/run would install test tools"; exit 1; fi
 grep -q "catch2" test.err

@@ -11,8 +11,9 @@ while IFS= read -r -d '' file; do
     echo "no SPDX licence line in the first two lines of $file"
     missing=$((missing + 1))
   fi
-done < <(find algorithms visualizer tests scripts .ci CMakeLists.txt \
-           \( -name '*.cpp' -o -name '*.h' -o -name '*.sh' -o -name '*.py' -o -name 'CMakeLists.txt' -o -path 'scripts/*' -o -path '.ci/*' \) \
+done < <(find algorithms visualizer tests scripts .ci web cmake CMakeLists.txt \
+           \( -name '*.cpp' -o -name '*.h' -o -name '*.sh' -o -name '*.py' -o -name 'CMakeLists.txt' -o -name '*.cmake' \
+              -o -name '*.html' -o -path 'scripts/*' -o -path '.ci/*' -o -path 'web/compat/*' \) \
            -type f -not -path '*/corpus/*' -print0)
 test "$missing" -eq 0
 echo "every source, build file and script names its licence"

@@ -119,7 +119,7 @@ void LineBatch::draw(const glm::mat4& view_projection, float line_width, float p
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glEnable(GL_PROGRAM_POINT_SIZE);
+    if (!gl_profile().es) glEnable(GL_PROGRAM_POINT_SIZE);  // ES always takes gl_PointSize from the shader
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 

@@ -1,0 +1,15 @@
+# SPDX-License-Identifier: MIT
+# The page: hsrviz.html, .js, .wasm and .data (the lessons, scenes, string catalogues and the DejaVu fonts, packed at
+# the paths the window reads them from), in the build folder's site/.
+add_executable(hsrviz ${PROJECT_SOURCE_DIR}/web/main_web.cpp)
+target_link_libraries(hsrviz PRIVATE hsr_window hsr_state hsr_analysis hsr_warnings)
+set(fonts /usr/share/fonts/truetype/dejavu)
+target_link_options(hsrviz PRIVATE
+  -sALLOW_MEMORY_GROWTH=1 -sMINIFY_HTML=0  # (Debian 12 emscripten's minifier call is broken)
+  "SHELL:--shell-file ${PROJECT_SOURCE_DIR}/web/shell.html"
+  "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/lessons@/hsrviz/lessons"
+  "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/assets@/hsrviz/assets"
+  "SHELL:--preload-file ${fonts}/DejaVuSans.ttf@${fonts}/DejaVuSans.ttf"
+  "SHELL:--preload-file ${fonts}/DejaVuSansMono.ttf@${fonts}/DejaVuSansMono.ttf")
+set_target_properties(hsrviz PROPERTIES SUFFIX ".html" RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site
+                      LINK_DEPENDS ${PROJECT_SOURCE_DIR}/web/shell.html)
