@@ -184,6 +184,16 @@ void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const Ap
     if (offscreen_driver()) glFinish();
 }
 
+// Where the player stands, as the screenshot's line and the page's state line say it: "step 3 of 64, paused,
+// question open" (empty when no lesson loaded).
+std::string player_state(const Lessonplay& lp) {
+    const Session* s = lp.session();
+    if (!s) return {};
+    return "step " + std::to_string(s->cursor()) + " of " + std::to_string(s->known()) + (s->complete() ? "" : "+") + ", " +
+           (lp.playback.playing ? "playing" : "paused") + (lp.classroom.open_question(*s) ? ", question open" : "") +
+           (lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
+}
+
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
 bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer& r, bool& shift_held) {
     const auto input = parse_scripted_input(text);
@@ -346,10 +356,7 @@ int run_app(const AppOptions& o) {
             const std::uint64_t ready = std::max<std::uint64_t>(std::uint64_t(o.frames), o.keys.size());
             const bool settled = !lp.column.moved() && layout_problems().empty();
             if (o.screenshot && keys_pressed && frame >= ready && (settled || frame >= ready + 8)) {
-                if (const Session* s = lp.session())
-                    std::printf("hsrviz: at step %zu of %zu%s, %s%s%s\n", s->cursor(), s->known(), s->complete() ? "" : "+",
-                                lp.playback.playing ? "playing" : "paused", lp.classroom.open_question(*s) ? ", question open" : "",
-                                lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
+                if (lp.session()) std::printf("hsrviz: at %s\n", player_state(lp).c_str());
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
@@ -374,6 +381,9 @@ int run_app(const AppOptions& o) {
             }
             // Carry out the panels' requests (buttons, an answer clicked, the depth format, the 3D checkbox, a dragged eye)
             lp.update(from_panels, 0, o);
+            publish_state(player_state(lp) + (lp.session() && lp.classroom.questions() > 0
+                                                  ? ", score " + std::to_string(lp.classroom.right()) + " of " + std::to_string(lp.classroom.answered())
+                                                  : ""));
             return running && !quit;
         });
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 namespace hsr::viz {
 
@@ -24,5 +25,9 @@ void run_frames(const std::function<bool()>& frame);
 // Can the window start a thread (the run-time report's measurement in the background)? A browser page without
 // worker threads cannot: the work then runs in the frame that asks for it.
 bool can_start_threads();
+
+// The player's state in a line a page's script can read ("step 3 of 64, paused, question open, score 1 of 2"), once
+// a frame: the browser's tests read it; the desktop has no use for it.
+void publish_state(const std::string& line);
 
 }  // namespace hsr::viz

@@ -16,4 +16,6 @@ void run_frames(const std::function<bool()>& frame) {
 
 bool can_start_threads() { return true; }
 
+void publish_state(const std::string&) {}
+
 }  // namespace hsr::viz

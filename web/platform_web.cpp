@@ -3,6 +3,8 @@
 // threads (the page is built without workers).
 #include <emscripten.h>
 
+#include <string>
+
 #include "platform.h"
 
 namespace hsr::viz {
@@ -27,5 +29,12 @@ void run_frames(const std::function<bool()>& frame) {
 }
 
 bool can_start_threads() { return false; }
+
+void publish_state(const std::string& line) {
+    static std::string shown;
+    if (line == shown) return;
+    shown = line;
+    EM_ASM({ document.getElementById('state').textContent = UTF8ToString($0); }, line.c_str());
+}
 
 }  // namespace hsr::viz
