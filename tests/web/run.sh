@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The browser tests: puppeteer-core from npm (into BUILD/node, once; it never downloads a browser: Debian's chromium
+# drives the page), the built page served on a free local port, then page_test.js.
+#   bash tests/web/run.sh BUILD_DIR     (BUILD_DIR: where scripts/web built the page, build-web)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+build=$(cd "$1" && pwd)
+node_dir=$build/node
+if [ ! -d "$node_dir/node_modules/puppeteer-core" ]; then
+  mkdir -p "$node_dir" && cp "$here/package.json" "$node_dir/"
+  (cd "$node_dir" && PUPPETEER_SKIP_DOWNLOAD=1 npm install --no-audit --no-fund --silent)
+fi
+port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+python3 -m http.server "$port" --bind 127.0.0.1 --directory "$build/site" > "$build/server.log" 2>&1 &
+server=$!
+trap 'kill $server 2>/dev/null || true' EXIT
+for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/hsrviz.html" > /dev/null && break; sleep 0.1; done
+mkdir -p "$build/browser-test"
+NODE_PATH=$node_dir/node_modules node "$here/page_test.js" "http://127.0.0.1:$port/hsrviz.html" "$build/browser-test"
