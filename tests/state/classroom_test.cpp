@@ -187,7 +187,7 @@ TEST_CASE("check reports every problem of a file, each with its line and the fie
 
 TEST_CASE("the student's language is kept across lessons; the narration follows it where the lesson has it", "[lesson][classroom]") {
     auto german = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
-    auto english_only = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/05_bsp_traversal.toml"));
+    auto english_only = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/19_portals_render.toml"));
     REQUIRE(english_only->lesson().languages == std::vector<std::string>{"en"});
     Classroom room;
     room.attach(*english_only);
