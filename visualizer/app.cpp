@@ -23,6 +23,8 @@
 
 #include "capture.h"
 #include "state/output_folder.h"
+#include "state/place_link.h"
+#include "state/trace.h"
 #include "state/strings.h"
 #include "frame_panels.h"
 #include "gif_writer.h"
@@ -69,6 +71,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_v: a.toggle_3d = true; break;  // the family's other view: z-buffer 3D, portals walk-through, culling camera
         case SDLK_n: a.next_lesson = shift ? -1 : 1; break;  // the next (previous) lesson of the course
         case SDLK_m: a.toggle_menu = true; break;
+        case SDLK_o: a.open_file = true; break;
         case SDLK_x: a.toggle_practice = true; break;
         case SDLK_PERIOD:
         case SDLK_KP_PERIOD: a.typed = '.'; break;
@@ -194,6 +197,36 @@ std::string player_state(const Lessonplay& lp) {
            (lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
 }
 
+// What the window remembers now: the column, the language, the practice scores and the type's size always; the
+// window's size and place (`with_place`) at the end of a run a person sized it in.
+WindowSettings settings_now(const WindowSettings& before, const Lessonplay& lp, const Window& w, const AppOptions& o, bool with_place) {
+    WindowSettings keep = before;
+    keep.side = lp.side;
+    keep.language = lp.classroom.chosen_language();
+    keep.practice = lp.practice.records();
+    // the type's size chosen with Ctrl+± (Ctrl+0, back to the screen's, forgets it); a projector's and --scale's are their own
+    if (!o.projector && o.scale <= 0) keep.scale = lp.scale != lp.first_scale ? std::optional<float>(lp.scale) : std::nullopt;
+    if (with_place && interactive(o) && !o.projector) {
+        const Uint32 flags = SDL_GetWindowFlags(w.window);
+        keep.maximized = (flags & SDL_WINDOW_MAXIMIZED) != 0;
+        if (!keep.maximized && !(flags & SDL_WINDOW_FULLSCREEN)) {
+            int x = 0, y = 0;
+            SDL_GetWindowSize(w.window, &keep.width, &keep.height);
+            SDL_GetWindowPosition(w.window, &x, &y);
+            keep.x = x, keep.y = y;
+        }
+    }
+    return keep;
+}
+
+void remember(const std::string& path, WindowSettings& saved, const WindowSettings& now) {
+    if (now == saved) return;
+    if (const std::string why = write_window_settings(path, now); !why.empty())
+        std::fprintf(stderr, "hsrviz: the window's settings were not saved: %s\n", algo::printable(why).c_str());
+    else keep_written(path);
+    saved = now;  // (a failed write is said once, not every frame)
+}
+
 // --keys: the next scripted key or gesture, pushed through SDL's queue as a person's would be. False: unknown.
 bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer& r, bool& shift_held) {
     const auto input = parse_scripted_input(text);
@@ -202,6 +235,15 @@ bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer
     if (input->kind == ScriptedInput::Kind::key) {
         key_event(input->key, e);
         SDL_PushEvent(&e);
+        return true;
+    }
+    if (input->kind == ScriptedInput::Kind::drop) {  // as SDL tells of files dropped (the window frees the names)
+        for (const std::string& file : input->files) {
+            e = SDL_Event{};
+            e.type = SDL_DROPFILE;
+            e.drop.file = SDL_strdup(file.c_str());
+            if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
+        }
         return true;
     }
     // a gesture names points as its family's view does (the fat pixels take grid pixels, others the plane z = 0)
@@ -250,9 +292,20 @@ int run_app(const AppOptions& o) {
         lp.side = settings.side;
         lp.practice.restore(settings.practice);
         lp.scale = lp.first_scale = initial_scale(o);
+        if (!o.projector && o.scale <= 0 && settings.scale) lp.scale = *settings.scale;  // the size last chosen with Ctrl+±
         lp.load(o);
-        float applied_scale = lp.scale;
-        if (!settings.language.empty()) lp.classroom.choose_language(settings.language);  // the language last chosen
+        float applied_scale = lp.first_scale;  // as the window opened (a remembered size is applied at the first frame)
+        if (o.language) lp.classroom.choose_language(*o.language);  // a link's
+        else if (!settings.language.empty()) lp.classroom.choose_language(settings.language);  // the language last chosen
+        if (o.start_step && lp.session()) lp.session()->seek(*o.start_step);
+        WindowSettings saved = settings;  // as the settings file has them now
+        // the page's script may ask where the player stands (the desktop's page-less platform never asks)
+        answer_queries([&lp](const std::string& question) {
+            if (question != "trace" || !lp.session()) return std::string();
+            const TraceSummary played = played_trace(*lp.session());
+            return hex(played.hash) + " " + std::to_string(played.events);
+        });
+        std::string linked_path, linked_name;  // the lesson's name in a link, found once per lesson
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
         lp.questions_hold = !o.record_dir && !o.gif;  // recordings and slides show the whole lesson
@@ -288,10 +341,12 @@ int run_app(const AppOptions& o) {
             if (interactive(o) && !lp.playback.playing && !note_showing && !lp.measuring.running() && SDL_GetTicks64() > awake_until)
                 SDL_WaitEventTimeout(nullptr, 500);
             SDL_Event e;
+            std::vector<std::string> dropped;  // files dropped on the window (or picked in a browser) together
             while (SDL_PollEvent(&e)) {
                 awake_until = SDL_GetTicks64() + 1000;
                 ImGui_ImplSDL2_ProcessEvent(&e);
                 if (e.type == SDL_QUIT) running = false;
+                if (e.type == SDL_DROPFILE) dropped.emplace_back(e.drop.file), SDL_free(e.drop.file);
                 if (!io.WantCaptureKeyboard) keys(e, actions);
                 if (const auto p = pointer_of(e, io.WantCaptureMouse)) {  // the family's gestures, else orbit the 3D view
                     const ViewGeometry g = geometry_now(lp, renderer);
@@ -303,6 +358,9 @@ int run_app(const AppOptions& o) {
                 if (e.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse) lp.camera.zoom(float(e.wheel.y));
             }
             if (scripted_shift) SDL_SetModState(KMOD_NONE);
+            if (!dropped.empty()) actions.open_lesson = file_to_open(dropped);
+            if (actions.open_file && !pick_files())
+                lp.tell("to open a lesson or scene file of your own, drop it on the window", tr("notes.drop_to_open"));
 
             // The window's title names the lesson playing (a teacher switching lessons sees which one is up)
             const std::string title = lp.session() ? "hsrviz — " + lp.session()->lesson().title : "hsrviz";
@@ -340,7 +398,9 @@ int run_app(const AppOptions& o) {
             }
             if (lp.export_pending && lp.session()) {
                 lp.export_pending = false;
-                lp.tell(export_lesson(*lp.session(), lp.path, lp.algorithm, width, height));
+                std::vector<std::string> written;
+                lp.tell(export_lesson(*lp.session(), lp.path, lp.algorithm, width, height, written));
+                for (const std::string& file : written) offer_download(file);
             }
             if (o.gif) {
                 if (!gif && !gif_failed) {
@@ -356,7 +416,11 @@ int run_app(const AppOptions& o) {
             const std::uint64_t ready = std::max<std::uint64_t>(std::uint64_t(o.frames), o.keys.size());
             const bool settled = !lp.column.moved() && layout_problems().empty();
             if (o.screenshot && keys_pressed && frame >= ready && (settled || frame >= ready + 8)) {
-                if (lp.session()) std::printf("hsrviz: at %s\n", player_state(lp).c_str());
+                if (lp.session()) {
+                    std::printf("hsrviz: at %s\n", player_state(lp).c_str());
+                    const TraceSummary played = played_trace(*lp.session());
+                    std::printf("hsrviz: played trace %s %llu\n", hex(played.hash).c_str(), static_cast<unsigned long long>(played.events));
+                }
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
@@ -384,6 +448,10 @@ int run_app(const AppOptions& o) {
             publish_state(player_state(lp) + (lp.session() && lp.classroom.questions() > 0
                                                   ? ", score " + std::to_string(lp.classroom.right()) + " of " + std::to_string(lp.classroom.answered())
                                                   : ""));
+            if (lp.path != linked_path) linked_name = linked_lesson_name(linked_path = lp.path);
+            if (lp.session()) publish_place(linked_name, lp.session()->cursor());
+            // what the window remembers is written as it changes (a page is closed, never quit: it has no "at exit")
+            remember(settings_path, saved, settings_now(saved, lp, w, o, false));
             return running && !quit;
         });
 
@@ -407,24 +475,9 @@ int run_app(const AppOptions& o) {
             if (!lp.session()) exit_code = 1;
         }
 
-        // Remember the layout: the column and the language always, the window's size and place when a person sized it
-        WindowSettings keep = settings;
-        keep.side = lp.side;
-        keep.language = lp.classroom.chosen_language();
-        keep.practice = lp.practice.records();
-        if (interactive(o) && !o.projector) {
-            const Uint32 flags = SDL_GetWindowFlags(w.window);
-            keep.maximized = (flags & SDL_WINDOW_MAXIMIZED) != 0;
-            if (!keep.maximized && !(flags & SDL_WINDOW_FULLSCREEN)) {
-                int x = 0, y = 0;
-                SDL_GetWindowSize(w.window, &keep.width, &keep.height);
-                SDL_GetWindowPosition(w.window, &x, &y);
-                keep.x = x, keep.y = y;
-            }
-        }
-        if (keep != settings)
-            if (const std::string why = write_window_settings(settings_path, keep); !why.empty())
-                std::fprintf(stderr, "hsrviz: the window's settings were not saved: %s\n", algo::printable(why).c_str());
+        // Remember the layout, and now the window's size and place too
+        remember(settings_path, saved, settings_now(saved, lp, w, o, true));
+        answer_queries({});
     }
 
     // Cleanup

@@ -25,6 +25,8 @@ struct AppOptions {
     bool projector = false;                    // fullscreen, larger type for the back row, high contrast
     float scale = 0;                           // the size of type and panels (1 = normal); 0: 1.3 for a projector, else
                                                // the screen's (2 on a high-DPI screen)
+    std::optional<std::size_t> start_step;     // open the lesson at this step (a link's)
+    std::optional<std::string> language;       // narrate in this language rather than the one last chosen (a link's)
     std::vector<std::string> keys;             // pressed one per frame through SDL's event queue, e.g. "Shift+Right"
 };
 

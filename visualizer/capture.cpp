@@ -44,7 +44,8 @@ bool write_png(const std::string& path, int w, int h) {
     return write_png(path, w, h, 4, pixels.data(), true);
 }
 
-std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height) {
+std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height,
+                          std::vector<std::string>& written) {
     const std::string dir = output_folder("hsrviz-export"), stem = std::filesystem::path(s.lesson().source).stem().string();
     if (!make_folder(dir)) return "could not make the folder " + dir;
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
@@ -52,6 +53,7 @@ std::string export_lesson(const Session& s, const std::string& path, const std::
     const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
                     static_cast<bool>(std::ofstream(scene) << "# exported by hsrviz " HSR_VERSION " at step " << s.cursor() << "\n"
                                                             << algo::scene_toml(s.lesson().scene));
+    if (ok) written = {png, trace, scene};
     return std::string(ok ? "exported " : "could not export all of ") + png + ", " + trace + " and " + scene;
 }
 

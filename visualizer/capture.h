@@ -17,6 +17,8 @@ bool write_png(const std::string& path, int width, int height);
 std::vector<unsigned char> frame_pixels(int width, int height, bool half);
 // E: the window as a PNG, the lesson's trace, and its scene as TOML, into hsrviz-export/; says what it wrote.
 // Returns what it did, as a sentence for the window's note ("exported …" or "could not export all of …").
-std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height);
+// `written` gets the files written (a browser offers them as downloads).
+std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height,
+                          std::vector<std::string>& written);
 
 }  // namespace hsr::viz

@@ -287,6 +287,7 @@ void Lessonplay::save_edited(const algo::Scene& scene) {
     const std::string file = folder + "/" + std::filesystem::path(path).stem().string() + "-edited.toml";
     const bool ok = make_folder(folder) && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
     tell((ok ? "saved the edited scene to " : "could not write ") + file, tr(ok ? "notes.saved" : "notes.not_written", {{"file", file}}));
+    if (ok) offer_download(file);
 }
 
 void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) {

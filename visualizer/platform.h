@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 // What differs between the desktop window and the same window in a browser, in one place: the OpenGL profile and
-// its shading language, how frames are driven, and whether the window may start threads. The desktop's answers are
+// its shading language, how frames are driven, whether the window may start threads, and how files reach the person
+// and come back (the browser's downloads, file picker and storage; the desktop's disk). The desktop's answers are
 // in platform_desktop.cpp; the browser's in web/platform_web.cpp (web/CMakeLists.txt builds that one instead).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -29,5 +31,27 @@ bool can_start_threads();
 // The player's state in a line a page's script can read ("step 3 of 64, paused, question open, score 1 of 2"), once
 // a frame: the browser's tests read it; the desktop has no use for it.
 void publish_state(const std::string& line);
+
+// Where the player stands, as a link names it: the shipped lesson's name ("05_bsp_traversal"; empty for any other
+// file) and the step. A browser writes them into the page's address (#lesson=05_bsp_traversal&step=12), so that a
+// teacher copies the exact moment; the desktop has no address.
+void publish_place(const std::string& lesson, std::size_t step);
+
+// What the page's script may ask the window, answered by `answer` ("trace": the hash of the events played so far,
+// for the test that compares the page with the desktop after the same keys). The desktop has no page to ask.
+void answer_queries(std::function<std::string(const std::string& question)> answer);
+
+// A file written to outlive the run (the settings): a browser copies its in-memory files into its own storage
+// (IndexedDB); the desktop wrote it to disk already.
+void keep_written(const std::string& path);
+
+// A file written for the person (an export, a saved scene): a browser offers it as a download; on the desktop it is
+// where the note says.
+void offer_download(const std::string& path);
+
+// O: the person asks to open a lesson or scene file of their own. A browser shows its file picker (the chosen files
+// arrive as SDL_DROPFILE events, as files dropped on the window do). False where there is no picker: the desktop's
+// person drops the file on the window, or names it on the command line.
+bool pick_files();
 
 }  // namespace hsr::viz

@@ -17,5 +17,10 @@ void run_frames(const std::function<bool()>& frame) {
 bool can_start_threads() { return true; }
 
 void publish_state(const std::string&) {}
+void publish_place(const std::string&, std::size_t) {}
+void answer_queries(std::function<std::string(const std::string&)>) {}
+void keep_written(const std::string&) {}
+void offer_download(const std::string&) {}
+bool pick_files() { return false; }
 
 }  // namespace hsr::viz

@@ -41,12 +41,20 @@ std::optional<ScriptedInput> parse_scripted_input(const std::string& token) {
         if (token.rfind(p, 0) != 0) continue;
         std::vector<double> v;
         if (!numbers(token.substr(p.size()), count, v)) return std::nullopt;
-        ScriptedInput s{kind, "", {v[0], v[1]}, count == 4 ? glm::dvec2(v[2], v[3]) : glm::dvec2(v[0], v[1])};
+        ScriptedInput s{kind, "", {v[0], v[1]}, count == 4 ? glm::dvec2(v[2], v[3]) : glm::dvec2(v[0], v[1]), {}};
+        return s;
+    }
+    if (token.rfind("Drop:", 0) == 0) {
+        ScriptedInput s{ScriptedInput::Kind::drop, "", {}, {}, {}};
+        std::stringstream in(token.substr(5));
+        for (std::string file; std::getline(in, file, ';');)
+            if (!file.empty()) s.files.push_back(file);
+        if (s.files.empty()) return std::nullopt;
         return s;
     }
     SDL_Event e;
     if (!key_event(token, e)) return std::nullopt;
-    return ScriptedInput{ScriptedInput::Kind::key, token, {}, {}};
+    return ScriptedInput{ScriptedInput::Kind::key, token, {}, {}, {}};
 }
 
 bool key_event(const std::string& name, SDL_Event& e) {

@@ -5,22 +5,25 @@
 //   Drag:X1:Y1:X2:Y2        left button down at (X1, Y1), moved to (X2, Y2), released: moves an end or the eye
 //   ShiftDrag:X1:Y1:X2:Y2   the same with Shift held: draws a new segment in a 2D scene
 //   RightClick:X:Y          right button at (X, Y): deletes the segment there in a 2D scene
+//   Drop:FILE;FILE…         files dropped on the window together (the lesson among them opens)
 #pragma once
 
 #include <SDL.h>
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
 namespace hsr::viz {
 
 struct ScriptedInput {
-    enum class Kind { key, drag, shift_drag, right_click };
+    enum class Kind { key, drag, shift_drag, right_click, drop };
     Kind kind = Kind::key;
     std::string key;            // Kind::key: the key's name
     glm::dvec2 from{0}, to{0};  // mouse gestures: world points in the plane z = 0
+    std::vector<std::string> files;  // Kind::drop
 };
 
 // nullopt for a token that is neither a known key nor a well-formed gesture.

@@ -59,10 +59,13 @@ bool Window::open(const AppOptions& o) {
     const int width = remembered ? settings.width : o.width, height = remembered ? settings.height : o.height;
     const int x = remembered && settings.x ? *settings.x : int(SDL_WINDOWPOS_CENTERED);
     const int y = remembered && settings.y ? *settings.y : int(SDL_WINDOWPOS_CENTERED);
+    // screenshots keep their size; a page fills the browser's window already (and a browser lets only a person's
+    // click make it full screen)
+    const bool fullscreen = o.projector && !o.screenshot && !o.record_dir && !gl_profile().browser_paced;
     window = SDL_CreateWindow("hsrviz", x, y, width, height,
                               SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI |
                                   (remembered && settings.maximized ? SDL_WINDOW_MAXIMIZED : 0) |
-                                  (o.projector && !o.screenshot && !o.record_dir ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));  // screenshots keep their size
+                                  (fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));
     if (!window) {
         std::fprintf(stderr, "hsrviz: cannot open a window: %s\n", SDL_GetError());
         return false;

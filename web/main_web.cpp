@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: MIT
-// The page's entry point: the window with the default lesson, as `hsrviz` with no arguments opens it. (The command
-// line's subcommands need a terminal and files: the page has neither.)
+// The page's entry point: the window with the default lesson, as `hsrviz` with no arguments opens it, or with the
+// lesson, step, language and projector scale the page's address names (#lesson=05_bsp_traversal&step=12&lang=de).
+// (The command line's subcommands need a terminal and files: the page has neither.)
 #include <emscripten.h>
+
+#include <cstdio>
+#include <string>
 
 #include "app.h"
 #include "state/lesson.h"
+#include "state/place_link.h"
 
 namespace {
 // Static, not a local of main: run_app never returns in a browser (web/platform_web.cpp), and main must hold nothing
@@ -15,10 +20,17 @@ hsr::viz::AppOptions options;
 }  // namespace
 
 int main() {
-    options.lesson_path = hsr::viz::default_lesson_path();
+    using namespace hsr::viz;
+    std::string problems;
+    const PlaceLink link = read_place_link(emscripten_run_script_string("location.hash"), problems);
+    if (!problems.empty()) std::fprintf(stderr, "hsrviz: the page's address: %s\n", problems.c_str());  // the console
+    options.lesson_path = link.lesson.empty() ? default_lesson_path() : linked_lesson_path(link.lesson);
+    options.start_step = link.step;
+    if (!link.language.empty()) options.language = link.language;
+    options.projector = link.projector;
     // the browser's window, as the desktop window opens at the size it is given
     options.width = EM_ASM_INT({ return window.innerWidth; });
     options.height = EM_ASM_INT({ return window.innerHeight; });
     options.size_given = true;
-    return hsr::viz::run_app(options);
+    return run_app(options);
 }

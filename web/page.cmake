@@ -6,6 +6,7 @@ target_link_libraries(hsrviz PRIVATE hsr_window hsr_state hsr_analysis hsr_warni
 set(fonts /usr/share/fonts/truetype/dejavu)
 target_link_options(hsrviz PRIVATE
   -sALLOW_MEMORY_GROWTH=1 -sMINIFY_HTML=0  # (Debian 12 emscripten's minifier call is broken)
+  -lidbfs.js -sEXPORTED_RUNTIME_METHODS=ccall  # the settings in IndexedDB; the page's script calls the window
   "SHELL:--shell-file ${PROJECT_SOURCE_DIR}/web/shell.html"
   "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/lessons@/hsrviz/lessons"
   "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/assets@/hsrviz/assets"

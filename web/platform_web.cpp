@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The browser's platform (platform.h): WebGL 2 (OpenGL ES 3.0), frames driven by the browser's animation frames, no
-// threads (the page is built without workers).
+// threads (the page is built without workers), the page's address, its downloads, its file picker and its storage.
+// The page's side of these is in web/shell.html.
+#include <SDL.h>
 #include <emscripten.h>
 
 #include <string>
@@ -17,8 +19,13 @@ const GlProfile& gl_profile() {
 namespace {
 const std::function<bool()>* frame_function = nullptr;
 void one_frame() {
-    if (!(*frame_function)()) emscripten_cancel_main_loop();
+    const double start = emscripten_get_now();
+    const bool more = (*frame_function)();
+    // the page's frame log: how long each frame's work took (not the time between frames, which the display paces)
+    EM_ASM({ Module.frame_log.push($0); }, emscripten_get_now() - start);
+    if (!more) emscripten_cancel_main_loop();
 }
+std::function<std::string(const std::string&)> query_answer;
 }  // namespace
 
 void run_frames(const std::function<bool()>& frame) {
@@ -37,4 +44,49 @@ void publish_state(const std::string& line) {
     EM_ASM({ document.getElementById('state').textContent = UTF8ToString($0); }, line.c_str());
 }
 
+void publish_place(const std::string& lesson, std::size_t step) {
+    static std::string shown;
+    const std::string place = lesson.empty() ? std::string() : "#lesson=" + lesson + "&step=" + std::to_string(step);
+    if (place == shown) return;
+    shown = place;
+    // replaceState: the address follows the player without filling the browser's history with every step
+    EM_ASM({ Module.show_place(UTF8ToString($0)); }, place.c_str());
+}
+
+void answer_queries(std::function<std::string(const std::string&)> answer) { query_answer = std::move(answer); }
+
+void keep_written(const std::string&) {
+    EM_ASM({ Module.keep_files(); });
+}
+
+void offer_download(const std::string& path) {
+    EM_ASM({ Module.download(UTF8ToString($0)); }, path.c_str());
+}
+
+bool pick_files() {
+    EM_ASM({ document.getElementById('open-file').click(); });
+    return true;
+}
+
 }  // namespace hsr::viz
+
+// Called by the page's script (web/shell.html)
+extern "C" {
+
+// "trace": the hash of the events played so far; "" to a question the window does not know.
+EMSCRIPTEN_KEEPALIVE const char* hsr_query(const char* question) {
+    static std::string answer;
+    answer = hsr::viz::query_answer ? hsr::viz::query_answer(question) : std::string();
+    return answer.c_str();
+}
+
+// A file the person picked or dropped, already written into the page's file system: it arrives as the desktop's
+// dropped files do, as an SDL_DROPFILE event (the window frees the name).
+EMSCRIPTEN_KEEPALIVE void hsr_file_arrived(const char* path) {
+    SDL_Event e{};
+    e.type = SDL_DROPFILE;
+    e.drop.file = SDL_strdup(path);
+    if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
+}
+
+}  // extern "C"

@@ -266,6 +266,33 @@ case "$case" in
             if (d > 1e-12) { print "eye", ex, ey, "target", tx, ty, "expected", wx, wy, vx, vy; exit 1 } }' "$saved"
     "$hsrviz" 04_bsp_build.toml --screenshot back.png --frames 2 --keys "V,V,Right,Right" > back.txt
     grep -q "at step 2 of 41" back.txt ;;         # V again: the arrows step again
+  drop)  # files dropped on the window together: the lesson among them opens, its scene found beside it; O on the
+         # desktop says to drop a file (a browser shows its picker); the player's trace hash is printed
+    mkdir -p mine
+    cp "$src/assets/scenes/bsp_2d_segments.toml" mine/walls.toml
+    printf 'title = "My walls"\nalgorithm = "bsp_build"\nscene = "walls.toml"\n' > mine/mine.toml
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot dropped.png --frames 2 \
+      --keys "Drop:$work/mine/walls.toml;$work/mine/mine.toml,Right,Right,O" > dropped.txt
+    cat dropped.txt
+    "$png_check" dropped.png 1280 800
+    grep -q "^hsrviz: lesson $work/mine/mine.toml$" dropped.txt
+    grep -q "at step 2 of" dropped.txt
+    grep -q "^hsrviz: played trace [0-9a-f]\{16\} 2$" dropped.txt
+    grep -q "note showing: to open a lesson or scene file of your own, drop it on the window" dropped.txt
+    # the played trace is the hash of the first 2 lines of the lesson's own trace
+    "$hsrviz" trace mine/mine.toml --out mine.jsonl > /dev/null
+    want=$(head -2 mine.jsonl | python3 -c 'import sys
+h = 14695981039346656037
+for b in sys.stdin.buffer.read():
+    h = ((h ^ b) * 1099511628211) % 2**64
+print("%016x" % h)')
+    grep -q "^hsrviz: played trace $want 2$" dropped.txt
+    # a scene dropped alone plays with its clipping machine; a file that is no lesson shows its error
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot scene.png --frames 2 --keys "Drop:$work/mine/walls.toml" > scene.txt
+    grep -q "^hsrviz: lesson $work/mine/walls.toml$" scene.txt
+    printf 'v 0 0 0\n' > mine/cube.obj
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot obj.png --frames 2 --keys "Drop:$work/mine/cube.obj" > obj.txt || true
+    grep -q "^hsrviz: lesson $work/mine/cube.obj$" obj.txt ;;
   edit)  # mouse gestures on a 2D scene: drag an end, draw a segment, delete one; the machine reruns; S saves
     "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot before.png --frames 3 --keys Right > before.txt
     "$hsrviz" "$src/lessons/04_bsp_build.toml" --screenshot after.png --frames 8 \
@@ -332,6 +359,13 @@ case "$case" in
     grep -q "window words en, narration en" english.txt
     grep -q "^language = 'en'$" window.toml
     "$png_check" narrow.png 1280 800        # a screenshot keeps its size whatever was remembered
+    # the type's size chosen with Ctrl+= is remembered, and the next run opens with it
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot larger.png --frames 3 --keys "Ctrl+=" > larger.txt
+    grep -q '^type_size = 110$' window.toml
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot same.png --frames 3 > same.txt
+    grep -q '^type_size = 110$' window.toml     # a run that leaves the size alone keeps it
+    "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot reset.png --frames 3 --keys "Ctrl+0" > reset.txt
+    if grep -q '^type_size' window.toml; then exit 1; fi   # back to the screen's size: forgotten
     printf 'side = "wide"\n' > window.toml
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot broken.png --frames 2 2> broken.txt
     grep -q "window.toml:1: field 'side'" broken.txt ;;

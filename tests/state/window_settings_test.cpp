@@ -30,6 +30,17 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(read_window_settings(path, warning) == s);
     CHECK(warning.empty());
 
+    // the type's size (Ctrl+±) is remembered when chosen, and absent otherwise (the screen's then)
+    WindowSettings sized = s;
+    sized.scale = 1.21f;
+    REQUIRE(write_window_settings(path, sized).empty());
+    REQUIRE(read_window_settings(path, warning).scale);
+    CHECK(*read_window_settings(path, warning).scale == 1.21f);
+    CHECK_FALSE(read_window_settings(path, warning) == s);
+    std::ofstream(path) << "type_size = 4000\nside = 700\n";
+    CHECK_FALSE(read_window_settings(path, warning).scale);
+    CHECK(warning.find("window.toml:1: field 'type_size'") != std::string::npos);
+
     std::ofstream(path) << "width = 1500\nheight = \"tall\"\nside = 700\n";
     const WindowSettings partly = read_window_settings(path, warning);
     CHECK(partly.width == 1500);

@@ -26,6 +26,7 @@ void keys_panel(const PanelLayout& l) {
         {"R", "keys.report"},
         {"V", "keys.view"},
         {"F5", "keys.reload"},
+        {"O", "keys.open"},
         {"E", "keys.export"},
         {"Ctrl+Z  Ctrl+Y  S", "keys.edit"},
         {"F1  Esc", "keys.keys"},

@@ -60,7 +60,8 @@ struct UiActions {
     bool random_scene = false, back_to_lesson = false;             // 0 and B while the presets show
     int next_lesson = 0;                                           // N: +1, Shift+N: −1 (the course's order)
     bool toggle_menu = false;                                      // M: the lesson menu
-    std::optional<std::string> open_lesson;                        // a lesson chosen in the menu (its path)
+    std::optional<std::string> open_lesson;                        // a lesson chosen in the menu, or a file dropped (its path)
+    bool open_file = false;                                        // O: a lesson or scene file of the person's own
     int up_down = 0;                                               // ↑ −1, ↓ +1 (the menu's highlight)
     int forward = 0, left = 0;  // ↑ +1 ↓ −1, ← +1 → −1: a screen's drive mode (2D BSP) takes them instead of the steps
     bool enter = false;                                            // Enter (opens the highlighted lesson)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include "core/numeric.h"
 #include "culling/pipeline.h"
@@ -144,6 +145,26 @@ std::vector<std::string> shipped_lessons() {
         if (e.path().extension() == ".toml") out.push_back(e.path().string());
     std::sort(out.begin(), out.end());  // by their numbers: the course's order
     return out;
+}
+
+std::string file_to_open(const std::vector<std::string>& files) {
+    const auto toml_file = [](const std::string& f) { return std::filesystem::path(f).extension() == ".toml"; };
+    const auto names_algorithm = [](const std::string& f) {  // a line "algorithm = …" (a scene file has none)
+        std::ifstream in(f);
+        std::string line;
+        for (int lines = 0; lines < 10'000 && std::getline(in, line); ++lines) {
+            const std::size_t start = line.find_first_not_of(" \t");
+            if (start == std::string::npos || line.compare(start, 9, "algorithm") != 0) continue;
+            const std::size_t eq = line.find_first_not_of(" \t", start + 9);
+            if (eq != std::string::npos && line[eq] == '=') return true;
+        }
+        return false;
+    };
+    for (const std::string& f : files)
+        if (toml_file(f) && names_algorithm(f)) return f;
+    for (const std::string& f : files)
+        if (toml_file(f)) return f;
+    return files.empty() ? std::string() : files.front();
 }
 
 }  // namespace hsr::viz

@@ -73,4 +73,8 @@ std::string default_lesson_path();
 // The lessons in data_dir()/lessons, in the course's order (by file name: NN_topic.toml).
 std::vector<std::string> shipped_lessons();
 
+// Of files dropped on the window (or picked) together, the one to open: the lesson among them (a .toml file with an
+// `algorithm = …` line: its scene and meshes came with it), else the first .toml (a scene), else the first.
+std::string file_to_open(const std::vector<std::string>& files);
+
 }  // namespace hsr::viz

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "state/families.h"
+#include "state/session.h"
 
 namespace hsr::viz {
 
@@ -35,6 +36,12 @@ std::vector<std::string> event_kinds(const Lesson& lesson) {
     return with_family(lesson.algorithm, [](auto family) {
         return KindsOf<typename decltype(family)::Session::EventType>::list();
     });
+}
+
+TraceSummary played_trace(const Session& s) {
+    TraceSummary t;
+    for (; t.events < s.cursor(); ++t.events) hash_line(t, s.event_line(t.events));
+    return t;
 }
 
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {

@@ -47,6 +47,12 @@ TraceSummary write_trace(algo::Steps<Event, Result>& machine, Describe describe,
 }
 
 
+class Session;
+// The events a session has played so far (0 … cursor − 1), counted and hashed as their trace's lines: the same
+// hash as the first `cursor` lines of trace_lesson's, so that two windows (the desktop's, the page's) that pressed
+// the same keys can show that they stand at the same place of the same run.
+TraceSummary played_trace(const Session& s);
+
 // Runs the lesson's machine (whatever its family) to completion, writing its trace to `out` (may be null).
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out);
 

@@ -2,6 +2,7 @@
 #include "state/window_settings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -25,7 +26,7 @@ std::string window_settings_path() {
 namespace {
 
 constexpr std::size_t settings_limit = 64 << 10;  // a settings file is a few lines
-const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language", "practice"};
+const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language", "type_size", "practice"};
 
 // The first key a settings file does not have, if any: such a file is someone else's (a lesson, say) and is
 // neither used nor overwritten.
@@ -79,6 +80,7 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
     if (const auto side = integer("side", 200, 4000)) s.side = float(*side);
     if (const auto m = t["maximized"].value<bool>()) s.maximized = *m;
     if (const auto l = t["language"].value<std::string>(); l && l->size() <= 16) s.language = *l;
+    if (const auto percent = integer("type_size", 50, 400)) s.scale = float(*percent) / 100;
     // [practice.TOPIC] answered, right, best_streak: a topic with a bad field is skipped and named
     if (const toml::table* practice = t["practice"].as_table())
         for (const auto& [topic, node] : *practice) {
@@ -116,6 +118,7 @@ std::string write_window_settings(const std::string& path, const WindowSettings&
     toml::table t{{"width", s.width}, {"height", s.height}, {"maximized", s.maximized}, {"side", int(s.side)}, {"language", s.language}};
     if (s.x) t.insert("x", *s.x);
     if (s.y) t.insert("y", *s.y);
+    if (s.scale) t.insert("type_size", int(std::lround(*s.scale * 100)));  // in percent: a number a person reads
     if (!s.practice.empty()) {
         toml::table practice;
         for (const auto& [topic, r] : s.practice)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // What the window remembers between runs: its size and place, whether it was maximised, the width of the panel
-// column, the narration language and the practice scores. One small TOML file in the user's configuration folder; a missing or broken
+// column, the narration language, the type's size and the practice scores. One small TOML file in the user's configuration folder; a missing or broken
 // file gives the defaults (and a warning naming the file, line and field), never an error.
 #pragma once
 
@@ -22,6 +22,8 @@ struct WindowSettings {
     bool maximized = false;
     float side = 500;         // the panel column's width, in points
     std::string language;     // the narration language last chosen ("" for the lesson's first)
+    std::optional<float> scale;  // the type's size last chosen with Ctrl+± (absent: the screen's), 0.5 … 4; kept in
+                                 // whole percent (type_size = 110)
     std::map<std::string, PracticeRecord> practice;  // by topic id ([practice.TOPIC] tables)
     bool operator==(const WindowSettings&) const = default;
 };
