@@ -301,8 +301,10 @@ int run_app(const AppOptions& o) {
         WindowSettings saved = settings;  // as the settings file has them now
         // the page's script may ask where the player stands (the desktop's page-less platform never asks)
         answer_queries([&lp](const std::string& question) {
+            if (question == "lesson") return lp.path;  // the file playing
+            if (question == "language") return lp.classroom.language();  // the narration's
             if (question != "trace" || !lp.session()) return std::string();
-            const TraceSummary played = played_trace(*lp.session());
+            const TraceSummary played = played_trace(*lp.session());  // "HASH EVENTS", as a screenshot prints it
             return hex(played.hash) + " " + std::to_string(played.events);
         });
         std::string linked_path, linked_name;  // the lesson's name in a link, found once per lesson

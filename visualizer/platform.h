@@ -37,8 +37,9 @@ void publish_state(const std::string& line);
 // teacher copies the exact moment; the desktop has no address.
 void publish_place(const std::string& lesson, std::size_t step);
 
-// What the page's script may ask the window, answered by `answer` ("trace": the hash of the events played so far,
-// for the test that compares the page with the desktop after the same keys). The desktop has no page to ask.
+// What the page's script may ask the window, answered by `answer`: "trace" (the hash of the events played so far,
+// for the test that compares the page with the desktop after the same keys), "lesson" (the file playing) and
+// "language" (the narration's). The desktop has no page to ask.
 void answer_queries(std::function<std::string(const std::string& question)> answer);
 
 // A file written to outlive the run (the settings): a browser copies its in-memory files into its own storage

@@ -11,6 +11,9 @@ set(deps ${HSR_WEB_DEPS})
 # What Debian 12's emscripten 3.1.6 lacks of C++20 (<coroutine>, std::bit_cast), before every source
 include_directories(BEFORE ${PROJECT_SOURCE_DIR}/web/compat)
 add_compile_options(-include ${PROJECT_SOURCE_DIR}/web/compat/web_compat.h)
+# emscripten 3.1.6's libc++ has C++20 coroutines only as <experimental/coroutine> (web/compat/coroutine), which
+# clang 14 warns will go in LLVM 15: true, and not ours to change here
+add_compile_options(-Wno-deprecated-experimental-coroutine)
 # Errors are C++ exceptions (a bad lesson file is said, not a crash): emscripten's default only aborts on a throw
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)

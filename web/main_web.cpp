@@ -17,9 +17,10 @@ namespace {
 // exception wrapper, and such a wrapper would move the stack pointer back over run_app's locals when the main loop
 // starts (by throwing "unwind"). Those locals must stay alive: the frames use them.
 hsr::viz::AppOptions options;
-}  // namespace
 
-int main() {
+// The lesson, step, language and projector scale the page's address names. (Its own function: main must hold no
+// local that needs destroying when it calls run_app, see above; nor may this be inlined into it.)
+[[gnu::noinline]] void read_address() {
     using namespace hsr::viz;
     std::string problems;
     const PlaceLink link = read_place_link(emscripten_run_script_string("location.hash"), problems);
@@ -28,9 +29,14 @@ int main() {
     options.start_step = link.step;
     if (!link.language.empty()) options.language = link.language;
     options.projector = link.projector;
+}
+}  // namespace
+
+int main() {
+    read_address();
     // the browser's window, as the desktop window opens at the size it is given
     options.width = EM_ASM_INT({ return window.innerWidth; });
     options.height = EM_ASM_INT({ return window.innerHeight; });
     options.size_given = true;
-    return run_app(options);
+    return hsr::viz::run_app(options);
 }

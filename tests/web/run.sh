@@ -2,10 +2,13 @@
 # SPDX-License-Identifier: MIT
 # The browser tests: puppeteer-core from npm (into BUILD/node, once; it never downloads a browser: Debian's chromium
 # drives the page), the built page served on a free local port, then page_test.js.
-#   bash tests/web/run.sh BUILD_DIR     (BUILD_DIR: where scripts/web built the page, build-web)
+# DESKTOP_HSRVIZ is the desktop build's window: one test compares the page with it after the same keys.
+#   bash tests/web/run.sh BUILD_DIR DESKTOP_HSRVIZ    (BUILD_DIR: where scripts/web built the page, build-web)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "$1" && pwd)
+desktop=$(realpath "$2")
+[ -x "$desktop" ] || { echo "tests/web: no desktop hsrviz at $2 (the comparison needs it)" >&2; exit 1; }
 node_dir=$build/node
 if [ ! -d "$node_dir/node_modules/puppeteer-core" ]; then
   mkdir -p "$node_dir" && cp "$here/package.json" "$node_dir/"
@@ -17,4 +20,5 @@ server=$!
 trap 'kill $server 2>/dev/null || true' EXIT
 for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/hsrviz.html" > /dev/null && break; sleep 0.1; done
 mkdir -p "$build/browser-test"
-NODE_PATH=$node_dir/node_modules node "$here/page_test.js" "http://127.0.0.1:$port/hsrviz.html" "$build/browser-test"
+NODE_PATH=$node_dir/node_modules node "$here/page_test.js" "http://127.0.0.1:$port/hsrviz.html" "$build/browser-test" \
+  "$desktop" "$here/../../lessons"

@@ -40,7 +40,7 @@ std::vector<std::string> event_kinds(const Lesson& lesson) {
 
 TraceSummary played_trace(const Session& s) {
     TraceSummary t;
-    for (; t.events < s.cursor(); ++t.events) hash_line(t, s.event_line(t.events));
+    for (std::size_t k = 0; k < s.cursor(); ++k, ++t.events) hash_line(t, s.event_line(k));
     return t;
 }
 
