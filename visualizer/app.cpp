@@ -323,8 +323,8 @@ int run_app(const AppOptions& o) {
         std::vector<double> frame_ms;  // --frame-log
         std::uint64_t frame_start = SDL_GetPerformanceCounter();
         const bool offscreen = offscreen_driver();
-        run_frames([&] {  // one frame; false when the window is done (a browser calls it once per animation frame)
-            if (!running || quit) return false;
+        run_frames([&] {  // one frame (a browser calls it once per animation frame)
+            if (!running || quit) return Frame::last;
             // Input: scripted keys and gestures first (through the same queue), then every event
             UiActions actions;
             bool scripted_shift = false;
@@ -332,16 +332,19 @@ int run_app(const AppOptions& o) {
                 if (!push_scripted_input(o.keys[next_key], lp, renderer, scripted_shift)) {
                     std::fprintf(stderr, "hsrviz: --keys: unknown key or gesture \"%s\"\n", o.keys[next_key].c_str());
                     exit_code = 2;
-                    return false;
+                    return Frame::last;
                 }
                 ++next_key;
             }
             // Asleep while nothing moves: a paused window waits for input (waking twice a second for edited files)
             // instead of drawing the same frame again; it draws on for a moment after any input, for tweens to end
-            // (and while a note shows, so that it fades and goes)
+            // (and while a note shows, so that it fades and goes). A page cannot wait inside a frame (the browser's
+            // events arrive between frames; SDL would spin): it skips the frame, and the canvas keeps the last one.
             const bool note_showing = lp.toasts.until() > seconds_now();
-            if (interactive(o) && !lp.playback.playing && !note_showing && !lp.measuring.running() && SDL_GetTicks64() > awake_until)
-                SDL_WaitEventTimeout(nullptr, 500);
+            const bool asleep = interactive(o) && !lp.playback.playing && !note_showing && !lp.measuring.running() &&
+                                SDL_GetTicks64() > awake_until;
+            const bool in_browser = gl_profile().browser_paced;
+            if (asleep && !in_browser) SDL_WaitEventTimeout(nullptr, 500);
             SDL_Event e;
             std::vector<std::string> dropped;  // files dropped on the window (or picked in a browser) together
             while (SDL_PollEvent(&e)) {
@@ -360,6 +363,7 @@ int run_app(const AppOptions& o) {
                 if (e.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse) lp.camera.zoom(float(e.wheel.y));
             }
             if (scripted_shift) SDL_SetModState(KMOD_NONE);
+            if (asleep && in_browser && SDL_GetTicks64() > awake_until) return Frame::idle;  // no input came: nothing to draw
             if (!dropped.empty()) actions.open_lesson = file_to_open(dropped);
             if (actions.open_file && !pick_files())
                 lp.tell("to open a lesson or scene file of your own, drop it on the window", tr("notes.drop_to_open"));
@@ -454,7 +458,7 @@ int run_app(const AppOptions& o) {
             if (lp.session()) publish_place(linked_name, lp.session()->cursor());
             // what the window remembers is written as it changes (a page is closed, never quit: it has no "at exit")
             remember(settings_path, saved, settings_now(saved, lp, w, o, false));
-            return running && !quit;
+            return running && !quit ? Frame::drawn : Frame::last;
         });
 
         // What the run wrote

@@ -20,9 +20,12 @@ struct GlProfile {
 };
 const GlProfile& gl_profile();
 
-// Calls frame() until it returns false. The desktop loops; a browser calls it once per animation frame and never
-// returns to the caller (whose locals stay alive: the page runs until it is closed).
-void run_frames(const std::function<bool()>& frame);
+// What a frame did: drew the window, found nothing to draw (a page skips the frame and shows the last one), or ended
+// the run (the window closed, the screenshot written).
+enum class Frame { drawn, idle, last };
+// Calls frame() until it returns Frame::last. The desktop loops; a browser calls it once per animation frame and
+// never returns to the caller (whose locals stay alive: the page runs until it is closed).
+void run_frames(const std::function<Frame()>& frame);
 
 // Can the window start a thread (the run-time report's measurement in the background)? A browser page without
 // worker threads cannot: the work then runs in the frame that asks for it.

@@ -9,8 +9,8 @@ const GlProfile& gl_profile() {
     return profile;
 }
 
-void run_frames(const std::function<bool()>& frame) {
-    while (frame()) {
+void run_frames(const std::function<Frame()>& frame) {
+    while (frame() != Frame::last) {
     }
 }
 

@@ -17,18 +17,19 @@ const GlProfile& gl_profile() {
 }
 
 namespace {
-const std::function<bool()>* frame_function = nullptr;
+const std::function<Frame()>* frame_function = nullptr;
 void one_frame() {
     const double start = emscripten_get_now();
-    const bool more = (*frame_function)();
-    // the page's frame log: how long each frame's work took (not the time between frames, which the display paces)
-    EM_ASM({ Module.frame_log.push($0); }, emscripten_get_now() - start);
-    if (!more) emscripten_cancel_main_loop();
+    const Frame done = (*frame_function)();
+    // the page's frame log: how long each drawn frame's work took (not the time between frames, which the display
+    // paces; nor the frames skipped while nothing moves)
+    if (done == Frame::drawn) EM_ASM({ Module.frame_log.push($0); }, emscripten_get_now() - start);
+    if (done == Frame::last) emscripten_cancel_main_loop();
 }
 std::function<std::string(const std::string&)> query_answer;
 }  // namespace
 
-void run_frames(const std::function<bool()>& frame) {
+void run_frames(const std::function<Frame()>& frame) {
     frame_function = &frame;
     // 0: at the browser's frame rate; true: never return here, so that the caller's locals, which the frame
     // function refers to, stay alive (emscripten unwinds the stack without destroying them)

@@ -3,7 +3,8 @@
 # The browser tests: puppeteer-core from npm (into BUILD/node, once; it never downloads a browser: Debian's chromium
 # drives the page), the built page served on a free local port, then page_test.js.
 # DESKTOP_HSRVIZ is the desktop build's window: one test compares the page with it after the same keys.
-#   bash tests/web/run.sh BUILD_DIR DESKTOP_HSRVIZ    (BUILD_DIR: where scripts/web built the page, build-web)
+#   bash tests/web/run.sh BUILD_DIR DESKTOP_HSRVIZ [--frame-times]    (BUILD_DIR: where scripts/web built the page)
+# --frame-times: the benchmark of each lesson's frame times in the page (frame_times.js) instead of the tests.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "$1" && pwd)
@@ -20,5 +21,9 @@ server=$!
 trap 'kill $server 2>/dev/null || true' EXIT
 for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/hsrviz.html" > /dev/null && break; sleep 0.1; done
 mkdir -p "$build/browser-test"
+if [ "${3:-}" = --frame-times ]; then  # the benchmark instead: each lesson's frame times in the page
+  NODE_PATH=$node_dir/node_modules node "$here/frame_times.js" "http://127.0.0.1:$port/hsrviz.html" "$here/../../lessons"
+  exit
+fi
 NODE_PATH=$node_dir/node_modules node "$here/page_test.js" "http://127.0.0.1:$port/hsrviz.html" "$build/browser-test" \
   "$desktop" "$here/../../lessons"
