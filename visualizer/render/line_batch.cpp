@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "platform.h"
+#include "render/wide_lines.h"
 
 namespace hsr::viz {
 namespace {
@@ -126,12 +127,19 @@ void LineBatch::draw(const glm::mat4& view_projection, float line_width, float p
     glDepthMask(GL_FALSE);  // translucent faces never hide what is behind them
     upload_and_draw(triangles_, GL_TRIANGLES);
     glDepthMask(GL_TRUE);
-    glLineWidth(line_width);
-    upload_and_draw(lines_, GL_LINES);
+    // the lines as screen-space rectangles (wide_lines.h: GL_LINES are one pixel wide in WebGL), in normalised
+    // device coordinates, so drawn with no transform
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    wide_.clear();
+    wide_line_triangles(lines_, view_projection, line_width, glm::vec2(float(viewport[2]), float(viewport[3])), wide_);
+    const glm::mat4 identity(1.0f);
+    glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(identity));
+    upload_and_draw(wide_, GL_TRIANGLES);
+    glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(view_projection));
     glDisable(GL_DEPTH_TEST);  // points (intersections, endpoints) always show
     upload_and_draw(points_, GL_POINTS);
 
-    glLineWidth(1);
     glBindVertexArray(0);
     glUseProgram(0);
 }

@@ -9,14 +9,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "render/colored_vertex.h"
 #include "render/gl.h"
 
 namespace hsr::viz {
-
-struct ColoredVertex {
-    glm::vec3 position;  // world space
-    glm::vec4 color;     // straight (not premultiplied) alpha
-};
 
 class LineBatch {
 public:
@@ -30,13 +26,15 @@ public:
     void triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec4 color);
     void point(glm::vec3 p, glm::vec4 color);
 
-    // Draws triangles (translucent, no depth write), then lines of the given width, then points of the given size.
+    // Draws triangles (translucent, no depth write), then lines of the given width in pixels (as triangles: see
+    // wide_lines.h), then points of the given size.
     void draw(const glm::mat4& view_projection, float line_width, float point_size);
 
 private:
     void make_gl_objects();
     void upload_and_draw(const std::vector<ColoredVertex>& v, GLenum mode);
     std::vector<ColoredVertex> lines_, triangles_, points_;
+    std::vector<ColoredVertex> wide_;  // the lines as triangles, made at each draw (kept: no allocation per frame)
     GLuint program_ = 0, vao_ = 0, vbo_ = 0;
     GLint mvp_location_ = -1, point_size_location_ = -1;
 };
