@@ -303,6 +303,11 @@ int run_app(const AppOptions& o) {
         answer_queries([&lp](const std::string& question) {
             if (question == "lesson") return lp.path;  // the file playing
             if (question == "language") return lp.classroom.language();  // the narration's
+            if (question == "practice") {  // "answered A, right R" over every topic practised
+                int answered = 0, right = 0;
+                for (const auto& [topic, record] : lp.practice.records()) answered += record.answered, right += record.right;
+                return "answered " + std::to_string(answered) + ", right " + std::to_string(right);
+            }
             if (question != "trace" || !lp.session()) return std::string();
             const TraceSummary played = played_trace(*lp.session());  // "HASH EVENTS", as a screenshot prints it
             return hex(played.hash) + " " + std::to_string(played.events);

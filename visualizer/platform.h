@@ -41,8 +41,8 @@ void publish_state(const std::string& line);
 void publish_place(const std::string& lesson, std::size_t step);
 
 // What the page's script may ask the window, answered by `answer`: "trace" (the hash of the events played so far,
-// for the test that compares the page with the desktop after the same keys), "lesson" (the file playing) and
-// "language" (the narration's). The desktop has no page to ask.
+// for the test that compares the page with the desktop after the same keys), "lesson" (the file playing),
+// "language" (the narration's) and "practice" (answered and right, over the topics). The desktop has no page to ask.
 void answer_queries(std::function<std::string(const std::string& question)> answer);
 
 // A file written to outlive the run (the settings): a browser copies its in-memory files into its own storage

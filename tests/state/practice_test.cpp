@@ -414,6 +414,39 @@ TEST_CASE("practice grading: numbers with a comma or a minus sign, choices by nu
     CHECK_FALSE(grade(choice, "back"));
 }
 
+TEST_CASE("practice: Liang–Barsky holds before its answer shows, also when two planes meet t at one corner", "[practice]") {
+    namespace p = hsr::viz::practice;
+    const std::string path = (std::filesystem::temp_directory_path() / "hsrviz_practice_lb.toml").string();
+    const std::string lesson_path = (std::filesystem::temp_directory_path() / "hsrviz_practice_lb_lesson.toml").string();
+    const p::Topic& topic = p::topics()[*p::PracticeMode::topic_of("liang_barsky")];
+    int corners = 0;  // exercises whose t is met again by a second plane (the case that showed the answer)
+    for (std::uint64_t series : {1u, 2026u})
+        for (std::uint64_t i = 0; i < 60; ++i) {
+            const Exercise e = p::exercise(topic, series, i, Level(1 + i % 3));
+            INFO("series " << series << " exercise " << i << ": " << e.question << " → " << e.answer);
+            std::ofstream(path) << hsr::algo::scene_toml(e.scene);
+            std::ofstream(lesson_path) << p::lesson_toml(e, "hsrviz_practice_lb.toml");
+            std::ostringstream trace;
+            hsr::viz::trace_lesson(hsr::viz::load_lesson(lesson_path), &trace);
+            std::istringstream lines(trace.str());
+            const std::size_t hold = e.hold_at.value_or(e.deciding_step);
+            const std::string kind = e.given.at("kind");
+            int updates_to_answer = 0;
+            for (std::string line; std::getline(lines, line);) {
+                const nlohmann::json event = nlohmann::json::parse(line);
+                if (event["kind"] != "ParameterUpdated" || event["which"] != kind) continue;
+                const bool shows_answer = std::abs(event["after"].get<double>() - std::stod(e.answer)) < 1e-4;
+                updates_to_answer += shows_answer;
+                // t_enter only grows and t_leave only shrinks: a value equal to the answer before the hold is the answer shown
+                if (event["step"].get<std::size_t>() < hold) CHECK_FALSE(shows_answer);
+            }
+            corners += updates_to_answer > 1;
+        }
+    CHECK(corners > 0);  // the case is among them (series 1, exercise 1: two planes through one corner)
+    std::filesystem::remove(path);
+    std::filesystem::remove(lesson_path);
+}
+
 TEST_CASE("practice: the exercise's scene, saved and played as the window plays it, decides at the step it names", "[practice]") {
     namespace p = hsr::viz::practice;
     const std::string path = (std::filesystem::temp_directory_path() / "hsrviz_practice_scene.toml").string();

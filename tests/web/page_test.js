@@ -3,7 +3,7 @@
 // local server and, on each page, checks that the console has no errors:
 //   - the tour: it opens at step 0; → ← step; Space plays and pauses (read from the page's state line, #state);
 //   - the same keys on lesson 01 in the page and in the desktop build (offscreen): the same state line and the same
-//     hash of the events played;
+//     hash of the events played; then N (the next lesson), X (practice) and an answer;
 //   - a link (#lesson=05_bsp_traversal&step=12) opens that lesson at that step, and the address follows the player;
 //   - files of one's own: O's file picker and a drop on the window open a lesson with its scene; E offers the export
 //     as downloads;
@@ -23,6 +23,7 @@ const check = (ok, what) => { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (
 const sleep = ms => new Promise(r => setTimeout(r, ms));
 // the page's key names and the desktop's --keys names
 const keys = {Right: 'ArrowRight', Left: 'ArrowLeft', Space: 'Space', End: 'End', Home: 'Home', L: 'KeyL', O: 'KeyO', E: 'KeyE',
+              N: 'KeyN', X: 'KeyX',
               1: 'Digit1', 2: 'Digit2', 3: 'Digit3', 4: 'Digit4', PageDown: 'PageDown'};
 
 // A page opened at URL#hash, with helpers: its state line, a query to the window, keys, and the console's errors.
@@ -114,6 +115,17 @@ function desktop_run(lesson, key_names) {
     check(page_trace === d.trace && /^[0-9a-f]{16} \d+$/.test(page_trace), 'the page and the desktop played the same events (trace hash)');
     check(/question open/.test(page_state) || /score 0 of 1/.test(page_state), `a question was asked and answered: "${page_state}"`);
     await p.shot('compared.png');
+    // on through the course, and practice: N opens the next lesson; X an exercise the machine grades; a typed answer
+    await p.press('N');
+    check((await p.ask('lesson')).endsWith('/lessons/02_liang_barsky.toml'), `N: the next lesson (${await p.ask('lesson')})`);
+    await p.press('X');
+    await sleep(300);
+    check(/practice/.test(await p.ask('lesson')), `X: an exercise (${await p.ask('lesson')})`);
+    await p.shot('practice.png');
+    await p.press('Digit0', 'Period', 'Digit5', 'Enter');  // a typed number (Liang–Barsky asks for a t)
+    await sleep(300);
+    check(await p.ask('practice') === 'answered 1, right 0' || await p.ask('practice') === 'answered 1, right 1',
+          `0.5 Enter answers it, and the score counts it: ${await p.ask('practice')}`);
     await p.close();
 
     // 3. a link to a moment: the lesson and the step it names, and the address follows the player

@@ -221,8 +221,10 @@ std::optional<Exercise> parameter_exercise(Dice& d, Level l) {
     std::string sentence[2];
     bool clipped = false;
     for (std::size_t step = 0; step < events.size(); ++step) {
-        // an update that changes nothing (a second plane through the same point) does not decide the answer
-        if (const auto* u = std::get_if<algo::ParameterUpdated>(&events[step]); u && u->after != u->before) {
+        // an update that changes nothing does not decide the answer: a second plane through the same corner moves t by
+        // an ulp or so (0.8333333333333333 → 0.8333333333333334), and holding there showed the answer already
+        if (const auto* u = std::get_if<algo::ParameterUpdated>(&events[step]);
+            u && std::abs(u->after - u->before) > 1e-9 * std::max(1.0, std::abs(u->after))) {
             const std::size_t k = u->which == algo::Parameter::t_enter ? 0 : 1;
             last[k] = *u;
             steps[k] = step;
