@@ -144,8 +144,9 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, px(layout.bottom), px(view_w), px(view_h));  // GL's y axis points up
     r.geometry.view_projection = vp, r.geometry.width = view_w, r.geometry.height = view_h;
     const float thick = scale * lp.scale;  // lines and points grow with the type (projector, Ctrl+=)
-    r.batches.faint.draw(vp, 1.5f * thick, 7.0f * thick);
-    r.batches.bold.draw(vp, 3.5f * thick, 11.0f * thick);
+    const glm::vec2 viewport(float(px(view_w)), float(px(view_h)));
+    r.batches.faint.draw(vp, viewport, 1.5f * thick, 7.0f * thick);
+    r.batches.bold.draw(vp, viewport, 3.5f * thick, 11.0f * thick);
     glViewport(0, 0, px(layout.width), px(layout.height));
 }
 

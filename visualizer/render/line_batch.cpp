@@ -111,7 +111,7 @@ void LineBatch::upload_and_draw(const std::vector<ColoredVertex>& v, GLenum mode
     glDrawArrays(mode, 0, GLsizei(v.size()));
 }
 
-void LineBatch::draw(const glm::mat4& view_projection, float line_width, float point_size) {
+void LineBatch::draw(const glm::mat4& view_projection, glm::vec2 viewport, float line_width, float point_size) {
     if (program_ == 0) make_gl_objects();
     glUseProgram(program_);
     glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(view_projection));
@@ -129,10 +129,8 @@ void LineBatch::draw(const glm::mat4& view_projection, float line_width, float p
     glDepthMask(GL_TRUE);
     // the lines as screen-space rectangles (wide_lines.h: GL_LINES are one pixel wide in WebGL), in normalised
     // device coordinates, so drawn with no transform
-    GLint viewport[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_VIEWPORT, viewport);
     wide_.clear();
-    wide_line_triangles(lines_, view_projection, line_width, glm::vec2(float(viewport[2]), float(viewport[3])), wide_);
+    wide_line_triangles(lines_, view_projection, line_width, viewport, wide_);
     const glm::mat4 identity(1.0f);
     glUniformMatrix4fv(mvp_location_, 1, GL_FALSE, glm::value_ptr(identity));
     upload_and_draw(wide_, GL_TRIANGLES);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -27,8 +28,9 @@ public:
     void point(glm::vec3 p, glm::vec4 color);
 
     // Draws triangles (translucent, no depth write), then lines of the given width in pixels (as triangles: see
-    // wide_lines.h), then points of the given size.
-    void draw(const glm::mat4& view_projection, float line_width, float point_size);
+    // wide_lines.h) of the viewport's size in pixels (given, not asked of GL: in a browser glGet waits for the
+    // GPU's queued work, 80 % of a frame), then points of the given size.
+    void draw(const glm::mat4& view_projection, glm::vec2 viewport, float line_width, float point_size);
 
 private:
     void make_gl_objects();
