@@ -52,6 +52,10 @@ if(HSR_WINDOW)
   add_library(hsr_web_imgui STATIC ${deps}/imgui/imgui.cpp ${deps}/imgui/imgui_draw.cpp ${deps}/imgui/imgui_tables.cpp
               ${deps}/imgui/imgui_widgets.cpp ${deps}/imgui/backends/imgui_impl_sdl.cpp ${deps}/imgui/backends/imgui_impl_opengl3.cpp)
   target_include_directories(hsr_web_imgui SYSTEM PUBLIC ${deps}/imgui)
+  # its OpenGL backend told the GL state the window leaves, instead of asking WebGL (web/compat/imgui_gl_state.h)
+  target_sources(hsr_web_imgui PRIVATE ${PROJECT_SOURCE_DIR}/web/imgui_gl_state.cpp)
+  set_source_files_properties(${deps}/imgui/backends/imgui_impl_opengl3.cpp PROPERTIES
+                              COMPILE_OPTIONS "-include;${PROJECT_SOURCE_DIR}/web/compat/imgui_gl_state.h")
   target_link_libraries(hsr_web_imgui PUBLIC SDL2::SDL2 OpenGL::OpenGL)
   add_library(PkgConfig::IMGUI ALIAS hsr_web_imgui)
 endif()
