@@ -9,6 +9,8 @@
 #include "scene/save_scene.h"
 #include "state/bsp_session.h"
 #include "state/bsp_view.h"
+#include "state/families.h"
+#include "state/lesson.h"
 
 using namespace hsr::algo;
 using namespace hsr::viz;
@@ -186,4 +188,20 @@ TEST_CASE("the tree's figures follow an edit", "[state][bsp][editing]") {
     REQUIRE(session.add_segment({-20, 0.5, 0}, {20, 0.7, 0}));
     CHECK(session.stats().polygons_in == before + 1);
     CHECK(session.stats().splits == build_bsp(session.job().polygons, session.job().options).run_to_end().splits);
+}
+
+TEST_CASE("the BSP tree box tells the build's totals only once the player has seen it built", "[bsp][view]") {
+    // lesson 05 opens on its first question, "How many splits does the build make?": the box must not answer it
+    auto session = hsr::viz::make_session(hsr::viz::load_lesson(HSR_SOURCE_DIR "/lessons/05_bsp_traversal.toml"));
+    auto* bsp = session.get_if<hsr::viz::BspSession>();
+    REQUIRE(bsp);
+    session->seek(6);  // where the window opens it (its first chapter's question), mid-build
+    REQUIRE_FALSE(bsp->view().built);
+    const std::string building = hsr::viz::tree_summary(*bsp);
+    CHECK(building.find("so far") != std::string::npos);
+    CHECK(building.find("in the tree after") == std::string::npos);
+    CHECK(building.find(std::to_string(bsp->view().splits) + " split") != std::string::npos);  // what the steps showed
+    session->seek_end();
+    REQUIRE(bsp->view().built);
+    CHECK(hsr::viz::tree_summary(*bsp).find("in the tree after " + std::to_string(bsp->stats().splits) + " split") != std::string::npos);
 }

@@ -21,16 +21,8 @@ const ImVec4 front_branch(0.35f, 0.75f, 0.55f, 1), back_branch(0.85f, 0.5f, 0.3f
 
 void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
-    const BspSession::Stats& st = s.stats();
-    char ms[32];
-    std::snprintf(ms, sizeof ms, "%.3f", st.build_ms);
-    wrapped_text(tr("bsp.stats", {{"in", std::to_string(st.polygons_in)},
-                                  {"after", std::to_string(st.polygons_after)},
-                                  {"splits", std::to_string(st.splits)},
-                                  {"nodes", std::to_string(st.nodes)},
-                                  {"depth", std::to_string(st.depth)},
-                                  {"ms", ms}}),
-                 dim_text);
+    const BspView& v = s.view();
+    wrapped_text(tree_summary(s), dim_text);
     ImGui::TextColored(front_branch, "%s", tr("bsp.left").c_str());
     ImGui::SameLine();
     ImGui::TextColored(dim_text, "%s", tr("bsp.normal_side").c_str());
@@ -38,7 +30,6 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
     ImGui::TextColored(back_branch, "%s", tr("bsp.right").c_str());
 
     // Layout: x by in-order position, y by depth.
-    const BspView& v = s.view();
     std::vector<float> x(v.nodes.size(), 0.f);
     int column = 0;
     const std::function<void(int)> place_node = [&](int n) {

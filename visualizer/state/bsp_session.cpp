@@ -2,6 +2,7 @@
 #include "state/bsp_session.h"
 
 #include <chrono>
+#include <cstdio>
 #include <unordered_map>
 #include <cmath>
 
@@ -212,5 +213,22 @@ const FamilyFacts BspSession::facts = {
     .random_scene = [](std::uint32_t seed, bool two_d) -> std::optional<algo::Scene> { return two_d ? random_segment_scene_2d(seed) : random_triangle_scene(seed, false); },
     .measure = &analysis::measure_hidden_surfaces,
 };
+
+std::string tree_summary(const BspSession& s) {
+    const BspSession::Stats& st = s.stats();
+    const BspView& v = s.view();
+    if (!v.built)
+        return tr("bsp.stats_building", {{"in", std::to_string(st.polygons_in)},
+                                         {"nodes", std::to_string(v.nodes.size())},
+                                         {"splits", std::to_string(v.splits)}});
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.3f", st.build_ms);
+    return tr("bsp.stats", {{"in", std::to_string(st.polygons_in)},
+                            {"after", std::to_string(st.polygons_after)},
+                            {"splits", std::to_string(st.splits)},
+                            {"nodes", std::to_string(st.nodes)},
+                            {"depth", std::to_string(st.depth)},
+                            {"ms", ms}});
+}
 
 }  // namespace hsr::viz

@@ -67,4 +67,9 @@ private:
     void edit(algo::BspJob edited);  // one undo step, then rerun
 };
 
+// The BSP tree box's first line, in the window's language: the whole build's figures once the player has seen it
+// built; before that, only what the steps have shown (the totals would answer "how many splits does the build
+// make?" while it is being asked).
+std::string tree_summary(const BspSession& s);
+
 }  // namespace hsr::viz
