@@ -198,6 +198,20 @@ std::string player_state(const Lessonplay& lp) {
            (lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
 }
 
+// What the page's script asks (platform.h answer_queries): the file playing, the narration's language, the practice
+// score over every topic, the played trace; "" to anything else.
+std::string page_answer(const Lessonplay& lp, const std::string& question) {
+    if (question == "lesson") return lp.path;
+    if (question == "language") return lp.classroom.language();
+    if (question == "practice") {
+        int answered = 0, right = 0;
+        for (const auto& [topic, record] : lp.practice.records()) answered += record.answered, right += record.right;
+        return "answered " + std::to_string(answered) + ", right " + std::to_string(right);
+    }
+    if (question == "trace" && lp.session()) return played_trace_text(*lp.session());
+    return "";
+}
+
 // What the window remembers now: the column, the language, the practice scores and the type's size always; the
 // window's size and place (`with_place`) at the end of a run a person sized it in.
 WindowSettings settings_now(const WindowSettings& before, const Lessonplay& lp, const Window& w, const AppOptions& o, bool with_place) {
@@ -238,13 +252,8 @@ bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer
         SDL_PushEvent(&e);
         return true;
     }
-    if (input->kind == ScriptedInput::Kind::drop) {  // as SDL tells of files dropped (the window frees the names)
-        for (const std::string& file : input->files) {
-            e = SDL_Event{};
-            e.type = SDL_DROPFILE;
-            e.drop.file = SDL_strdup(file.c_str());
-            if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
-        }
+    if (input->kind == ScriptedInput::Kind::drop) {
+        for (const std::string& file : input->files) push_file_drop(file);
         return true;
     }
     // a gesture names points as its family's view does (the fat pixels take grid pixels, others the plane z = 0)
@@ -301,18 +310,7 @@ int run_app(const AppOptions& o) {
         if (o.start_step && lp.session()) lp.session()->seek(*o.start_step);
         WindowSettings saved = settings;  // as the settings file has them now
         // the page's script may ask where the player stands (the desktop's page-less platform never asks)
-        answer_queries([&lp](const std::string& question) {
-            if (question == "lesson") return lp.path;  // the file playing
-            if (question == "language") return lp.classroom.language();  // the narration's
-            if (question == "practice") {  // "answered A, right R" over every topic practised
-                int answered = 0, right = 0;
-                for (const auto& [topic, record] : lp.practice.records()) answered += record.answered, right += record.right;
-                return "answered " + std::to_string(answered) + ", right " + std::to_string(right);
-            }
-            if (question != "trace" || !lp.session()) return std::string();
-            const TraceSummary played = played_trace(*lp.session());  // "HASH EVENTS", as a screenshot prints it
-            return hex(played.hash) + " " + std::to_string(played.events);
-        });
+        answer_queries([&lp](const std::string& question) { return page_answer(lp, question); });
         std::string linked_path, linked_name;  // the lesson's name in a link, found once per lesson
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
@@ -430,8 +428,7 @@ int run_app(const AppOptions& o) {
             if (o.screenshot && keys_pressed && frame >= ready && (settled || frame >= ready + 8)) {
                 if (lp.session()) {
                     std::printf("hsrviz: at %s\n", player_state(lp).c_str());
-                    const TraceSummary played = played_trace(*lp.session());
-                    std::printf("hsrviz: played trace %s %llu\n", hex(played.hash).c_str(), static_cast<unsigned long long>(played.events));
+                    std::printf("hsrviz: played trace %s\n", played_trace_text(*lp.session()).c_str());
                 }
                 if (lp.session() && lp.classroom.questions() > 0)
                     std::printf("hsrviz: score %d of %d answered, %d questions, language %s\n", lp.classroom.right(),

@@ -95,4 +95,11 @@ SDL_Event mouse_motion_event(int x, int y, int dx, int dy, bool left_held) {
     return e;
 }
 
+void push_file_drop(const std::string& path) {
+    SDL_Event e{};
+    e.type = SDL_DROPFILE;
+    e.drop.file = SDL_strdup(path.c_str());
+    if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
+}
+
 }  // namespace hsr::viz

@@ -34,5 +34,7 @@ bool key_event(const std::string& name, SDL_Event& e);
 // A mouse button press or release at a window point.
 SDL_Event mouse_button_event(bool down, Uint8 button, int x, int y);
 SDL_Event mouse_motion_event(int x, int y, int dx, int dy, bool left_held);
+// A file dropped on the window, pushed as SDL tells of one (SDL_DROPFILE; the window frees the name).
+void push_file_drop(const std::string& path);
 
 }  // namespace hsr::viz

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "platform.h"
+#include "scripted_input.h"
 
 namespace hsr::viz {
 
@@ -83,11 +84,6 @@ EMSCRIPTEN_KEEPALIVE const char* hsr_query(const char* question) {
 
 // A file the person picked or dropped, already written into the page's file system: it arrives as the desktop's
 // dropped files do, as an SDL_DROPFILE event (the window frees the name).
-EMSCRIPTEN_KEEPALIVE void hsr_file_arrived(const char* path) {
-    SDL_Event e{};
-    e.type = SDL_DROPFILE;
-    e.drop.file = SDL_strdup(path);
-    if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
-}
+EMSCRIPTEN_KEEPALIVE void hsr_file_arrived(const char* path) { hsr::viz::push_file_drop(path); }
 
 }  // extern "C"

@@ -44,6 +44,11 @@ TraceSummary played_trace(const Session& s) {
     return t;
 }
 
+std::string played_trace_text(const Session& s) {
+    const TraceSummary played = played_trace(s);
+    return hex(played.hash) + " " + std::to_string(played.events);
+}
+
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
     return with_family(lesson.algorithm, [&](auto family) {
         using S = typename decltype(family)::Session;

@@ -52,6 +52,8 @@ class Session;
 // hash as the first `cursor` lines of trace_lesson's, so that two windows (the desktop's, the page's) that pressed
 // the same keys can show that they stand at the same place of the same run.
 TraceSummary played_trace(const Session& s);
+// "HASH EVENTS" (16 hex digits, a count): how a screenshot prints it and the page answers it.
+std::string played_trace_text(const Session& s);
 
 // Runs the lesson's machine (whatever its family) to completion, writing its trace to `out` (may be null).
 TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out);
