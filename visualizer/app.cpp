@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -182,10 +183,12 @@ void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const Ap
     glClearColor(palette::background.x, palette::background.y, palette::background.z, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     work_panel(p, io.DisplaySize.x, io.DisplaySize.y);
+    publish_state("working: " + p.sentence());
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     SDL_GL_SwapWindow(w.window);
     if (offscreen_driver()) glFinish();
+    let_the_frame_show();
 }
 
 // Where the player stands, as the screenshot's line and the page's state line say it: "step 3 of 64, paused,
@@ -198,10 +201,20 @@ std::string player_state(const Lessonplay& lp) {
            (lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
 }
 
-// What the page's script asks (platform.h answer_queries): the file playing, the narration's language, the practice
-// score over every topic, the played trace; "" to anything else.
-std::string page_answer(const Lessonplay& lp, const std::string& question) {
+// Where a gesture's point is in the window: a gesture names points as its family's view does (the fat pixels take
+// grid pixels, the others the plane z = 0).
+glm::vec2 gesture_window_point(Lessonplay& lp, const Renderer& r, glm::dvec2 p) {
+    const ViewGeometry g = geometry_now(lp, r);
+    if (!lp.family) return g.to_window({p, 0.0});
+    return lp.with_family_screen([&](auto& s, auto& screen) { return screen.gesture_point(s, p, g); });
+}
+
+// What the page's script asks (platform.h answer_queries): the file playing, the error shown instead of it, the
+// narration's language, the practice score over every topic, the played trace, where a gesture's point is in the window ("window_point X Y": "x y", as
+// --keys' gestures name points); "" to anything else.
+std::string page_answer(Lessonplay& lp, const Renderer& r, const std::string& question) {
     if (question == "lesson") return lp.path;
+    if (question == "error") return lp.error;
     if (question == "language") return lp.classroom.language();
     if (question == "practice") {
         int answered = 0, right = 0;
@@ -209,6 +222,13 @@ std::string page_answer(const Lessonplay& lp, const std::string& question) {
         return "answered " + std::to_string(answered) + ", right " + std::to_string(right);
     }
     if (question == "trace" && lp.session()) return played_trace_text(*lp.session());
+    std::istringstream asked(question);
+    std::string word;
+    glm::dvec2 p;
+    if (asked >> word >> p.x >> p.y && word == "window_point" && std::isfinite(p.x) && std::isfinite(p.y)) {
+        const glm::vec2 w = gesture_window_point(lp, r, p);
+        return std::to_string(std::lround(w.x)) + " " + std::to_string(std::lround(w.y));
+    }
     return "";
 }
 
@@ -256,13 +276,7 @@ bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer
         for (const std::string& file : input->files) push_file_drop(file);
         return true;
     }
-    // a gesture names points as its family's view does (the fat pixels take grid pixels, others the plane z = 0)
-    const ViewGeometry g = geometry_now(lp, r);
-    const auto to_window = [&](glm::dvec2 p) {
-        if (!lp.family) return g.to_window({p, 0.0});
-        return lp.with_family_screen([&](auto& s, auto& screen) { return screen.gesture_point(s, p, g); });
-    };
-    const glm::vec2 a = to_window(input->from), b = to_window(input->to);
+    const glm::vec2 a = gesture_window_point(lp, r, input->from), b = gesture_window_point(lp, r, input->to);
     const auto ax = int(std::lround(a.x)), ay = int(std::lround(a.y)), bx = int(std::lround(b.x)), by = int(std::lround(b.y));
     const bool right = input->kind == ScriptedInput::Kind::right_click;
     const Uint8 button = right ? SDL_BUTTON_RIGHT : SDL_BUTTON_LEFT;
@@ -309,8 +323,6 @@ int run_app(const AppOptions& o) {
         else if (!settings.language.empty()) lp.classroom.choose_language(settings.language);  // the language last chosen
         if (o.start_step && lp.session()) lp.session()->seek(*o.start_step);
         WindowSettings saved = settings;  // as the settings file has them now
-        // the page's script may ask where the player stands (the desktop's page-less platform never asks)
-        answer_queries([&lp](const std::string& question) { return page_answer(lp, question); });
         std::string linked_path, linked_name;  // the lesson's name in a link, found once per lesson
         lp.playback.playing = o.autoplay;
         lp.animate = !o.screenshot && !o.record_dir && !o.gif;
@@ -321,6 +333,8 @@ int run_app(const AppOptions& o) {
         bool running = true;
         if (o.record_dir && !make_folder(*o.record_dir)) exit_code = 1, running = false;  // said why
         Renderer renderer;
+        // the page's script may ask where the player stands (the desktop's page-less platform never asks)
+        answer_queries([&lp, &renderer](const std::string& question) { return page_answer(lp, renderer, question); });
         std::uint64_t frame = 0, last_ticks = SDL_GetTicks64();
         bool orbiting = false;
         std::uint64_t awake_until = SDL_GetTicks64() + 1000;  // ms: until when frames are drawn without waiting for input

@@ -27,12 +27,19 @@ enum class Frame { drawn, idle, last };
 // never returns to the caller (whose locals stay alive: the page runs until it is closed).
 void run_frames(const std::function<Frame()>& frame);
 
+// A frame drawn from inside long work (the progress box, five times a second) reaches the screen, and the keys
+// pressed meanwhile (Esc stops the work) reach the window. The desktop's swap shows the frame and its event queue
+// fills by itself. A browser shows the canvas and hands over key presses only between its tasks: the page pauses
+// the work there for an instant (emscripten's Asyncify unwinds the stack and winds it back).
+void let_the_frame_show();
+
 // Can the window start a thread (the run-time report's measurement in the background)? A browser page without
 // worker threads cannot: the work then runs in the frame that asks for it.
 bool can_start_threads();
 
-// The player's state in a line a page's script can read ("step 3 of 64, paused, question open, score 1 of 2"), once
-// a frame: the browser's tests read it; the desktop has no use for it.
+// The player's state in a line a page's script can read ("step 3 of 64, paused, question open, score 1 of 2"; during
+// long work "working: opening huge.toml: 3,274,304 machine steps, 2.7 s"), once a frame: the browser's tests read
+// it; the desktop has no use for it.
 void publish_state(const std::string& line);
 
 // Where the player stands, as a link names it: the shipped lesson's name ("05_bsp_traversal"; empty for any other
@@ -41,8 +48,9 @@ void publish_state(const std::string& line);
 void publish_place(const std::string& lesson, std::size_t step);
 
 // What the page's script may ask the window, answered by `answer`: "trace" (the hash of the events played so far,
-// for the test that compares the page with the desktop after the same keys), "lesson" (the file playing),
-// "language" (the narration's) and "practice" (answered and right, over the topics). The desktop has no page to ask.
+// for the test that compares the page with the desktop after the same keys), "lesson" (the file playing), "error"
+// (shown instead of it), "language" (the narration's), "practice" (answered and right, over the topics) and
+// "window_point X Y" (where the point a --keys gesture names is in the window). The desktop has no page to ask.
 void answer_queries(std::function<std::string(const std::string& question)> answer);
 
 // A file written to outlive the run (the settings): a browser copies its in-memory files into its own storage

@@ -7,6 +7,9 @@ set(fonts /usr/share/fonts/truetype/dejavu)
 target_link_options(hsrviz PRIVATE
   -sALLOW_MEMORY_GROWTH=1 -sMINIFY_HTML=0  # (Debian 12 emscripten's minifier call is broken)
   -lidbfs.js -sEXPORTED_RUNTIME_METHODS=ccall  # the settings in IndexedDB; the page's script calls the window
+  # long work's progress frames reach the screen and Esc reaches the work (platform.h let_the_frame_show); the
+  # saved stack of a pause holds a deep machine's frames
+  -sASYNCIFY -sASYNCIFY_STACK_SIZE=1048576
   "SHELL:--shell-file ${PROJECT_SOURCE_DIR}/web/shell.html"
   "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/lessons@/hsrviz/lessons"
   "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/assets@/hsrviz/assets"

@@ -28,6 +28,7 @@ void one_frame() {
     if (done == Frame::last) emscripten_cancel_main_loop();
 }
 std::function<std::string(const std::string&)> query_answer;
+bool paused_in_work = false;  // in let_the_frame_show: the window's state is half-way through the work
 }  // namespace
 
 void run_frames(const std::function<Frame()>& frame) {
@@ -35,6 +36,14 @@ void run_frames(const std::function<Frame()>& frame) {
     // 0: at the browser's frame rate; true: never return here, so that the caller's locals, which the frame
     // function refers to, stay alive (emscripten unwinds the stack without destroying them)
     emscripten_set_main_loop(one_frame, 0, true);
+}
+
+// emscripten_sleep(0): back to the browser's event loop at once (it composites the canvas and runs the key
+// handlers, which queue SDL's events), then on with the work where it was
+void let_the_frame_show() {
+    paused_in_work = true;
+    emscripten_sleep(0);
+    paused_in_work = false;
 }
 
 bool can_start_threads() { return false; }
@@ -75,9 +84,12 @@ bool pick_files() {
 // Called by the page's script (web/shell.html)
 extern "C" {
 
-// "trace": the hash of the events played so far; "" to a question the window does not know.
+// platform.h answer_queries: "trace" (the hash of the events played so far), "lesson", …; "" to a question the window
+// does not know, and "working" to every question while long work is paused for the browser (what the window holds
+// is then half-way through being changed).
 EMSCRIPTEN_KEEPALIVE const char* hsr_query(const char* question) {
     static std::string answer;
+    if (hsr::viz::paused_in_work) return "working";
     answer = hsr::viz::query_answer ? hsr::viz::query_answer(question) : std::string();
     return answer.c_str();
 }

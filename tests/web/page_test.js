@@ -8,6 +8,8 @@
 //   - files of one's own: O's file picker and a drop on the window open a lesson with its scene; E offers the export
 //     as downloads;
 //   - the settings persist: the language chosen with L is the language after the page is opened again;
+//   - the lesson menu (M), presets (P, a case, B), editing by mouse (a dragged end; S downloads the edited scene);
+//   - long work shows its progress box, and Esc stops it;
 //   - #projector: larger type.
 // It takes screenshots of each (OUT_DIR/*.png) to look at.
 //   node page_test.js URL OUT_DIR DESKTOP_HSRVIZ LESSONS_DIR
@@ -23,7 +25,7 @@ const check = (ok, what) => { console.log((ok ? 'ok   ' : 'FAIL ') + what); if (
 const sleep = ms => new Promise(r => setTimeout(r, ms));
 // the page's key names and the desktop's --keys names
 const keys = {Right: 'ArrowRight', Left: 'ArrowLeft', Space: 'Space', End: 'End', Home: 'Home', L: 'KeyL', O: 'KeyO', E: 'KeyE',
-              N: 'KeyN', X: 'KeyX',
+              N: 'KeyN', X: 'KeyX', M: 'KeyM', P: 'KeyP', B: 'KeyB', S: 'KeyS', 7: 'Digit7',
               1: 'Digit1', 2: 'Digit2', 3: 'Digit3', 4: 'Digit4', PageDown: 'PageDown'};
 
 // A page opened at URL#hash, with helpers: its state line, a query to the window, keys, and the console's errors.
@@ -39,6 +41,14 @@ async function open(browser, hash, name) {
     page, errors, name,
     state: () => page.$eval('#state', e => e.textContent),
     ask: question => page.evaluate(q => Module.ccall('hsr_query', 'string', ['string'], [q]), question),
+    async until(question, pattern, ms = 20000) {  // the window's answer once it matches (a lesson opens over frames)
+      const until = Date.now() + ms;
+      for (let a = await p.ask(question); Date.now() < until; a = await p.ask(question)) {
+        if (pattern.test(a)) return a;
+        await sleep(50);
+      }
+      return await p.ask(question);
+    },
     async waitFor(pattern, ms = 20000) {
       const until = Date.now() + ms;
       for (let s = await p.state(); Date.now() < until; s = await p.state()) {
@@ -53,9 +63,25 @@ async function open(browser, hash, name) {
         await page.evaluate(() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r))));
       }
     },
+    async drag(from, to) {  // the left button from one gesture point to another (as --keys' Drag: names them)
+      const [ax, ay] = (await p.ask(`window_point ${from[0]} ${from[1]}`)).split(' ').map(Number);
+      const [bx, by] = (await p.ask(`window_point ${to[0]} ${to[1]}`)).split(' ').map(Number);
+      await page.mouse.move(ax, ay);
+      await page.mouse.down();
+      await page.mouse.move(bx, by, {steps: 8});
+      await page.mouse.up();
+      await page.evaluate(() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r))));
+    },
+    async downloads_into(folder) {
+      fs.rmSync(folder, {recursive: true, force: true});
+      const cdp = await page.target().createCDPSession();
+      await cdp.send('Browser.setDownloadBehavior', {behavior: 'allow', downloadPath: folder});
+    },
     async shot(file) { await page.screenshot({path: path.join(out, file)}); },
+    expected: [],  // errors the test causes on purpose (patterns)
     async close() {
-      check(errors.length === 0, `${name}: no errors in the console` + (errors.length ? ': ' + errors.join(' | ') : ''));
+      const unexpected = errors.filter(e => !p.expected.some(pattern => pattern.test(e)));
+      check(unexpected.length === 0, `${name}: no errors in the console` + (unexpected.length ? ': ' + unexpected.join(' | ') : ''));
       await page.close();
     },
   };
@@ -117,10 +143,11 @@ function desktop_run(lesson, key_names) {
     await p.shot('compared.png');
     // on through the course, and practice: N opens the next lesson; X an exercise the machine grades; a typed answer
     await p.press('N');
-    check((await p.ask('lesson')).endsWith('/lessons/02_liang_barsky.toml'), `N: the next lesson (${await p.ask('lesson')})`);
+    const next = await p.until('lesson', /02_liang_barsky/);
+    check(next.endsWith('/lessons/02_liang_barsky.toml'), `N: the next lesson (${next})`);
     await p.press('X');
-    await sleep(300);
-    check(/practice/.test(await p.ask('lesson')), `X: an exercise (${await p.ask('lesson')})`);
+    const exercise = await p.until('lesson', /practice/);
+    check(/practice/.test(exercise), `X: an exercise (${exercise})`);
     await p.shot('practice.png');
     await p.press('Digit0', 'Period', 'Digit5', 'Enter');  // a typed number (Liang–Barsky asks for a t)
     await sleep(300);
@@ -157,9 +184,7 @@ function desktop_run(lesson, key_names) {
     await p.press('Right', 'Right');
     await p.shot('picked.png');
     const downloads = path.join(out, 'downloads');
-    fs.rmSync(downloads, {recursive: true, force: true});
-    const cdp = await p.page.target().createCDPSession();
-    await cdp.send('Browser.setDownloadBehavior', {behavior: 'allow', downloadPath: downloads});
+    await p.downloads_into(downloads);
     await p.press('E');
     const wanted = ['mine-step-2.png', 'mine.jsonl', 'mine-scene.toml'];
     for (let k = 0; k < 100 && !wanted.every(f => fs.existsSync(path.join(downloads, f))); ++k) await sleep(100);
@@ -180,7 +205,7 @@ function desktop_run(lesson, key_names) {
     // 5. the settings persist in the browser: L chooses German, and the page opened again speaks it
     p = await open(browser, '', 'the language chosen');
     await p.press('L');
-    check(await p.ask('language') === 'de', 'L: German');
+    check(await p.until('language', /^de$/) === 'de', 'L: German');
     await sleep(1000);  // IndexedDB is written after the settings file
     await p.close();
     p = await open(browser, '', 'the page opened again');
@@ -190,7 +215,72 @@ function desktop_run(lesson, key_names) {
     await sleep(500);
     await p.close();
 
-    // 6. a projector's scale, from the link
+    // 6. the lesson menu: M opens it on the lesson playing; ↓ ↓ and Enter open the second lesson after it
+    p = await open(browser, '', 'the lesson menu');
+    await p.press('M');
+    check(/lesson menu open/.test(await p.waitFor(/lesson menu open/)), `M: the lesson menu opens ("${await p.state()}")`);
+    await p.shot('menu.png');
+    await p.press('ArrowDown', 'ArrowDown', 'Enter');
+    const chosen = await p.until('lesson', /02_liang_barsky/);
+    const start = await p.waitFor(/^step 0 of 42/);
+    check(chosen.endsWith('/lessons/02_liang_barsky.toml') && /^step 0 of 42, paused, score/.test(start),
+          `↓ ↓ Enter: the second lesson after the tour, from its start, the menu closed (${chosen}: "${start}")`);
+    await p.close();
+
+    // 7. presets: P lists the extreme cases; 7 plays the seventh with the lesson's algorithm; B goes back
+    p = await open(browser, '#lesson=13_depth_sort_cycle', 'presets');
+    await p.press('P');
+    await p.shot('presets.png');
+    await p.press('7');
+    const preset = await p.until('lesson', /extreme/);
+    check(preset.endsWith('/extreme/depth_sort_cyclic_overlap.toml'), `P 7: the cyclic overlap plays (${preset})`);
+    await p.press('B');
+    const back = await p.until('lesson', /lessons/);
+    check(back.endsWith('/lessons/13_depth_sort_cycle.toml'), `B: back to the lesson (${back})`);
+    await p.close();
+
+    // 8. editing by mouse: drag segment 1's end from (4, 1) to (4, -2) in the BSP plan; the machine reruns; S downloads
+    //    the edited scene with the end where it was dropped
+    p = await open(browser, '#lesson=04_bsp_build', 'editing by mouse');
+    await p.press('Right');
+    const before = await p.waitFor(/^step 1 of/);
+    await p.drag([4, 1], [4, -2]);
+    const after = await p.waitFor(/^step 1 of (?!41\b)/, 5000);
+    check(/^step 1 of \d+/.test(after) && after.split(',')[0] !== before.split(',')[0],
+          `a dragged end: the machine reran, the cursor kept ("${before}" → "${after}")`);
+    await p.shot('edited.png');
+    const edited = path.join(out, 'edited');
+    await p.downloads_into(edited);
+    await p.press('S');
+    const saved = path.join(edited, '04_bsp_build-edited.toml');
+    for (let k = 0; k < 50 && !fs.existsSync(saved); ++k) await sleep(100);
+    const text = fs.existsSync(saved) ? fs.readFileSync(saved, 'utf8') : '';
+    check(/b = \[ (4\.0[01]|3\.9[89])[0-9]*, -(1\.9[89]|2\.0[01])[0-9]*, 0\.0 \]/.test(text),
+          `S: the edited scene is downloaded with the end at (4, -2) to within a pixel (${fs.existsSync(saved) ? 'downloaded' : 'no download'})`);
+    await p.close();
+
+    // 9. long work: a dropped lesson on a 200,000-triangle city takes tens of seconds to open; the page shows the
+    //    progress box while it works (not a frozen tab), and Esc stops it, said instead of the scene
+    p = await open(browser, '', 'long work');
+    p.expected.push(/opening \/uploads\/huge\.toml was stopped \(Esc\)/);
+    await p.page.evaluate(() => {
+      const files = new DataTransfer();
+      files.items.add(new File(['title = "A huge city"\nalgorithm = "bsp_traversal"\nscene = "city:200000"\n'], 'huge.toml'));
+      document.getElementById('canvas').dispatchEvent(new DragEvent('drop', {dataTransfer: files, bubbles: true, cancelable: true}));
+    });
+    const working = await p.waitFor(/^working: opening huge\.toml: [0-9,]+ machine steps/, 10000);
+    check(/^working: opening huge\.toml/.test(working), `the page shows its long work: "${working}"`);
+    let later = working;
+    for (let k = 0; k < 60 && later === working; ++k) await sleep(50), later = await p.state();
+    check(/^working: opening huge\.toml/.test(later) && later !== working, `and it goes on showing it: "${later}"`);
+    await p.shot('working.png');
+    await p.press('Escape');
+    for (let k = 0; k < 50 && !/stopped/.test(await p.ask('error')); ++k) await sleep(100);
+    check(/^opening \/uploads\/huge\.toml was stopped \(Esc\) after/.test(await p.ask('error')), `Esc stops it: "${await p.ask('error')}"`);
+    await p.shot('stopped.png');
+    await p.close();
+
+    // 10. a projector's scale, from the link
     p = await open(browser, '#projector&lesson=10_scan_line', 'projector');
     await p.shot('projector.png');
     await p.close();
