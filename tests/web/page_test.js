@@ -127,6 +127,18 @@ function desktop_run(lesson, key_names) {
     await p.press('Space');
     check(/paused/.test(await p.waitFor(/paused/)), 'Space again pauses');
     await p.shot('stepped.png');
+    // the window's keys a browser would take for itself (F1 its help, F5 a reload, Ctrl+= its zoom) are the window's
+    const taken = await p.page.evaluate(() => ['F1', 'F5', '=', '-', '0', 'F2'].map(key => {
+      const e = new KeyboardEvent('keydown', {key, ctrlKey: key.length === 1, bubbles: true, cancelable: true});
+      return key + (document.getElementById('canvas').dispatchEvent(e) ? ' browser' : ' window');
+    }).join(', '));
+    check(taken === 'F1 window, F5 window, = window, - window, 0 window, F2 browser', `keys kept from the browser: ${taken}`);
+    const at = /^step \d+ of 64/.exec(await p.state())[0];
+    await p.page.evaluate(() => { window.not_reloaded = true; });
+    await p.press('F5');
+    await sleep(300);
+    check((await p.state()).startsWith(at + ', paused') && await p.page.evaluate(() => window.not_reloaded === true),
+          `F5 reloads the lesson at its step, not the page: "${at}" → "${await p.state()}"`);
     await p.close();
 
     // 2. the page and the desktop after the same keys: a question held, answered wrongly, then steps on
