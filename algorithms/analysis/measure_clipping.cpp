@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
 #include "analysis/exact_clip.h"
+#include "core/portable_random.h"
 #include "analysis/measurement.h"
 #include "clipping/straight_clip.h"
 #include "clipping/cohen_sutherland.h"
@@ -25,11 +25,11 @@ using algo::plain_sutherland_hodgman;
 
 // A point of clip space spread over the volume and well beyond it, a fifth of them behind the eye (w < 0), so
 // that segments cross every plane and w = 0.
-Vec4 random_clip_point(std::mt19937& rng) {
-    std::uniform_real_distribution<double> w(-1, 4), u(-2.5, 2.5);
-    const double pw = w(rng);
+Vec4 random_clip_point(algo::PortableRandom& rng) {
+    const double pw = rng.uniform(-1, 4);
     const double s = std::max(std::fabs(pw), 0.25);
-    return {u(rng) * s, u(rng) * s, u(rng) * s, pw};
+    const auto u = [&] { return rng.uniform(-2.5, 2.5); };
+    return {u() * s, u() * s, u() * s, pw};
 }
 
 template <class T>
@@ -87,14 +87,13 @@ Measurement row(std::string method, std::string setting, double ms, const ErrorT
 
 std::vector<Measurement> measure_clipping(const ReportOptions& o) {
     plan_runs(o, 2 + 4 + 3);  // the segment machines, the segments' straight lines, Sutherland–Hodgman's three
-    std::mt19937 rng(2026);
+    algo::PortableRandom rng(2026);
     const std::size_t segments = o.quick ? 2000 : 20000, polygons = o.quick ? 300 : 3000;
     std::vector<std::pair<Vec4, Vec4>> segs(segments);
     for (auto& s : segs) s = {random_clip_point(rng), random_clip_point(rng)};
     std::vector<std::vector<Vec4>> polys(polygons);
-    std::uniform_int_distribution<int> corners(3, 6);
     for (auto& p : polys) {
-        p.resize(std::size_t(corners(rng)));
+        p.resize(std::size_t(rng.integer(3, 6)));
         for (Vec4& v : p) v = random_clip_point(rng);
     }
     std::vector<ExactSegment> exact;

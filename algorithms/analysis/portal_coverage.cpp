@@ -34,24 +34,22 @@ Coverage portal_coverage(const algo::CellModel& model, const algo::PortalRenderR
     return c;
 }
 
-Vec2 random_point_in(const std::vector<Vec2>& outline, std::mt19937& rng, double margin) {
+Vec2 random_point_in(const std::vector<Vec2>& outline, algo::PortableRandom& rng, double margin) {
     Vec2 lo(1e300), hi(-1e300);
     for (const Vec2& v : outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
-    std::uniform_real_distribution<double> ux(lo.x, hi.x), uy(lo.y, hi.y);
     for (;;) {
-        const double px = ux(rng), py = uy(rng);  // in this order with every compiler
+        const double px = rng.uniform(lo.x, hi.x), py = rng.uniform(lo.y, hi.y);  // in this order with every compiler
         if (algo::inside(outline, {px, py}, -margin)) return {px, py};
     }
 }
 
 PvsSampling sample_pvs(const algo::CellModel& model, const algo::Pvs& pvs, int rays, std::uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+    algo::PortableRandom rng(seed);
     std::vector<std::uint8_t> ever(pvs.matrix.size(), 0);
     PvsSampling s;
     for (std::uint32_t c = 0; c < pvs.cells; ++c)
         for (int k = 0; k < rays; ++k) {
-            const double a = angle(rng);
+            const double a = rng.uniform(0, 2 * M_PI);
             for (std::uint32_t to : algo::cells_along_ray(model, c, random_point_in(model.cells[c].outline, rng), {std::cos(a), std::sin(a)})) {
                 s.missed += !pvs.visible(c, to);
                 ever[std::size_t(c) * pvs.cells + to] = 1;

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <cstdint>
-#include <random>
 #include <vector>
 
+#include "core/portable_random.h"
 #include "raster/screen_polygon.h"
 #include "portals/cell_model.h"
 #include "portals/portal_render.h"
@@ -21,7 +21,7 @@ struct Coverage {
 Coverage portal_coverage(const algo::CellModel& model, const algo::PortalRenderResult& r, algo::Viewport vp);
 
 // A random point of the outline at least `margin` inside it.
-algo::Vec2 random_point_in(const std::vector<algo::Vec2>& outline, std::mt19937& rng, double margin = 1e-6);
+algo::Vec2 random_point_in(const std::vector<algo::Vec2>& outline, algo::PortableRandom& rng, double margin = 1e-6);
 
 struct PvsSampling {
     std::uint64_t pairs = 0;    // (cell, cell) pairs the PVS holds

@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "core/numeric.h"
-#include <random>
+#include "core/portable_random.h"
 
 namespace hsr::algo {
 namespace {
@@ -19,9 +19,9 @@ void add_quad(Scene& s, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d, 
     add_triangle(s, a, c, d, color, id);
 }
 
-Color random_color(std::mt19937& rng) {
-    std::uniform_int_distribution<int> channel(70, 240);
-    return {std::uint8_t(channel(rng)), std::uint8_t(channel(rng)), std::uint8_t(channel(rng))};
+Color random_color(PortableRandom& rng) {
+    const auto channel = [&] { return std::uint8_t(rng.integer(70, 240)); };
+    return {channel(), channel(), channel()};  // (a braced list: evaluated left to right)
 }
 
 }  // namespace
@@ -74,8 +74,7 @@ Scene city_scene(GeneratedScene o) {
     Scene s;
     s.name = "city of blocks";
     s.source = "city_scene(" + std::to_string(o.triangles) + " triangles, seed " + std::to_string(o.seed) + ")";
-    std::mt19937 rng(o.seed);
-    std::uniform_real_distribution<double> height(3, 18), inset(0, 1.2);
+    PortableRandom rng(o.seed);
     const auto blocks = std::size_t(std::ceil(std::sqrt(double(o.triangles) / 12)));  // 12 triangles a building
     const double lot = 10, street = 6;
     SceneId id = 1;
@@ -83,7 +82,10 @@ Scene city_scene(GeneratedScene o) {
     for (std::size_t i = 0; i < blocks; ++i)
         for (std::size_t j = 0; j < blocks; ++j) {
             const double x = double(i) * (lot + street) + street, z = -double(j) * (lot + street) - street;
-            add_box(s, {x + inset(rng), 0, z - lot + inset(rng)}, {x + lot - inset(rng), height(rng), z - inset(rng)}, random_color(rng), id);
+            const double left = rng.uniform(0, 1.2), back = rng.uniform(0, 1.2), right = rng.uniform(0, 1.2);
+            const double height = rng.uniform(3, 18), front = rng.uniform(0, 1.2);
+            const Color color = random_color(rng);
+            add_box(s, {x + left, 0, z - lot + back}, {x + lot - right, height, z - front}, color, id);
         }
     const double along = double(blocks) * (lot + street);
     add_quad(s, {0, 0, 0}, {along + street, 0, 0}, {along + street, 0, -along - street}, {0, 0, -along - street}, {90, 92, 98}, id);  // the ground
@@ -97,18 +99,19 @@ Scene field_scene(GeneratedScene o) {
     Scene s;
     s.name = "field of objects";
     s.source = "field_scene(" + std::to_string(o.triangles) + " triangles, seed " + std::to_string(o.seed) + ")";
-    std::mt19937 rng(o.seed);
+    PortableRandom rng(o.seed);
     const std::size_t objects = std::max<std::size_t>(1, o.triangles / 12);
     const double radius = 8 * std::cbrt(double(objects));  // the same density at any size
-    std::uniform_real_distribution<double> u(-1, 1), size(0.2, 1.0);
+    const auto u = [&] { return rng.uniform(-1, 1); };
     SceneId id = 1;
     for (std::size_t k = 0; k < objects; ++k) {
         glm::dvec3 c;
-        do c = {u(rng), u(rng), u(rng)};
+        do c = {u(), u(), u()};
         while (glm::dot(c, c) > 1 || glm::dot(c, c) < 0.0004);
         c *= radius;
-        const double h = size(rng) / 2;
-        add_box(s, c - glm::dvec3(h), c + glm::dvec3(h), random_color(rng), id);
+        const double h = rng.uniform(0.2, 1.0) / 2;
+        const Color color = random_color(rng);
+        add_box(s, c - glm::dvec3(h), c + glm::dvec3(h), color, id);
     }
     s.camera = {.eye = {0, 0, 0}, .target = {0, 0, -1}, .fov_y = 60, .aspect = 4.0 / 3, .near = 0.1, .far = 2 * radius};
     return s;
@@ -118,15 +121,16 @@ Scene spheres_scene(GeneratedScene o) {
     Scene s;
     s.name = "closed spheres";
     s.source = "spheres_scene(" + std::to_string(o.triangles) + " triangles, seed " + std::to_string(o.seed) + ")";
-    std::mt19937 rng(o.seed);
+    PortableRandom rng(o.seed);
     const int slices = 16, stacks = 8;  // 16 × 6 quads + 2 × 16 cap triangles = 224 triangles a sphere
     const std::size_t count = std::max<std::size_t>(1, o.triangles / 224);
     const auto side = std::size_t(std::ceil(std::sqrt(double(count))));
-    std::uniform_real_distribution<double> jitter(-0.5, 0.5);
     SceneId id = 1;
     for (std::size_t k = 0; k < count; ++k) {
         const double x = (double(k % side) - double(side - 1) / 2) * 3, y = (double(k / side) - double(side - 1) / 2) * 3;
-        add_sphere(s, {x + jitter(rng), y + jitter(rng), -jitter(rng) * 2}, 1.2, slices, stacks, random_color(rng), id);
+        const glm::dvec3 centre{x + rng.uniform(-0.5, 0.5), y + rng.uniform(-0.5, 0.5), -rng.uniform(-0.5, 0.5) * 2};
+        const Color color = random_color(rng);
+        add_sphere(s, centre, 1.2, slices, stacks, color, id);
     }
     const double back = 3.0 * double(side) + 4;
     s.camera = {.eye = {0, 0, back}, .target = {0, 0, 0}, .fov_y = 60, .aspect = 4.0 / 3, .near = 0.5, .far = 3 * back};

@@ -3,7 +3,8 @@
 
 #include <algorithm>
 #include <numeric>
-#include <random>
+
+#include "core/portable_random.h"
 
 namespace hsr::algo {
 
@@ -12,13 +13,14 @@ Scene random_triangles(RandomTriangles o) {
     s.name = "random triangles";
     s.source = "random_triangles(seed " + std::to_string(o.seed) + ")";
     s.camera = {.eye = {0, 0, 10}, .target = {0, 0, 0}, .fov_y = 60, .near = o.near, .far = o.far};
-    std::mt19937 rng(o.seed);
-    std::uniform_real_distribution<double> centre(-4, 4), offset(-o.size, o.size);
-    std::uniform_int_distribution<int> channel(40, 255);
-    for (std::size_t i = 0; i < o.count; ++i) {
-        const glm::dvec3 c(centre(rng), centre(rng), centre(rng));
-        ScenePolygon p{SceneId(i + 1), {std::uint8_t(channel(rng)), std::uint8_t(channel(rng)), std::uint8_t(channel(rng))}, {}};
-        for (int k = 0; k < 3; ++k) p.vertices.emplace_back(c + glm::dvec3(offset(rng), offset(rng), offset(rng)), 1.0);
+    PortableRandom rng(o.seed);
+    const auto centre = [&] { return rng.uniform(-4, 4); };
+    const auto offset = [&] { return rng.uniform(-o.size, o.size); };
+    const auto channel = [&] { return std::uint8_t(rng.integer(40, 255)); };
+    for (std::size_t i = 0; i < o.count; ++i) {  // (braced lists: evaluated left to right)
+        const glm::dvec3 c{centre(), centre(), centre()};
+        ScenePolygon p{SceneId(i + 1), {channel(), channel(), channel()}, {}};
+        for (int k = 0; k < 3; ++k) p.vertices.emplace_back(c + glm::dvec3{offset(), offset(), offset()}, 1.0);
         s.polygons.push_back(std::move(p));
     }
     return s;
@@ -47,20 +49,19 @@ Scene cell_maze(CellMaze o) {
             if (c + 1 < o.cols) walls.push_back({r * o.cols + c, r * o.cols + c + 1, true});
             if (r + 1 < o.rows) walls.push_back({r * o.cols + c, (r + 1) * o.cols + c, false});
         }
-    std::mt19937 rng(o.seed);
-    std::shuffle(walls.begin(), walls.end(), rng);
+    PortableRandom rng(o.seed);
+    rng.shuffle(walls);
     std::vector<std::uint32_t> part(o.rows * o.cols);
     std::iota(part.begin(), part.end(), 0u);
     const auto find = [&](std::uint32_t i) {
         while (part[i] != i) i = part[i] = part[part[i]];
         return i;
     };
-    std::uniform_real_distribution<double> chance(0, 1), at(0.2, size - door - 0.2);
     for (const Wall& w : walls) {
         const bool joins = find(w.a) != find(w.b);
-        if (!joins && chance(rng) >= o.extra_doors) continue;
+        if (!joins && rng.unit() >= o.extra_doors) continue;
         part[find(w.a)] = find(w.b);
-        const double x = (w.a % o.cols) * size, y = (w.a / o.cols) * size, t = at(rng);
+        const double x = (w.a % o.cols) * size, y = (w.a / o.cols) * size, t = rng.uniform(0.2, size - door - 0.2);
         ScenePortal p{{s.floor_plan.cells[w.a].name, s.floor_plan.cells[w.b].name}, {}, {}, 0, s.floor_plan.height, {}, 0};
         if (w.vertical) p.from = {x + size, y + t}, p.to = {x + size, y + t + door};
         else p.from = {x + t, y + size}, p.to = {x + t + door, y + size};

@@ -68,10 +68,30 @@ SceneId seen_in_ndc(const std::vector<SortPolygon>& polys, double x, double y) {
     return best;
 }
 
+// How far, in pixels, a pixel's centre is from the nearest edge of polygon `id`'s fragments (NDC vertices; rows go
+// down the image).
+double pixels_to_edge(const DepthSortResult& r, SceneId id, int x, int y, Viewport vp) {
+    const glm::dvec2 centre(x + 0.5, y + 0.5);
+    double nearest = 1e300;
+    for (const SortPolygon& p : r.polygons) {
+        if (p.id != id) continue;
+        for (std::size_t k = 0; k < p.vertices.size(); ++k) {
+            const auto pixel = [&](const Vec3& v) { return glm::dvec2((v.x + 1) / 2 * vp.width, (1 - v.y) / 2 * vp.height); };
+            const glm::dvec2 a = pixel(p.vertices[k]), b = pixel(p.vertices[(k + 1) % p.vertices.size()]);
+            const glm::dvec2 ab = b - a;
+            const double t = glm::dot(ab, ab) > 0 ? std::clamp(glm::dot(centre - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+            nearest = std::min(nearest, glm::length(centre - (a + t * ab)));
+        }
+    }
+    return nearest;
+}
+
 // Pixels whose visible polygon the ray cast and the painter's order agree on, and disagree on, leaving out
-// boundary pixels (where a neighbour's ray sees something else).
+// boundary pixels (where a neighbour's ray sees something else). A disagreement where the pixel's centre is within
+// 1/256 pixel of an edge of either polygon is a tie, not an error: the painter snaps vertices to 1/256 of a pixel
+// (as GL does), the ray cast does not, and a sliver thinner than a pixel has no neighbour to mark its boundary.
 struct Agreement {
-    int compared = 0, wrong = 0;
+    int compared = 0, wrong = 0, ties = 0;
 };
 Agreement compare_with_ray_cast(const Scene& s, const DepthSortResult& r, Viewport vp) {
     const Image image = paint(r, vp);
@@ -79,12 +99,15 @@ Agreement compare_with_ray_cast(const Scene& s, const DepthSortResult& r, Viewpo
     Agreement a;
     for (int y = 1; y + 1 < vp.height; ++y)
         for (int x = 1; x + 1 < vp.width; ++x) {
-            const SceneId want = ref.image.id(x, y);
+            const SceneId want = ref.image.id(x, y), got = image.id(x, y);
             if (ref.image.id(x + 1, y) != want || ref.image.id(x - 1, y) != want || ref.image.id(x, y + 1) != want ||
                 ref.image.id(x, y - 1) != want)
                 continue;
             ++a.compared;
-            a.wrong += image.id(x, y) != want;
+            if (got == want) continue;
+            const double snap = 1.0 / 256;
+            if ((got && pixels_to_edge(r, got, x, y, vp) <= snap) || (want && pixels_to_edge(r, want, x, y, vp) <= snap)) ++a.ties;
+            else ++a.wrong;
         }
     return a;
 }
@@ -185,10 +208,11 @@ TEST_CASE("painting in the depth-sorted order gives the ray cast's image on rand
         const Viewport vp{64, 64};
         const Run r = run(sort_polygons(s));
         REQUIRE_FALSE(r.result.bounded);
-        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, vp);
+        const auto [compared, wrong, ties] = compare_with_ray_cast(s, r.result, vp);
         INFO("seed " << seed << ", " << (projection == Projection::perspective ? "perspective" : "orthographic"));
         CHECK(compared > 1000);
         CHECK(wrong == 0);
+        CHECK(ties <= 2);  // (seed 2, perspective: one, a sliver's edge 1e-4 pixel from a pixel's centre)
     }
 }
 
@@ -269,9 +293,10 @@ TEST_CASE("the depth-sort lessons' scenes do what their lessons say", "[depth-so
         const Run r = run(sort_polygons(s));
         CHECK(r.result.pairs == 0);
         CHECK(r.result.order == std::vector<std::uint32_t>{1, 3, 2, 0});  // z = -1.5, -0.6, 0.3, 1.2: far to near
-        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, {64, 48});
+        const auto [compared, wrong, ties] = compare_with_ray_cast(s, r.result, {64, 48});
         CHECK(compared > 1000);
         CHECK(wrong == 0);
+        CHECK(ties == 0);
     }
     SECTION("one pair for each test: tests 1 to 5 and the swapped test 3 each settle a pair") {
         const Run r = run(sort_polygons(lesson_scene("depth_sort_tests.toml")));
@@ -289,9 +314,10 @@ TEST_CASE("the depth-sort lessons' scenes do what their lessons say", "[depth-so
         const Scene s = lesson_scene("depth_sort_piercing.toml");
         const Run r = run(sort_polygons(s));
         CHECK(r.result.splits == 1);
-        const auto [compared, wrong] = compare_with_ray_cast(s, r.result, {64, 48});
+        const auto [compared, wrong, ties] = compare_with_ray_cast(s, r.result, {64, 48});
         CHECK(compared > 1000);
         CHECK(wrong == 0);
+        CHECK(ties == 0);
     }
     SECTION("translucent panes: red over green over blue where all three overlap") {
         const Scene s = lesson_scene("translucent_panes.toml");

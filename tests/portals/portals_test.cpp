@@ -86,8 +86,9 @@ TEST_CASE("the PVS is conservative in 3D: rays at any height and slope through w
     for (const char* file : {"cells_lecture.toml", "cells_ring.toml", "cells_general.toml", "cells_windows_3d.toml", "cells_shaped_openings.toml"}) {
         INFO(file);
         const Built b = build(scene_named(file));
-        std::mt19937 rng(17);
-        std::uniform_real_distribution<double> height(0.05, b.model.height - 0.05), unit(-1, 1);
+        PortableRandom rng(17);
+        const auto unit = [&](PortableRandom& r) { return r.uniform(-1, 1); };
+        const auto height = [&](PortableRandom& r) { return r.uniform(0.05, b.model.height - 0.05); };
         int outside_pvs = 0, through_one = 0;
         for (std::uint32_t c = 0; c < b.pvs.cells; ++c)
             for (int k = 0; k < 4000; ++k) {
@@ -179,8 +180,8 @@ TEST_CASE("portal_render draws every polygon a ray cast from the eye sees", "[po
                              "cells_windows_3d.toml", "cells_shaped_openings.toml"}) {
         INFO(file);
         Built b = build(scene_named(file));
-        std::mt19937 rng(11);
-        std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+        PortableRandom rng(11);
+        const auto angle = [](PortableRandom& r) { return r.uniform(0, 2 * M_PI); };
         for (std::uint32_t c = 0; c < b.pvs.cells; ++c)
             for (int k = 0; k < 3; ++k) {
                 const Vec2 eye = random_point_in(b.model.cells[c].outline, rng, 0.2);

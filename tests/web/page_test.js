@@ -3,7 +3,8 @@
 // local server and, on each page, checks that the console has no errors:
 //   - the tour: it opens at step 0; → ← step; Space plays and pauses (read from the page's state line, #state);
 //   - the same keys on lesson 01 in the page and in the desktop build (offscreen): the same state line and the same
-//     hash of the events played; then N (the next lesson), X (practice) and an answer;
+//     hash of the events played; then N (the next lesson), X (practice) and an answer; the same for the lessons on
+//     generated scenes;
 //   - a link (#lesson=05_bsp_traversal&step=12) opens that lesson at that step, and the address follows the player;
 //   - files of one's own: O's file picker and a drop on the window open a lesson with its scene; E offers the export
 //     as downloads;
@@ -166,6 +167,20 @@ function desktop_run(lesson, key_names) {
     check(await p.ask('practice') === 'answered 1, right 0' || await p.ask('practice') === 'answered 1, right 1',
           `0.5 Enter answers it, and the score counts it: ${await p.ask('practice')}`);
     await p.close();
+
+    // the lessons on generated scenes (a field, a city): the same scene, the same events in the page as on the desktop
+    // (the generators draw portable random numbers: libc++'s distributions are not libstdc++'s)
+    for (const lesson of ['22_culling_frustum', '23_culling_detail', '25_culling_hiz']) {
+      const steps = ['Right', 'Right', 'Right'];
+      p = await open(browser, '#lesson=' + lesson, lesson);
+      await p.press(...steps);
+      await sleep(300);
+      const [state, trace] = [await p.state(), await p.ask('trace')];
+      const desk = desktop_run(lesson, steps);
+      check(state === desk.state && trace === desk.trace,
+            `${lesson}: the page and the desktop play the same generated scene ("${state}" ${trace} | "${desk.state}" ${desk.trace})`);
+      await p.close();
+    }
 
     // 3. a link to a moment: the lesson and the step it names, and the address follows the player
     p = await open(browser, '#lesson=05_bsp_traversal&step=12', 'a link');

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <random>
 
+#include "core/portable_random.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
 #include "scene/random_scene.h"
@@ -37,13 +37,12 @@ std::optional<algo::Scene> random_triangle_scene(std::uint32_t seed, bool) {
 }
 
 algo::Scene random_segment_scene_2d(std::uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-5, 5), len(1, 4), angle(0, 6.283185307179586);
+    algo::PortableRandom rng(seed);
     algo::Scene s;
     s.name = "Random segments (seed " + std::to_string(seed) + ")";
     s.camera.eye = {0.5, -0.5, 0};
     for (int k = 0; k < 7; ++k) {
-        const double x = u(rng), y = u(rng), l = len(rng), a = angle(rng);
+        const double x = rng.uniform(-5, 5), y = rng.uniform(-5, 5), l = rng.uniform(1, 4), a = rng.uniform(0, 6.283185307179586);
         s.segments.push_back({k + 1, colour(k), {x, y, 0, 1}, {x + l * std::cos(a), y + l * std::sin(a), 0, 1}});
     }
     return s;
@@ -51,10 +50,13 @@ algo::Scene random_segment_scene_2d(std::uint32_t seed) {
 
 std::optional<algo::Scene> random_clipping_scene(std::uint32_t seed, bool) {
     algo::Scene s = algo::random_triangles({.count = 6, .seed = seed, .size = 4});
-    std::mt19937 rng(seed + 1000);
-    std::uniform_real_distribution<double> u(-8, 8), z(-12, 12);
-    for (int k = 0; k < 6; ++k)
-        s.segments.push_back({int(s.polygons.size()) + k + 1, colour(k), {u(rng), u(rng), z(rng), 1}, {u(rng), u(rng), z(rng), 1}});
+    algo::PortableRandom rng(seed + 1000);
+    const auto u = [&] { return rng.uniform(-8, 8); };
+    const auto z = [&] { return rng.uniform(-12, 12); };
+    for (int k = 0; k < 6; ++k) {
+        const algo::Vec4 a{u(), u(), z(), 1}, b{u(), u(), z(), 1};  // (braced lists: evaluated left to right)
+        s.segments.push_back({int(s.polygons.size()) + k + 1, colour(k), a, b});
+    }
     return s;
 }
 
