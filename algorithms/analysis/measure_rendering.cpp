@@ -41,15 +41,17 @@ std::string ratio_text(double r) {
 std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
     std::vector<Measurement> rows;
-    plan_runs(o, 4 * 5);  // near planes × depth formats
+    plan_runs(o, 4 * 6);  // near planes × depth formats
     // The same triangles (depths 6 to 14 from the eye) with the near plane pulled towards the eye: the ratio
-    // far/near grows, and the fixed-point formats lose their resolution at the back.
+    // far/near grows, and the fixed-point formats lose their resolution at the back; linear24 (eye z, linearly)
+    // keeps the same step at every depth, which is why the lecture's rule of thumb (f : n < 1000 for 24 bits) is
+    // about the others.
     for (const double near : {1.0, 1e-2, 1e-4, 1e-6}) {
         const algo::Scene s = algo::random_triangles({.count = o.quick ? 80u : 300u, .seed = 11, .size = 2.5, .near = near, .far = 20});
         const algo::Image ref = reference(s, vp);
         const auto screen = algo::project_polygons(s, vp);
         using F = algo::DepthFormat;
-        for (const F format : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed}) {
+        for (const F format : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24}) {
             algo::FrameDepth f{algo::Image(0, 0), {}, {}};
             const double ms = median_ms(o, [&] {
                 f = algo::zbuffer_fill(screen, algo::zbuffer_options(s, vp, format, algo::EventDetail::polygon)).run_to_end();

@@ -74,12 +74,15 @@ TEST_CASE("clipping: double within 1e-14 of the exact answer, float about 1e-7 o
     }
 }
 
-TEST_CASE("z-buffer: precision falls with the far/near ratio in the fixed-point formats, not in reversed float", "[analysis][zbuffer]") {
+TEST_CASE("z-buffer: precision falls with the far/near ratio in the fixed-point formats, not in reversed float or linear eye z", "[analysis][zbuffer]") {
     const auto rows = analysis::measure_zbuffer(quick);
     CHECK(row(rows, "int16", "2e+07").error > 10 * row(rows, "int32", "2e+07").error);
     CHECK(row(rows, "int16", "2e+07").error > 10 * row(rows, "int16", "2e+01").error);
     CHECK(row(rows, "float32-reversed", "2e+07").error < row(rows, "float32", "2e+07").error);
     CHECK(row(rows, "int32", "2e+01").error < 0.01);  // at a modest ratio only pixels on edges differ
+    // eye z stored linearly keeps its step at every depth: the rule of thumb (f : n < 1000 for 24 bits) is not its
+    CHECK(row(rows, "linear24", "2e+07").error < 0.01);
+    CHECK(row(rows, "linear24", "2e+07").error < row(rows, "int24", "2e+07").error);
 }
 
 TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
