@@ -13,7 +13,8 @@ desktop=$(realpath "$2")
 node_dir=$build/node
 if [ ! -d "$node_dir/node_modules/puppeteer-core" ]; then
   mkdir -p "$node_dir" && cp "$here/package.json" "$node_dir/"
-  (cd "$node_dir" && PUPPETEER_SKIP_DOWNLOAD=1 npm install --no-audit --no-fund --silent)
+  (cd "$node_dir" && PUPPETEER_SKIP_DOWNLOAD=1 npm install --no-audit --no-fund --loglevel=error) ||
+    { echo "tests/web: npm could not install puppeteer-core from the npm registry (its reason is above)" >&2; exit 1; }
 fi
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$build/site" > "$build/server.log" 2>&1 &
