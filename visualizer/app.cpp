@@ -210,8 +210,9 @@ glm::vec2 gesture_window_point(Lessonplay& lp, const Renderer& r, glm::dvec2 p) 
 }
 
 // What the page's script asks (platform.h answer_queries): the file playing, the error shown instead of it, the
-// narration's language, the practice score over every topic, the played trace, where a gesture's point is in the window ("window_point X Y": "x y", as
-// --keys' gestures name points); "" to anything else.
+// narration's language, the practice score over every topic, the played trace, the type's size in points, the last
+// frame's layout problems, where a gesture's point is in the window ("window_point X Y": "x y", as --keys' gestures
+// name points); "" to anything else.
 std::string page_answer(Lessonplay& lp, const Renderer& r, const std::string& question) {
     if (question == "lesson") return lp.path;
     if (question == "error") return lp.error;
@@ -222,6 +223,12 @@ std::string page_answer(Lessonplay& lp, const Renderer& r, const std::string& qu
         return "answered " + std::to_string(answered) + ", right " + std::to_string(right);
     }
     if (question == "trace" && lp.session()) return played_trace_text(*lp.session());
+    if (question == "type_size") return std::to_string(std::lround(ImGui::GetFontSize()));  // in points
+    if (question == "layout") {  // what the last frame's layout audit found (a text cut, a box too small); "" if nothing
+        std::string found;
+        for (const std::string& problem : layout_problems()) found += (found.empty() ? "" : "; ") + problem;
+        return found;
+    }
     std::istringstream asked(question);
     std::string word;
     glm::dvec2 p;

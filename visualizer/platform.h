@@ -49,8 +49,9 @@ void publish_place(const std::string& lesson, std::size_t step);
 
 // What the page's script may ask the window, answered by `answer`: "trace" (the hash of the events played so far,
 // for the test that compares the page with the desktop after the same keys), "lesson" (the file playing), "error"
-// (shown instead of it), "language" (the narration's), "practice" (answered and right, over the topics) and
-// "window_point X Y" (where the point a --keys gesture names is in the window). The desktop has no page to ask.
+// (shown instead of it), "language" (the narration's), "practice" (answered and right, over the topics), "type_size"
+// (in points), "layout" (the last frame's layout problems) and "window_point X Y" (where the point a --keys gesture
+// names is in the window). The desktop has no page to ask.
 void answer_queries(std::function<std::string(const std::string& question)> answer);
 
 // A file written to outlive the run (the settings): a browser copies its in-memory files into its own storage

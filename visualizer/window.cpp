@@ -21,6 +21,17 @@ ImGuiStyle& unscaled_style() {
     return style;
 }
 
+// Drawable pixels per window point: 2 in a browser page at devicePixelRatio 2 (the window's size is in CSS pixels),
+// 1 where the window's size is in pixels (X11). Dear ImGui lays out in points and draws them this many pixels big.
+float pixels_per_point() {
+    SDL_Window* window = SDL_GL_GetCurrentWindow();
+    int points = 0, pixels = 0, h = 0;
+    if (!window) return 1;
+    SDL_GetWindowSize(window, &points, &h);
+    SDL_GL_GetDrawableSize(window, &pixels, &h);
+    return points > 0 && pixels > 0 ? float(pixels) / float(points) : 1.0f;
+}
+
 }  // namespace
 
 void load_fonts(ImGuiIO& io, float scale) {
@@ -37,8 +48,11 @@ void load_fonts(ImGuiIO& io, float scale) {
         io.Fonts->AddFontDefault();  // ASCII only: ≤, → and ε will show as '?'
         return;
     }
-    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale, nullptr, ranges.data());
-    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale, nullptr, ranges.data());  // pseudocode
+    // rasterised for the drawable's pixels and shown at the size in points: sharp on a high-density screen
+    const float density = pixels_per_point();
+    io.FontGlobalScale = 1 / density;
+    io.Fonts->AddFontFromFileTTF(sans, 17.0f * scale * density, nullptr, ranges.data());
+    io.Fonts->AddFontFromFileTTF(mono, 15.0f * scale * density, nullptr, ranges.data());  // pseudocode
 }
 
 bool interactive(const AppOptions& o) { return !o.screenshot && !o.record_dir && !o.gif; }
@@ -110,7 +124,10 @@ float initial_scale(const AppOptions& o) {
     if (o.scale > 0) return o.scale;
     if (o.projector) return 1.3f;
     float dpi = 0;
-    if (SDL_GetDisplayDPI(0, &dpi, nullptr, nullptr) == 0 && dpi >= 144) return std::min(dpi / 96, 3.0f);
+    // a dense screen whose window is sized in pixels (X11) needs larger type; one sized in points (a browser page at
+    // devicePixelRatio 2) has it already
+    if (SDL_GetDisplayDPI(0, &dpi, nullptr, nullptr) == 0 && dpi / pixels_per_point() >= 144)
+        return std::min(dpi / 96 / pixels_per_point(), 3.0f);
     return 1.0f;
 }
 

@@ -2,6 +2,7 @@
 // The page's entry point: the window with the default lesson, as `hsrviz` with no arguments opens it, or with the
 // lesson, step, language and projector scale the page's address names (#lesson=05_bsp_traversal&step=12&lang=de).
 // (The command line's subcommands need a terminal and files: the page has neither.)
+#include <SDL.h>
 #include <emscripten.h>
 
 #include <cstdio>
@@ -34,6 +35,10 @@ hsr::viz::AppOptions options;
 
 int main() {
     read_address();
+    // The page pauses only where the window asks it to (platform.h let_the_frame_show, in long work). Left to itself,
+    // SDL built with Asyncify sleeps at every swap: each frame would unwind out of the browser's animation frame,
+    // and the page's script could find the window halfway through a frame.
+    SDL_SetHint(SDL_HINT_EMSCRIPTEN_ASYNCIFY, "0");
     // the browser's window, as the desktop window opens at the size it is given
     options.width = EM_ASM_INT({ return window.innerWidth; });
     options.height = EM_ASM_INT({ return window.innerHeight; });

@@ -11,6 +11,8 @@
 //   - the settings persist: the language chosen with L is the language after the page is opened again;
 //   - the lesson menu (M), presets (P, a case, B), editing by mouse (a dragged end; S downloads the edited scene);
 //   - long work shows its progress box, and Esc stops it;
+//   - the keys a browser would take for itself (F1, F5, Ctrl+=) are the window's;
+//   - devicePixelRatio 2: the same layout, sharp type;
 //   - #projector: larger type.
 // It takes screenshots of each (OUT_DIR/*.png) to look at.
 //   node page_test.js URL OUT_DIR DESKTOP_HSRVIZ LESSONS_DIR
@@ -307,7 +309,21 @@ function desktop_run(lesson, key_names) {
     await p.shot('stopped.png');
     await p.close();
 
-    // 10. a projector's scale, from the link
+    // 10. a high-density screen (devicePixelRatio 2, as a laptop's): the same layout in CSS pixels as at 1, with the
+    //     type rasterised for the device's pixels (it was laid out twice too big, the bottom bar cut)
+    const dense = await browser.newPage();
+    await dense.setViewport({width: 1280, height: 800, deviceScaleFactor: 2});
+    await dense.goto(url + '#lesson=04_bsp_build');
+    await dense.waitForFunction(() => /^step \d+ of/.test(document.getElementById('state').textContent), {timeout: 30000});
+    await sleep(300);
+    const dense_ask = q => dense.evaluate(q => Module.ccall('hsr_query', 'string', ['string'], [q]), q);
+    const canvas = await dense.evaluate(() => { const c = document.getElementById('canvas'); return `${c.width}x${c.height}`; });
+    check(canvas === '2560x1600' && await dense_ask('type_size') === '17' && await dense_ask('layout') === '',
+          `devicePixelRatio 2: a 2560×1600 canvas, type 17 points as at 1, nothing cut (${canvas}, ${await dense_ask('type_size')}, "${await dense_ask('layout')}")`);
+    await dense.screenshot({path: path.join(out, 'dense.png')});
+    await dense.close();
+
+    // 11. a projector's scale, from the link
     p = await open(browser, '#projector&lesson=10_scan_line', 'projector');
     await p.shot('projector.png');
     await p.close();
