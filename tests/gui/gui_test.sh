@@ -341,9 +341,15 @@ print("%016x" % h)')
     # it is measured off the window's thread: Esc (or R, or Cancel) stops it, says so, and the window goes on
     # (a culling lesson without chapters: no question holds the step after it)
     printf 'title = "cancel"\nalgorithm = "cull_frustum"\nscene = "field:900"\ncull = "frustum"\n' > cancel.toml
-    "$hsrviz" cancel.toml --screenshot cancelled.png --frames 3 --keys "R,Escape,Right" > cancelled.txt
+    # (the measurement takes a fraction of a second: on a loaded machine it can end before the next frame's Esc, no
+    # fault of the window; of three tries, Esc must stop one)
+    for try in 1 2 3; do
+      "$hsrviz" cancel.toml --screenshot cancelled.png --frames 3 --keys "R,Escape,Right" > cancelled.txt
+      if grep -q "measurement cancelled" cancelled.txt; then break; fi
+      echo "try $try: the measurement ended before Esc"
+    done
     grep -q "measurement cancelled" cancelled.txt
-    ! grep -q "measured .* rows" cancelled.txt
+    if grep -q "measured .* rows" cancelled.txt; then exit 1; fi
     grep -q "at step 1 of" cancelled.txt ;;
   settings)  # the panel column's width ([ and ]) and the language are remembered between runs; a broken file is named
     "$hsrviz" "$src/lessons/01_cohen_sutherland.toml" --screenshot wide.png --frames 5 --keys "],],L"
