@@ -359,9 +359,11 @@ print("%016x" % h)')
     grep -q '^side = 540$' window.toml      # it started from the 580 the first run left
     grep -q "language de" narrow.txt        # and in German
     # a lesson narrated only in English: its narration stays English, the window's own words follow the choice
-    "$hsrviz" "$src/lessons/19_portals_render.toml" --screenshot english.png --frames 3 > english.txt
+    printf 'title = "English only"\nalgorithm = "portal_render"\nscene = "%s"\n[[chapters]]\ntitle = "One"\nstep = 0\nnarration = "Words."\n' \
+      "$src/assets/scenes/cells_lecture.toml" > english.toml
+    "$hsrviz" english.toml --screenshot english.png --frames 3 > english.txt
     grep -q "window words de, narration en" english.txt
-    "$hsrviz" "$src/lessons/19_portals_render.toml" --screenshot english.png --frames 3 --keys "L" > english.txt
+    "$hsrviz" english.toml --screenshot english.png --frames 3 --keys "L" > english.txt
     grep -q "window words en, narration en" english.txt
     grep -q "^language = 'en'$" window.toml
     "$png_check" narrow.png 1280 800        # a screenshot keeps its size whatever was remembered

@@ -187,7 +187,13 @@ TEST_CASE("check reports every problem of a file, each with its line and the fie
 
 TEST_CASE("the student's language is kept across lessons; the narration follows it where the lesson has it", "[lesson][classroom]") {
     auto german = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
-    auto english_only = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/19_portals_render.toml"));
+    // a lesson narrated only in English (every shipped lesson is narrated in English and German)
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_english_only_test";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "english.toml") << "title = \"English only\"\nalgorithm = \"portal_render\"\nscene = \"" << HSR_SOURCE_DIR
+                                        << "/assets/scenes/cells_lecture.toml\"\n[[chapters]]\ntitle = \"One\"\nstep = 0\nnarration = \"Words.\"\n";
+    auto english_only = make_session(load_lesson((dir / "english.toml").string()));
+    std::filesystem::remove_all(dir);
     REQUIRE(english_only->lesson().languages == std::vector<std::string>{"en"});
     Classroom room;
     room.attach(*english_only);
