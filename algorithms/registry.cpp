@@ -30,6 +30,7 @@ constexpr std::array registry = {
     AlgorithmInfo{"raycast_brute", "Ray casting: every primitive", 1, Acceleration::none},
     AlgorithmInfo{"raycast_grid", "Ray casting through a regular grid", 3, Acceleration::grid},
     AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Acceleration::octree},
+    AlgorithmInfo{"floating_horizon", "The floating horizon for terrain", 2, HorizonMachine::floating_horizon},
 };
 
 }  // namespace

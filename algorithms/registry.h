@@ -24,10 +24,11 @@ enum class ZMergeMachine : std::uint8_t { merge };
 enum class DepthSortMachine : std::uint8_t { newell };
 enum class PortalMachine : std::uint8_t { pvs, render, render_bbox };  // render_bbox: bounding-box frusta
 enum class CullingMachine : std::uint8_t { bounds, frustum, detail, occluders, hiz };
+enum class HorizonMachine : std::uint8_t { floating_horizon };
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
-                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine>;
+                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

@@ -6,11 +6,13 @@
 #include <cstdio>
 
 #include "analysis/exact_clip.h"
+#include "analysis/exact_horizon.h"
 #include "analysis/painters.h"
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
 #include "core/numeric.h"
 #include "culling/backface.h"
+#include "horizon/floating_horizon.h"
 #include "portals/pvs.h"
 #include "raycast/ray_cast.h"
 #include "zbuffer/scanline.h"
@@ -207,6 +209,31 @@ void check_rejects(const Scene& scene, std::vector<ExpectOutcome>& out) {
     }
 }
 
+void check_horizon(const Scene& scene, std::vector<ExpectOutcome>& out) {
+    for (const ExpectHorizon& x : scene.expect.horizon) {
+        const std::string what = "expect.horizon " + std::to_string(x.columns) + " columns";
+        try {
+            const HorizonImage image = floating_horizon(scene.terrain, {.columns = x.columns}).run_to_end();
+            const HorizonReference exact = exact_horizon(scene.terrain, x.columns);
+            double largest = scene.terrain.rows * scene.terrain.dz;  // what a screen y is made of
+            for (const double h : scene.terrain.heights) largest = std::max(largest, std::abs(h));
+            std::uint64_t visible = 0, differing = 0, near_ties = 0;
+            for (std::size_t k = 0; k < image.sight.size(); ++k) {
+                const bool shown = image.sight[k] != Sight::hidden;
+                visible += shown;
+                if (shown != exact.visible[k]) ++(exact.margin[k] <= 1e-12 * largest ? near_ties : differing);
+            }
+            const bool count_right = !x.visible || *x.visible == visible;
+            out.push_back({what, x.line, differing == 0 && count_right, double(near_ties) / double(image.sight.size()),
+                           std::to_string(visible) + " of " + std::to_string(image.sight.size()) + " points seen" +
+                               (x.visible ? " (expected " + std::to_string(*x.visible) + ")" : "") + "; " + std::to_string(differing) +
+                               " differ from the exact ray walk, " + std::to_string(near_ties) + " within a relative 1e-12 of a tie"});
+        } catch (const std::exception& e) {
+            out.push_back({what, x.line, false, 0, std::string("refused: ") + e.what()});
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<ExpectOutcome> check_expectations(const Scene& scene) {
@@ -217,6 +244,7 @@ std::vector<ExpectOutcome> check_expectations(const Scene& scene) {
     check_pvs(scene, out);
     check_images(scene, out);
     check_rejects(scene, out);
+    check_horizon(scene, out);
     return out;
 }
 

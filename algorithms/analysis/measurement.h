@@ -55,6 +55,7 @@ std::vector<Measurement> measure_zbuffer(const ReportOptions& o);
 std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o);  // BSP per splitter rule, depth sort
 std::vector<Measurement> measure_portals(const ReportOptions& o);
 std::vector<Measurement> measure_culling(const ReportOptions& o);
+std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floating horizon per screen resolution
 std::vector<Measurement> measure_all(const ReportOptions& o);
 
 // The median wall time of `repeats` calls of f, in milliseconds.

@@ -38,6 +38,7 @@ const char* family_title(const std::string& f) {
     if (f == "hsr") return "BSP and depth sort: pixels differing from the ray cast";
     if (f == "portals") return "Cells and portals: PVS and frustum slack, missed cells and polygons";
     if (f == "culling") return "Culling pipeline: pixels lost, per scene";
+    if (f == "horizon") return "Floating horizon: the curves' length drawn wrong, per screen resolution";
     return "Other";
 }
 

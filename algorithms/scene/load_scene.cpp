@@ -15,6 +15,7 @@
 #include "core/numeric.h"
 #include "core/plane.h"
 #include "scene/load_floor_plan.h"
+#include "scene/load_terrain.h"
 #include "scene/load_mesh.h"
 
 namespace hsr::algo {
@@ -96,7 +97,7 @@ void for_each_table(const TomlReader& r, const toml::table& root, std::string_vi
 Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& plan) {
     Expect e;
     if (!t) return e;
-    r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs", "image", "rejects"});
+    r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs", "image", "rejects", "horizon"});
     static const std::vector<std::string> renderers = {"zbuffer", "scanline", "bsp", "depth-sort", "raycast"};
     const auto renderer = [&](const toml::table& c, const std::string& f, bool raycast_too) {
         std::string a = r.text(c, "algorithm", f);
@@ -142,6 +143,19 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
         e.rejects.push_back({renderer(c, f, true), r.text(c, "message", f), int(c.source().begin.line)});
     });
     e.pvs = read_expect_pvs(r, r.table(*t, "pvs", "expect", false), plan);
+    for_each_table(r, *t, "horizon", [&](const toml::table& c, const std::string& f0) {
+        const std::string f = "expect." + f0;
+        r.only_keys(c, f, {"columns", "visible"});
+        ExpectHorizon x{.line = int(c.source().begin.line)};
+        x.columns = int(std::clamp<std::int64_t>(r.integer(c, "columns", f, 20), 0, 1 << 20));
+        if (x.columns < 1 || x.columns > 4096) r.fail(c.get("columns"), join(f, "columns"), "expected 1 to 4096 screen columns");
+        if (c.contains("visible")) {
+            const auto v = r.integer(c, "visible", f);
+            if (v < 0) r.fail(c.get("visible"), join(f, "visible"), "expected a count of points, 0 or more");
+            x.visible = std::uint64_t(v);
+        }
+        e.horizon.push_back(x);
+    });
     for_each_table(r, *t, "cull", [&](const toml::table& c, const std::string& f0) {
         const std::string f = "expect." + f0;
         r.only_keys(c, f, {"test", "kept"});
@@ -243,7 +257,7 @@ double bend(const std::vector<glm::dvec4>& vertices) {
 
 Scene read_scene(const TomlReader& r) {
     const toml::table& root = r.root();
-    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "meshes", "floor_plan", "expect", "promise"});
+    r.only_keys(root, "", {"name", "description", "coordinates", "camera", "points", "segments", "polygons", "meshes", "floor_plan", "terrain", "expect", "promise"});
     Scene s;
     s.source = r.path();
     s.name = r.text(root, "name", "", "untitled scene");
@@ -314,13 +328,14 @@ Scene read_scene(const TomlReader& r) {
         s.camera.target = {plan.look.x, plan.eye_height, -plan.look.y};
         s.camera.up = {0, 1, 0};
     }
+    s.terrain = read_terrain(r, r.table(root, "terrain", "", false));
     s.expect = read_expect(r, r.table(root, "expect", "", false), s.floor_plan);
     for (const ExpectClip& x : s.expect.clip)
         if (!ids.contains(x.id))
             throw LoadError(r.path(), x.line, 1, "expect.clip.id",
                             "no primitive has id " + std::to_string(x.id));
-    if (s.points.empty() && s.segments.empty() && s.polygons.empty() && s.floor_plan.cells.empty())
-        r.fail(nullptr, "", "the scene has nothing in it (no points, segments, polygons, meshes or floor plan): "
+    if (s.points.empty() && s.segments.empty() && s.polygons.empty() && s.floor_plan.cells.empty() && s.terrain.rows == 0)
+        r.fail(nullptr, "", "the scene has nothing in it (no points, segments, polygons, meshes, floor plan or terrain): "
                             "an empty file, or one saved half-written?");
     return s;
 }

@@ -77,6 +77,15 @@ std::string scene_toml(const Scene& s) {
         if (!portals.empty()) plan.insert("portals", std::move(portals));
         root.insert("floor_plan", std::move(plan));
     }
+    if (const Terrain& t = s.terrain; t.rows > 0) {
+        toml::array heights;
+        for (int j = 0; j < t.rows; ++j) {
+            toml::array row;
+            for (int i = 0; i < t.columns; ++i) row.push_back(t.height(i, j));
+            heights.push_back(std::move(row));
+        }
+        root.insert("terrain", toml::table{{"spacing", toml::array{t.dx, t.dz}}, {"elevation", t.elevation}, {"heights", std::move(heights)}});
+    }
     std::ostringstream out;
     out << "# Saved by hsrviz\n" << root << "\n";
     return out.str();

@@ -81,6 +81,20 @@ struct FloorPlan {
     double eye_height = 1.6;
 };
 
+// A terrain for the floating horizon: a height field sampled on a grid, seen in parallel projection along +z,
+// tilted down by `elevation`. Row 0 is the curve nearest the eye; a curve is the heights of one row across x.
+// Between samples the surface is bilinear, so its section at any x is linear in z between two rows.
+struct Terrain {
+    int columns = 0, rows = 0;     // samples across (x) and in depth (z); no rows: not a terrain scene
+    double dx = 1, dz = 1;         // sample spacing, world units
+    double elevation = 30;         // degrees, 0 (level) … 90 (straight down)
+    std::vector<double> heights;   // world y, rows × columns, row-major: heights[row * columns + column]
+    int line = 0;                  // where the scene file writes it
+
+    double height(int column, int row) const { return heights[std::size_t(row) * std::size_t(columns) + std::size_t(column)]; }
+    double width() const { return double(columns - 1) * dx; }  // from x = 0 to the last column
+};
+
 // [expect.pvs]: each cell's potentially visible set, by name.
 struct ExpectPvs {
     std::string cell;
@@ -126,6 +140,13 @@ struct ExpectRejects {
     std::string message;
     int line;
 };
+// [[expect.horizon]]: the floating horizon on the scene's terrain at `columns` screen columns agrees with the exact ray
+// walk at every point (but within a relative 1e-12 of a tie), and sees `visible` points where that is given.
+struct ExpectHorizon {
+    int columns = 20;
+    std::optional<std::uint64_t> visible;
+    int line;
+};
 struct Expect {
     std::vector<ExpectClip> clip;
     std::vector<ExpectImage> image;
@@ -133,6 +154,7 @@ struct Expect {
     std::vector<ExpectBsp> bsp;
     std::vector<ExpectCull> cull;
     std::vector<ExpectPvs> pvs;
+    std::vector<ExpectHorizon> horizon;
 };
 
 struct Scene {
@@ -146,6 +168,7 @@ struct Scene {
     std::vector<SceneSegment> segments;
     std::vector<ScenePolygon> polygons;
     FloorPlan floor_plan;  // no cells: not a cells-and-portals scene
+    Terrain terrain;       // no rows: not a terrain scene
     Expect expect;
 };
 

@@ -85,6 +85,19 @@ TEST_CASE("z-buffer: precision falls with the far/near ratio in the fixed-point 
     CHECK(row(rows, "linear24", "2e+07").error < row(rows, "int24", "2e+07").error);
 }
 
+TEST_CASE("floating horizon: the image-precision error falls as the columns grow, and no point differs from the exact walk", "[analysis][horizon]") {
+    const auto rows = analysis::measure_horizon(quick);
+    REQUIRE(rows.size() == 3);
+    for (const Measurement& m : rows) {
+        INFO(m.setting);
+        CHECK(m.wrong == 0);
+        CHECK(m.wrong_must_be_zero);
+        CHECK(m.error < 0.5);
+    }
+    CHECK(row(rows, "floating horizon", " 16 columns").error > 0);
+    CHECK(row(rows, "floating horizon", " 256 columns").error < row(rows, "floating horizon", " 16 columns").error / 4);
+}
+
 TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
     const auto rows = analysis::measure_hidden_surfaces(quick);
     for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort"}) {

@@ -9,6 +9,7 @@
 #include "core/numeric.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
+#include "horizon/floating_horizon.h"
 #include "portals/portal_render.h"
 #include "raycast/ray_cast.h"
 #include "zbuffer/zbuffer_fill.h"
@@ -28,6 +29,8 @@ inline void run_machines(const algo::Scene& s) {
     using namespace hsr::algo;
     for (const ClipAlgorithm a : {ClipAlgorithm::cohen_sutherland, ClipAlgorithm::liang_barsky, ClipAlgorithm::sutherland_hodgman})
         refused_or_done([&] { (void)clip_scene(clip_job(s), a).run_to_end(); });
+    if (s.terrain.rows > 0 && std::size_t(s.terrain.rows) * std::size_t(s.terrain.columns) <= 4096)
+        refused_or_done([&] { (void)floating_horizon(s.terrain, {.columns = 24}).run_to_end(); });
     if (s.coordinates != Coordinates::world) return;
     refused_or_done([&] {
         (void)zbuffer_fill(project_polygons(s, {16, 12}), zbuffer_options(s, {16, 12}, DepthFormat::int16, EventDetail::polygon)).run_to_end();

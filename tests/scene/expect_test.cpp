@@ -23,7 +23,7 @@ std::vector<std::string> scene_files(const std::string& dir) {
 
 std::size_t expectations(const Scene& s) {
     const Expect& e = s.expect;
-    return e.clip.size() + e.bsp.size() + e.cull.size() + e.pvs.size() + e.image.size() + e.rejects.size();
+    return e.clip.size() + e.bsp.size() + e.cull.size() + e.pvs.size() + e.image.size() + e.rejects.size() + e.horizon.size();
 }
 
 }  // namespace

@@ -12,8 +12,10 @@
 #include <set>
 
 #include "analysis/exact_clip.h"
+#include "analysis/exact_horizon.h"
 #include "catch.h"
 #include "core/numeric.h"
+#include "horizon/floating_horizon.h"
 #include "scene/save_scene.h"
 #include "state/lesson.h"
 #include "state/practice/practice.h"
@@ -316,6 +318,22 @@ std::string reference_answer(const Exercise& e) {
         }
         if (kind == "codes_apart") return apart.get_str();
         return e.choices[apart > 0 ? 0 : 1];
+    }
+    if (kind == "horizon_sight") {  // the exact ray walk says seen or hidden; a seen point's side is row 0's
+        hsr::algo::Terrain t{.columns = g["samples"].get<int>(), .rows = g["rows"].get<int>(), .elevation = g["elevation"].get<double>()};
+        t.heights = g["heights"].get<std::vector<double>>();
+        const int columns = g["columns"].get<int>(), row = g["row"].get<int>(), column = g["column"].get<int>();
+        const auto exact = hsr::analysis::exact_horizon(t, columns);
+        if (!exact.at(row, column)) return e.choices[2];
+        const hsr::algo::HorizonProjection view(t.elevation);
+        const double x = (column + 0.5) * t.width() / columns;  // from the question's own words
+        const auto height = [&](int r) -> Q {  // linear between the samples either side of x, exactly
+            const int i = std::min(int(x), t.columns - 2);
+            const Q s = Q(x) - i;
+            return (1 - s) * Q(t.height(i, r)) + s * Q(t.height(i + 1, r));
+        };
+        const Q above = (height(row) - height(0)) * Q(view.cos_e) + Q(row) * Q(view.sin_e);
+        return e.choices[above > 0 ? 0 : 1];
     }
     FAIL("no reference for " << kind);
     return "";

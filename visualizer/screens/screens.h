@@ -10,6 +10,7 @@
 #include "screens/clip_screen.h"
 #include "screens/culling_screen.h"
 #include "screens/depth_sort_screen.h"
+#include "screens/horizon_screen.h"
 #include "screens/portal_screen.h"
 #include "screens/raycast_screen.h"
 #include "screens/scanline_screen.h"

@@ -23,6 +23,7 @@
 #include "state/clip_session.h"
 #include "state/culling_session.h"
 #include "state/depth_sort_session.h"
+#include "state/horizon_session.h"
 #include "state/portal_session.h"
 #include "state/raycast_session.h"
 #include "state/scanline_session.h"
@@ -46,7 +47,7 @@ struct SessionTypes {
 };
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
-                                 HierarchyCullSession, OccluderSession, HizSession>;
+                                 HierarchyCullSession, OccluderSession, HizSession, HorizonSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -60,6 +61,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](Acceleration) { return f(Family<RayCastSession>{}); },
                           [&](ScanLineMachine) { return f(Family<ScanLineSession>{}); },
                           [&](ZMergeMachine) { return f(Family<ZMergeSession>{}); },
+                          [&](HorizonMachine) { return f(Family<HorizonSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});

@@ -47,8 +47,11 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         lesson.title = lesson.scene.name;
         lesson.summary = lesson.scene.description;
         lesson.titles = {{"en", lesson.title}}, lesson.summaries = {{"en", lesson.summary}};
-        const std::string fallback = lesson.scene.polygons.empty() ? "cohen_sutherland" : "sutherland_hodgman";
-        // (a scene plays with a clipping machine unless --algorithm names another)
+        const bool terrain_only = lesson.scene.terrain.rows > 0 && lesson.scene.polygons.empty() && lesson.scene.segments.empty();
+        const std::string fallback = terrain_only                  ? "floating_horizon"
+                                     : lesson.scene.polygons.empty() ? "cohen_sutherland"
+                                                                     : "sutherland_hodgman";
+        // (a scene plays with a clipping machine, or a terrain with the floating horizon, unless --algorithm names another)
         lesson.algorithm = algorithm_named(nullptr, nullptr, algorithm.value_or(fallback), path);
         lesson.difficulty = lesson.algorithm.difficulty;
         return lesson;

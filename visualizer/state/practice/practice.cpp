@@ -19,7 +19,7 @@ std::span<const Topic> topics() {
         std::vector<Topic> t;
         for (auto family : {clipping_topics, backface_topics, bsp_topics, zbuffer_topics, precision_topics, scanline_topics, raycast_topics,
                             culling_topics, hiz_topics, depth_sort_topics,
-                            portal_topics})
+                            portal_topics, horizon_topics})
             for (Topic& topic : family()) t.push_back(std::move(topic));
         return t;
     }();
@@ -116,6 +116,7 @@ std::string lesson_toml(const Exercise& e, std::string_view scene_file, const st
     t += "algorithm = \"" + e.algorithm + "\"\n";
     t += "scene = \"" + std::string(scene_file) + "\"\n";
     if (!e.cull.empty()) t += "cull = \"" + e.cull + "\"\n";
+    if (e.columns > 0) t += "grid = [" + std::to_string(e.columns) + ", 12]\n";
     return t;
 }
 

@@ -41,6 +41,8 @@ struct Exercise {
     nlohmann::json given;               // the question's data (points, planes, …) as numbers, for answer sheets and tests
     algo::Scene scene;                  // what the window plays, with `algorithm` (a registry id): the deciding
     std::string algorithm;              // event is its step `deciding_step`
+    int columns = 0;                    // floating-horizon exercises: the screen's columns (the lesson's grid width);
+                                        // 0: a lesson's default
     std::string cull;                   // culling exercises: the pipeline's stages, as a lesson's `cull` names them
                                         // (empty: a lesson's default, every stage)
 
@@ -104,5 +106,6 @@ std::vector<Topic> precision_topics();
 std::vector<Topic> scanline_topics();
 std::vector<Topic> hiz_topics();
 std::vector<Topic> portal_topics();
+std::vector<Topic> horizon_topics();
 
 }  // namespace hsr::viz::practice
