@@ -43,7 +43,8 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
     const HorizonView& v = s.view();
     ImDrawList* d = begin_canvas("##horizon canvas", x, y, w, h);
     const float margin = canvas_px(28), line = ImGui::GetTextLineHeightWithSpacing();
-    const float axis = ImGui::CalcTextSize("-0.000000").x;  // the y values on the left
+    float axis = 0;  // the y values on the left: as wide as the widest
+    for (const double value : {v.y_min, v.y_max}) axis = std::max(axis, ImGui::CalcTextSize(algo::format_number(value).c_str()).x + canvas_px(6));
     // The legend under the screen, in as many lines as the width needs (German words are long)
     struct Key {
         ImU32 colour;
@@ -62,6 +63,8 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
     const float legend_h = key_at.back().y + line;
     const ScreenMap map{x + margin + axis, y + margin + line, legend_w, h - 2 * margin - line - legend_h - canvas_px(6), v.columns, v.y_min, v.y_max};
     const int rows = v.terrain->rows;
+    // The canvas's own background: the terrain's 3D view beside it must not show through its margins
+    d->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(26, 28, 33, 255));  // palette::background
     d->AddRectFilled(ImVec2(map.left, map.top), ImVec2(map.left + map.width, map.top + map.height), IM_COL32(22, 24, 30, 255));
     d->AddText(ImVec2(map.left, map.top - line), IM_COL32(220, 220, 220, 255), tr("horizon.screen", {{"columns", std::to_string(v.columns)}}).c_str());
     if (v.columns <= 128)  // the screen's columns, faintly

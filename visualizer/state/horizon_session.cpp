@@ -15,7 +15,7 @@ namespace {
 using namespace hsr::algo;
 
 const Pseudocode<HorizonEvent> horizon_lines = {
-    {"Upper[x] = −∞;  Lower[x] = +∞          for every screen column x", {}},
+    {"Upper[x] = −∞;  Lower[x] = +∞   (every column x)", {}},
     {"for each curve, nearest first", {micro<CurveStarted>(), step<HorizonFinished>()}},
     {"  for each screen column x", {}},
     {"    y = the curve's height at x, projected", {}},
