@@ -43,9 +43,13 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
     return rows;
 }
 
+std::vector<MeasureFamily> report_families() {
+    return {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling, measure_horizon};
+}
+
 std::vector<Measurement> measure_all(const ReportOptions& o) {
     std::vector<Measurement> rows;
-    for (auto* family : {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling, measure_horizon}) {
+    for (auto* family : report_families()) {
         auto part = family(o);
         rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
     }

@@ -56,6 +56,9 @@ std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o);  // BS
 std::vector<Measurement> measure_portals(const ReportOptions& o);
 std::vector<Measurement> measure_culling(const ReportOptions& o);
 std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floating horizon per screen resolution
+// Every family's measurement, in the report's order (the command line's report and measure_all run these).
+using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
+std::vector<MeasureFamily> report_families();
 std::vector<Measurement> measure_all(const ReportOptions& o);
 
 // The median wall time of `repeats` calls of f, in milliseconds.

@@ -26,8 +26,7 @@ int run_report(const ReportOptions& o) {
     if (!make_folder(o.out)) return 1;  // before minutes of measuring, not after
     const analysis::ReportOptions options{.quick = o.quick, .repeats = o.quick ? 3 : o.repeats, .scenes_dir = data_dir() + "/assets/scenes"};
     std::vector<analysis::Measurement> rows;
-    for (auto* family : {analysis::measure_clipping, analysis::measure_zbuffer, analysis::measure_hidden_surfaces,
-                         analysis::measure_portals, analysis::measure_culling}) {
+    for (auto* family : analysis::report_families()) {
         auto part = family(options);
         std::printf("%s: %zu rows\n", part.empty() ? "?" : part.front().family.c_str(), part.size());
         std::fflush(stdout);
