@@ -62,6 +62,26 @@ Outcode outcode(const Vec4& p, ClipSpace s) {
 
 double intersection_parameter(double bc1, double bc2) { return bc1 / (bc1 - bc2); }
 
+EquationThree equation_three(ClipPlane r, ClipSpace s, const Vec4& p1, const Vec4& p2) {
+    const bool h = s == ClipSpace::homogeneous;
+    const double w1 = h ? p1.w : 1.0, w2 = h ? p2.w : 1.0;
+    // lower planes (left, bottom, near): t = (a1 + w1) / ((a1 − a2) + (w1 − w2));
+    // upper planes (right, top, far):   t = (a1 − w1) / ((a1 − a2) + (w2 − w1))
+    const auto lower = [&](double a1, double a2, std::string_view f) { return EquationThree{f, a1 + w1, (a1 - a2) + (w1 - w2)}; };
+    const auto upper = [&](double a1, double a2, std::string_view f) { return EquationThree{f, a1 - w1, (a1 - a2) + (w2 - w1)}; };
+    switch (r) {
+        case ClipPlane::x_min: return lower(p1.x, p2.x, h ? "(x1 + w1) / ((x1 − x2) + (w1 − w2))" : "(x1 + 1) / (x1 − x2)");
+        case ClipPlane::x_max: return upper(p1.x, p2.x, h ? "(x1 − w1) / ((x1 − x2) + (w2 − w1))" : "(x1 − 1) / (x1 − x2)");
+        case ClipPlane::y_min: return lower(p1.y, p2.y, h ? "(y1 + w1) / ((y1 − y2) + (w1 − w2))" : "(y1 + 1) / (y1 − y2)");
+        case ClipPlane::y_max: return upper(p1.y, p2.y, h ? "(y1 − w1) / ((y1 − y2) + (w2 − w1))" : "(y1 − 1) / (y1 − y2)");
+        case ClipPlane::z_min: return lower(p1.z, p2.z, h ? "(z1 + w1) / ((z1 − z2) + (w1 − w2))" : "(z1 + 1) / (z1 − z2)");
+        case ClipPlane::z_max: return upper(p1.z, p2.z, h ? "(z1 − w1) / ((z1 − z2) + (w2 − w1))" : "(z1 − 1) / (z1 − z2)");
+        case ClipPlane::w_min:  // not in the notes: w = ε, the plane that keeps the divide away from the eye
+            return {"(w1 − ε) / (w1 − w2)", h ? p1.w - ClipTolerance::w_epsilon : 1.0, w1 - w2};
+    }
+    return {};
+}
+
 Vec4 intersect_plane_line(ClipPlane r, ClipSpace s, const Vec4& p1, const Vec4& p2, double t) {
     Vec4 i = p1 + t * (p2 - p1);
     const double w = s == ClipSpace::homogeneous ? i.w : 1.0;

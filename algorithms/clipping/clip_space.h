@@ -61,6 +61,17 @@ Outcode outcode(const Vec4& p, ClipSpace s);
 // The parameter t along p1 → p2 at which the segment meets plane R, by the lecture's equations (3).
 double intersection_parameter(double bc1, double bc2);
 
+// The lecture's equations (3) for plane R written out as the notes print them, e.g. left:
+//   t = (x1 + w1) / ((x1 − x2) + (w1 − w2)),
+// with its numerator and denominator evaluated on p1, p2 (in the cube, w = 1: the planes are constants). The
+// machines compute the same t as bc(p1) / (bc(p1) − bc(p2)); this is what the window shows beside it.
+struct EquationThree {
+    std::string_view formula;  // the right-hand side, in the notes' signs
+    double numerator = 0, denominator = 0;
+    [[nodiscard]] double t() const { return numerator / denominator; }
+};
+EquationThree equation_three(ClipPlane r, ClipSpace s, const Vec4& p1, const Vec4& p2);
+
 // intersect_plane_line(R, p1, p2): p1 + t (p2 − p1), then snapped exactly onto R (x = w, x = −1, w = ε, …) so
 // that the point tests inside R however the product rounded.
 Vec4 intersect_plane_line(ClipPlane r, ClipSpace s, const Vec4& p1, const Vec4& p2, double t);

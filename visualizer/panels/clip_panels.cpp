@@ -18,6 +18,8 @@ namespace {
 using algo::ClipAlgorithm;
 using algo::ClipPlane;
 
+const ImVec4 equation_colour(0.95f, 0.70f, 0.20f, 1.0f);  // the orange of the intersections in the 3D view
+
 
 void outcode_table(const ClipView& v) {
     const int columns = algo::plane_count(v.space);
@@ -46,7 +48,9 @@ void outcode_table(const ClipView& v) {
         }
     }
     ImGui::EndTable();
-    if (v.plane) wrapped_text(tr("clipping.plane_r", {{"inequality", std::string(algo::plane_inequality(*v.plane, v.space))}}));
+    // (while an intersection is shown, its equation names R)
+    if (v.plane && !v.intersecting)
+        wrapped_text(tr("clipping.plane_r", {{"inequality", std::string(algo::plane_inequality(*v.plane, v.space))}}));
 }
 
 void parameter_bar(const ClipView& v) {
@@ -80,6 +84,18 @@ void pipeline(const ClipView& v) {
                                           {"to", std::to_string((std::size_t(v.edge) + 1) % std::max<std::size_t>(1, v.stage_input.size()))}}));
 }
 
+// The notes' equation (3) for the intersection just computed, with its numbers: where the homogeneous
+// intersections come from (the notes print the six planes' forms; this is the one in use).
+void equation_three(const ClipView& v) {
+    if (!v.intersecting) return;
+    const auto& [plane, p1, p2] = *v.intersecting;
+    const algo::EquationThree e = algo::equation_three(plane, v.space, p1, p2);
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, " = %.4g / %.4g = %.4g", e.numerator, e.denominator, e.t());
+    wrapped_text(tr("clipping.equation_three", {{"inequality", std::string(algo::plane_inequality(plane, v.space))}}));
+    wrapped_text("t = " + std::string(e.formula) + numbers, equation_colour);
+}
+
 }  // namespace
 
 void clip_state_panel(const ClipSession& s, const PanelLayout& l) {
@@ -93,6 +109,7 @@ void clip_state_panel(const ClipSession& s, const PanelLayout& l) {
         case ClipAlgorithm::liang_barsky: parameter_bar(v); break;
         case ClipAlgorithm::sutherland_hodgman: pipeline(v); break;
     }
+    equation_three(v);
     if (v.bound_reached) wrapped_text(tr("clipping.bound_reached"), bit_set);
     end_column_box(l, Box::state);
 }

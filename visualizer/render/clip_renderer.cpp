@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <optional>
 
-#include <glm/matrix.hpp>
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/clip_regions.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
@@ -18,20 +18,17 @@ namespace {
 using algo::ClipPlane;
 using algo::Vec4;
 
-// Clip space → world space for this scene's camera; none for points the camera maps to infinity.
+// Clip space → world space, as float points for the line batches.
 class ToWorld {
 public:
-    explicit ToWorld(const algo::Camera& c) : inverse_(glm::inverse(algo::view_projection(c))) {}
+    explicit ToWorld(const algo::Camera& c) : world_(c) {}
     std::optional<glm::vec3> operator()(const Vec4& clip) const {
-        const glm::dvec4 w = inverse_ * clip;
-        if (!(std::fabs(w.w) > 1e-12)) return std::nullopt;
-        const glm::dvec3 p = glm::dvec3(w) / w.w;
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return std::nullopt;
-        return glm::vec3(p);
+        if (auto p = world_(clip)) return glm::vec3(*p);
+        return std::nullopt;
     }
 
 private:
-    glm::dmat4 inverse_;
+    ClipToWorld world_;
 };
 
 // The clip volume's corner for NDC signs (±1, ±1, ±1).
@@ -91,6 +88,14 @@ void draw_volume(const ClipView& view, const ToWorld& world, const algo::Camera&
     }
 }
 
+// The 27 regions of the outcodes (state/clip_regions.h): the planes drawn on past the volume, a label per region.
+void draw_outcode_regions(const algo::Camera& camera, LineBatches& out, std::vector<Label>& labels) {
+    const glm::vec4 grid{palette::volume.x, palette::volume.y, palette::volume.z, 0.45f};
+    for (const auto& [a, b] : outcode_region_lines(camera)) out.faint.line(glm::vec3(a), glm::vec3(b), grid);
+    for (const OutcodeRegion& r : outcode_regions(camera))
+        labels.push_back({glm::vec3(r.at), algo::to_string(r.code), r.code.inside() ? palette::inside : grid});
+}
+
 void draw_active_segment(const ClipView& view, const PrimitiveState& p, const ToWorld& world, LineBatches& out,
                          std::vector<Label>& labels, Tween tween) {
     const Vec4 a = p.input[0], b = p.input[1];
@@ -143,10 +148,11 @@ void draw_active_polygon(const ClipView& view, const SceneColors& colors, const 
 }  // namespace
 
 void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels,
-                    Tween tween) {
+                    Tween tween, bool regions) {
     const SceneColors colors(scene);
     const ToWorld world(scene.camera);
     draw_volume(view, world, scene.camera, out, labels);
+    if (regions) draw_outcode_regions(scene.camera, out, labels);
 
     for (std::size_t i = 0; i < view.primitives.size(); ++i) {
         const PrimitiveState& p = view.primitives[i];

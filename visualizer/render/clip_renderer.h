@@ -23,8 +23,9 @@ struct Tween {
 
 // The working segment's ends (and Liang–Barsky's t_enter, t_leave) slide from `tween.before` to `view`; the rest
 // of the picture shows `view`. Stepping back tweens the same way, from the later view to the earlier one.
+// `outcode_regions` (key V) adds the 27 regions of the outcodes, each labelled with its code.
 void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels,
-                    Tween tween = {});
+                    Tween tween = {}, bool outcode_regions = false);
 
 // A sphere holding the clip volume and the scene, for framing the viewer's camera.
 void clip_view_bounds(const ClipView& view, const algo::Scene& scene, glm::vec3& centre, float& radius);

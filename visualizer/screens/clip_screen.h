@@ -21,8 +21,11 @@ public:
         before_.reset(), shown_.reset(), tween_ = 1;
     }
     void draw_scene(const ClipSession& s, SceneFrame& f) const {
-        draw_clip_view(s.view(), s.lesson().scene, f.batches, f.labels, {before_ ? &*before_ : nullptr, float(tween_)});
+        draw_clip_view(s.view(), s.lesson().scene, f.batches, f.labels, {before_ ? &*before_ : nullptr, float(tween_)},
+                       f.second_view);
         f.detail = tr(s.space() == algo::ClipSpace::homogeneous ? "clipping.detail_clip_space" : "clipping.detail_cube");
+        if (s.algorithm() == algo::ClipAlgorithm::cohen_sutherland)
+            f.detail += " · " + tr(f.second_view ? "clipping.regions_shown" : "clipping.regions");
     }
     void draw_panels(const ClipSession& s, PanelFrame& f) const { clip_state_panel(s, f.layout); }
     void before_step(const ClipSession& s) { shown_ = s.view(); }  // cheap: the view's large parts are shared

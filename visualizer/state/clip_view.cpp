@@ -52,6 +52,7 @@ ClipView initial_view(const ClipJob& job, ClipAlgorithm algorithm) {
 }
 
 void reduce(ClipView& v, const ClipEvent& event) {
+    v.intersecting.reset();  // shown for the step that computes it
     std::visit(
         overloaded{
             [&](const PointClassified& e) {
@@ -83,6 +84,7 @@ void reduce(ClipView& v, const ClipEvent& event) {
             [&](const PlaneChosen& e) { v.plane = e.plane; },
             [&](const IntersectionComputed& e) {
                 v.plane = e.plane;
+                v.intersecting = ClipView::Intersecting{e.plane, v.p1, v.p2};
                 v.intersections.push_back(e.point);
                 (e.replaces == Endpoint::p1 ? v.p1 : v.p2) = e.point;
                 (e.replaces == Endpoint::p1 ? v.c1_known : v.c2_known) = false;  // mkcode(i) comes next round
@@ -108,6 +110,8 @@ void reduce(ClipView& v, const ClipEvent& event) {
             [&](const EdgeClassified& e) {
                 v.edge = int(e.from);
                 const Vec4 end = v.stage_input[(e.from + 1) % v.stage_input.size()];
+                if (e.edge_case == EdgeCase::in_out || e.edge_case == EdgeCase::out_in)
+                    v.intersecting = ClipView::Intersecting{e.plane, v.stage_input[e.from], end};
                 switch (e.edge_case) {
                     case EdgeCase::in_in: v.stage_output.push_back(end); break;
                     case EdgeCase::in_out:

@@ -48,6 +48,14 @@ struct ClipView {
     CowVector<Vec4, 1024> stage_input, stage_output;  // chunks shared between keyframes, as the primitives are
     int edge = -1;                           // the edge from stage_input[edge] to its successor
 
+    // The intersection just computed, between the ends it was computed on: the panel writes out the notes'
+    // equation (3) for it. Cleared by the next step that is not an intersection.
+    struct Intersecting {
+        algo::ClipPlane plane;
+        Vec4 p1, p2;
+    };
+    std::optional<Intersecting> intersecting;
+
     bool bound_reached = false;
 };
 
