@@ -4,10 +4,10 @@
 namespace hsr::algo {
 namespace {
 
-Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene_machine(Steps<BspEvent, BspTree> build, Viewpoint eye) {
+Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene_machine(Steps<BspEvent, BspTree> build, Viewpoint eye, Order order) {
     for (const auto& e : build) co_yield e;
     const BspTree tree = std::move(build).result();  // owned by this frame while the traversal runs
-    auto display = traverse_bsp(&tree, eye);
+    auto display = traverse_bsp(&tree, eye, order);
     for (const auto& e : display) co_yield e;
     co_return std::move(display).result();
 }
@@ -37,7 +37,7 @@ BspJob bsp_job(const Scene& scene, SplitterRule rule) {
 
 Steps<BspEvent, std::vector<BspPolygonId>> bsp_scene(BspJob job) {
     auto build = build_bsp(std::move(job.polygons), job.options);  // validates now: InvalidInput names the polygon
-    return bsp_scene_machine(std::move(build), job.eye);
+    return bsp_scene_machine(std::move(build), job.eye, job.order);
 }
 
 }  // namespace hsr::algo

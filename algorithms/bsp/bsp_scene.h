@@ -9,9 +9,10 @@
 namespace hsr::algo {
 
 struct BspJob {
-    std::vector<BspInput> polygons;
+    std::vector<BspInput> polygons;  // in insertion order: the rule "first" takes them as they come
     BspOptions options;
     Viewpoint eye;
+    Order order = Order::back_to_front;  // DisplayBSP's; front to back paints only pixels still empty
 };
 
 // The camera's eye for DisplayBSP: its position, or for an orthographic camera its direction (the eye at infinity).

@@ -17,12 +17,45 @@
 namespace hsr::viz {
 namespace {
 const ImVec4 front_branch(0.35f, 0.75f, 0.55f, 1), back_branch(0.85f, 0.5f, 0.3f, 1);
+
+// DisplayBSP's order, the splitter rule and the insertion order: each rebuilds the tree (Ctrl+Z undoes it).
+void tree_controls(const BspSession& s, UiActions& out) {
+    const algo::BspJob& job = s.job();
+    const std::string orders[] = {tr("bsp.back_to_front"), tr("bsp.front_to_back")};
+    const int order = job.order == algo::Order::front_to_back ? 1 : 0;
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(orders[1].c_str()).x + ImGui::GetFrameHeight() * 1.6f);
+    if (ImGui::BeginCombo("###bsp order", orders[order].c_str())) {
+        for (int i = 0; i < 2; ++i)
+            if (ImGui::Selectable(orders[i].c_str(), i == order) && i != order)
+                out.bsp_order = i == 1 ? algo::Order::front_to_back : algo::Order::back_to_front;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    constexpr algo::SplitterRule rules[] = {algo::SplitterRule::first, algo::SplitterRule::balanced,
+                                            algo::SplitterRule::fewest_splits, algo::SplitterRule::weighted};
+    const auto rule_name = [](algo::SplitterRule r) { return tr("bsp.splitter", {{"rule", window_strings().say(algo::term(r))}}); };
+    ImGui::SetNextItemWidth(std::max(60.f, ImGui::GetContentRegionAvail().x));
+    if (ImGui::BeginCombo("###bsp splitter", rule_name(job.options.splitter).c_str())) {
+        for (algo::SplitterRule r : rules)
+            if (ImGui::Selectable(rule_name(r).c_str(), r == job.options.splitter) && r != job.options.splitter)
+                out.bsp_splitter = r;
+        ImGui::EndCombo();
+    }
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(tr("bsp.insertion").c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton((tr("bsp.reverse") + "###reverse").c_str())) out.bsp_reverse = true;
+    ImGui::SameLine();
+    if (ImGui::SmallButton((tr("bsp.shuffle") + "###shuffle").c_str())) out.bsp_shuffle = true;
+}
+
 }  // namespace
 
-void bsp_state_panel(const BspSession& s, const PanelLayout& l) {
+void bsp_state_panel(const BspSession& s, const PanelLayout& l, UiActions& out) {
     begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
     const BspView& v = s.view();
     wrapped_text(tree_summary(s), dim_text);
+    tree_controls(s, out);
     ImGui::TextColored(front_branch, "%s", tr("bsp.left").c_str());
     ImGui::SameLine();
     ImGui::TextColored(dim_text, "%s", tr("bsp.normal_side").c_str());
@@ -105,7 +138,8 @@ void bsp_painted_canvas(const BspSession& s, float view_w, float view_h, bool dr
     ImDrawList* d = begin_canvas("##bsp painted", 0, 0, view_w, view_h);
     int total = 0;
     for (const auto& p : v.polygons) total += !p.replaced;
-    const StringValues counts = {{"drawn", std::to_string(v.drawn)}, {"total", std::to_string(total)}};
+    const StringValues counts = {{"drawn", std::to_string(v.drawn)}, {"total", std::to_string(total)},
+                                 {"order", tr(v.order == algo::Order::front_to_back ? "bsp.order_near_to_far" : "bsp.order_far_to_near")}};
     const std::string caption = tr(!v.two_d ? "bsp.painted" : driving ? "bsp.painted_driving" : "bsp.painted_drive", counts);
     const ImVec2 text(at.x, at.y - line - 2), extent = ImGui::CalcTextSize(caption.c_str());
     d->AddRectFilled(ImVec2(text.x - 4, text.y - 2), ImVec2(text.x + extent.x + 4, text.y + extent.y + 2), IM_COL32(20, 21, 25, 220));

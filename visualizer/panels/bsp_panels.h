@@ -3,11 +3,13 @@
 #pragma once
 
 #include "panels/lesson_panels.h"
+#include "panels/ui_actions.h"
 #include "state/bsp_session.h"
 
 namespace hsr::viz {
 
-void bsp_state_panel(const BspSession& s, const PanelLayout& layout);
+// With the tree's controls: DisplayBSP's order, the splitter rule, and the insertion order (reverse, shuffle).
+void bsp_state_panel(const BspSession& s, const PanelLayout& layout, UiActions& out);
 
 // Over the view's lower part: what DisplayBSP has painted so far, seen from the eye (a 3D scene: the camera's
 // image at the lower left; a 2D plan: the first-person strip across the view's foot). Returns the height it takes

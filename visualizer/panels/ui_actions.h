@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "bsp/bsp_events.h"
 #include "zbuffer/depth_format.h"
 
 namespace hsr::viz {
@@ -28,6 +29,9 @@ struct UiActions {
     std::optional<algo::DepthFormat> depth_format;  // z-buffer lessons: rerun with this format
     std::optional<algo::DepthRange> depth_range;    // z-buffer lessons: rerun with this near and far
     bool toggle_3d = false;                         // z-buffer lessons: the fat pixels, or the scene in 3D
+    std::optional<algo::Order> bsp_order;           // BSP lessons: DisplayBSP back to front or front to back
+    std::optional<algo::SplitterRule> bsp_splitter; // BSP lessons: rebuild with this rule
+    bool bsp_reverse = false, bsp_shuffle = false;  // BSP lessons: the insertion order reversed, or shuffled
     std::optional<int> digit;                       // a number key: a question's choice when one is open, else its own use
     std::optional<std::string> answer;              // a question's choice, clicked
     bool next_chapter = false, previous_chapter = false, next_language = false;

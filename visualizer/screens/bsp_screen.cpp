@@ -102,6 +102,10 @@ bool Screen<BspSession>::apply(BspSession& s, const UiActions& a) {
     if (a.redo) edited |= s.redo();
     if (a.move_eye) s.move_eye(*a.move_eye), edited = true;
     if (a.forward || a.left) s.drive(a.forward, a.left), edited = true;
+    if (a.bsp_order) s.set_order(*a.bsp_order), edited = true;
+    if (a.bsp_splitter) s.set_splitter(*a.bsp_splitter), edited = true;
+    if (a.bsp_reverse) s.reorder_inputs(BspSession::Insertion::reversed), edited = true;
+    if (a.bsp_shuffle) s.reorder_inputs(BspSession::Insertion::shuffled, ++shuffles_), edited = true;
     return edited;
 }
 

@@ -18,7 +18,7 @@ public:
     void draw_scene(const BspSession& s, SceneFrame& f) const;
     void draw_panels(const BspSession& s, PanelFrame& f) const {
         bsp_painted_canvas(s, f.view_w, f.view_h, drives(s, f.second_view));
-        bsp_state_panel(s, f.layout);
+        bsp_state_panel(s, f.layout, f.actions);
     }
     // V in a 2D plan: drive mode, the arrows walk and turn the eye
     bool drives(const BspSession& s, bool second_view) const { return second_view && s.view().two_d; }
@@ -32,6 +32,7 @@ private:
     std::int64_t dragging_input_ = -1;       // the input whose vertex is dragged (−1: none) …
     std::size_t dragging_corner_ = 0;        // … and which of its vertices
     std::optional<glm::dvec3> drawing_from_;  // Shift+drag: where the new segment starts
+    std::uint64_t shuffles_ = 0;              // each Shuffle another order, the same ones in every run
 };
 
 }  // namespace hsr::viz

@@ -45,6 +45,9 @@ algo::Image bsp_painted_so_far(const BspView& v, const algo::Scene& scene, algo:
     for (const auto& p : v.polygons)
         if (p.drawn > 0) drawn.push_back(&p);
     std::sort(drawn.begin(), drawn.end(), [](auto* a, auto* b) { return a->drawn < b->drawn; });
+    // Front to back, a polygon goes only on pixels still empty (the notes' optimisation): the same pixels as
+    // painting the ones drawn so far in the opposite order, each over what is there.
+    if (v.order == algo::Order::front_to_back) std::reverse(drawn.begin(), drawn.end());
     // Colour and opacity by id (the first primitive with an id wins), looked up per drawn polygon in constant time
     std::unordered_map<std::int32_t, std::pair<algo::Color, double>> paint_of;
     for (const auto& seg : scene.segments) paint_of.try_emplace(seg.id, seg.color, 1.0);

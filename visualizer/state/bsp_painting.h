@@ -15,6 +15,7 @@
 
 namespace hsr::viz {
 
+// Front to back, each polygon covers only the pixels still empty.
 // `scene` is the lesson's scene as edited (its colours, its camera with the eye and heading); `size` the image's.
 algo::Image bsp_painted_so_far(const BspView& view, const algo::Scene& scene, algo::Viewport size);
 

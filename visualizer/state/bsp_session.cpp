@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "state/bsp_session.h"
 
+#include <algorithm>
 #include <chrono>
+#include <random>
 #include <cstdio>
 #include <unordered_map>
 #include <cmath>
@@ -52,10 +54,36 @@ const Pseudocode<BspEvent> display_lines = {
     {"}", {step<TraversalFinished>()}},
 };
 
+// DisplayBSP front to back: the near side first, each polygon only on pixels still empty.
+const Pseudocode<BspEvent> display_front_to_back_lines = {
+    {"DisplayBSP (BSPnode, v);  /* front to back */", {step<BspBoundReached>()}},
+    {"{ /* left: front, the normal's side; right: back */", {}},
+    {"  if IsLeaf (BSPnode) Render (BSPnode->Polygon)", {step<PolygonDrawn>([](const PolygonDrawn& e) { return e.leaf; })}},
+    {"  else if (v in 'left' subspace of BSPnode->Polygon) {",
+     {micro<EyeClassified>([](const EyeClassified& e) { return e.side != Side::back; })}},
+    {"    DisplayBSP (BSPnode->Left, v);", {}},
+    {"    Render (BSPnode->Polygon);  /* where still empty */", {step<PolygonDrawn>([](const PolygonDrawn& e) { return e.eye_side != Side::back; })}},
+    {"    DisplayBSP (BSPnode->Right, v);", {}},
+    {"  }", {}},
+    {"  else /* v in 'right' subspace of BSPnode->Polygon */ {", {micro<EyeClassified>()}},
+    {"    DisplayBSP (BSPnode->Right, v);", {}},
+    {"    Render (BSPnode->Polygon);  /* where still empty */", {step<PolygonDrawn>()}},
+    {"    DisplayBSP (BSPnode->Left, v);", {}},
+    {"  }", {}},
+    {"}", {step<TraversalFinished>()}},
+};
+
+// The lesson's job: its scene with its splitter rule and display order.
+BspJob job_of(const Lesson& lesson) {
+    BspJob job = bsp_job(lesson.scene, lesson.splitter);
+    job.order = lesson.front_to_back ? Order::front_to_back : Order::back_to_front;
+    return job;
+}
+
 }  // namespace
 
 BspSession::RunType BspSession::machine(const Lesson& lesson) {
-    BspJob job = bsp_job(lesson.scene, lesson.splitter);
+    BspJob job = job_of(lesson);
     BspView initial = initial_view(job);
     return {bsp_scene(std::move(job)), std::move(initial)};
 }
@@ -63,7 +91,7 @@ BspSession::RunType BspSession::machine(const Lesson& lesson) {
 BspSession::BspSession(Lesson lesson, PlayerOptions options)
     : PlayerSession(lesson, machine(lesson), options),
       kind_(machine_of<algo::BspMachine>(lesson)),
-      job_(bsp_job(lesson.scene, lesson.splitter)),
+      job_(job_of(lesson)),
       options_(options),
       heading_(lesson.scene.camera.target - lesson.scene.camera.eye) {
     measure();
@@ -148,6 +176,31 @@ bool BspSession::delete_input(std::size_t input) {
     return true;
 }
 
+void BspSession::set_order(algo::Order order) {
+    if (job_.order == order) return;
+    algo::BspJob edited = job_;
+    edited.order = order;
+    edit(std::move(edited));
+}
+
+void BspSession::set_splitter(algo::SplitterRule rule) {
+    if (job_.options.splitter == rule) return;
+    algo::BspJob edited = job_;
+    edited.options.splitter = rule;
+    edit(std::move(edited));
+}
+
+void BspSession::reorder_inputs(Insertion how, std::uint64_t seed) {
+    algo::BspJob edited = job_;
+    if (how == Insertion::reversed) {
+        std::reverse(edited.polygons.begin(), edited.polygons.end());
+    } else {
+        std::mt19937_64 rng(seed);
+        std::shuffle(edited.polygons.begin(), edited.polygons.end(), rng);
+    }
+    edit(std::move(edited));
+}
+
 bool BspSession::undo() {
     if (!history_.undo(job_)) return false;
     last_moved_.reset();
@@ -199,7 +252,8 @@ std::string BspSession::speak_event(const BspEvent& e) const { return window_str
 // BuildBSP while the tree is being built (up to its last event), DisplayBSP from the traversal's first event.
 const Pseudocode<BspEvent>& BspSession::table() const {
     const auto e = player().last_applied();
-    return !e || build_lines.line_of(*e) >= 0 ? build_lines : display_lines;
+    if (!e || build_lines.line_of(*e) >= 0) return build_lines;
+    return view().order == Order::front_to_back ? display_front_to_back_lines : display_lines;
 }
 
 // Either table says, whichever is shown: a Step back from the traversal may land in the build.

@@ -42,6 +42,13 @@ public:
     bool add_segment(algo::Vec3 a, algo::Vec3 b);
     // Deletes an input segment or polygon; false when it is the last one (a tree needs something to split).
     bool delete_input(std::size_t input);
+    // From the window's BSP box, each an undoable edit that rebuilds the tree (the cursor stays at its step):
+    // DisplayBSP's order; the splitter rule; the insertion order ("order of insertion can affect half-plane
+    // extent": the rule "first" takes the inputs as they come), reversed or shuffled by `seed`.
+    void set_order(algo::Order order);
+    void set_splitter(algo::SplitterRule rule);
+    enum class Insertion { reversed, shuffled };
+    void reorder_inputs(Insertion how, std::uint64_t seed = 0);
     bool undo();
     bool redo();
     const algo::BspJob& job() const { return job_; }

@@ -12,6 +12,7 @@ using namespace hsr::algo;
 BspView initial_view(const BspJob& job) {
     BspView v;
     v.eye = job.eye.at;
+    v.order = job.order;
     for (const BspInput& p : job.polygons) {
         v.polygons.push_back({p.id, std::to_string(p.id), std::make_shared<const std::vector<Vec3>>(p.vertices)});
         v.two_d = v.two_d || p.vertices.size() == 2;
@@ -84,6 +85,7 @@ void reduce(BspView& v, const BspEvent& event) {
                    },
                    [&](const EyeClassified& e) {
                        v.current_node = e.node;
+                       v.order = e.order;
                        v.nodes[std::size_t(e.node)].eye_side = e.side;
                    },
                    [&](const PolygonDrawn& e) {

@@ -39,6 +39,7 @@ struct BspView {
     int splits = 0, depth = 0;
     bool built = false, bounded = false, two_d = false;
     algo::Vec3 eye{0};
+    algo::Order order = algo::Order::back_to_front;  // DisplayBSP's
     // The polygons given a side since the current node's splitter was chosen: the next node clears only these
     // (clearing every polygon's side per node made a large build quadratic to watch).
     std::vector<algo::BspPolygonId> sided;

@@ -12,7 +12,8 @@
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
 //   cull = "back-face,frustum"             # culling lessons: the stages the scene needs
 //   display = "front-to-back"              # depth-sort lessons: draw the sorted list nearest first, on the grid,
-//                                          # each pixel once, and stop when the screen is full (else back to front)
+//                                          # each pixel once, and stop when the screen is full (else back to front);
+//                                          # BSP lessons: DisplayBSP visits the eye's side first
 //   languages = ["en", "de"]  [[chapters]] …   # narration, pauses and questions: state/chapters.h
 //
 // A scene file given where a lesson is expected plays as a lesson of its own, with the algorithm the caller names
@@ -45,7 +46,7 @@ struct Lesson {
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
-    bool front_to_back = false;  // depth-sort lessons: display = "front-to-back", the notes' optimisation of the display
+    bool front_to_back = false;  // depth-sort and BSP lessons: display = "front-to-back", the notes' optimisation of the display
     std::vector<std::string> languages{"en"};                  // of the narration; the first is the default
     std::vector<Chapter> chapters;                             // state/chapters.h
     algo::Scene scene;
