@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "panels/backface_panels.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "panels/panel_style.h"
@@ -8,6 +10,10 @@
 #include "state/strings.h"
 
 namespace hsr::viz {
+namespace {
+const ImVec4 wrong(1.0f, 0.35f, 0.45f, 1);  // a face culled that the eye sees: the test was wrong for it
+int scrolled_to = -1;                        // the row the table last scrolled to
+}  // namespace
 
 void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("backface.title") + "###state").c_str());
@@ -16,31 +22,53 @@ void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
     wrapped_text(tr("backface.counts", {{"kept", std::to_string(v.kept)}, {"culled", std::to_string(v.culled)},
                                         {"left", std::to_string(int(v.faces.size()) - v.kept - v.culled)}, {"test", words.say(algo::term(v.test))}}),
                  dim_text);
-    const std::string face = tr("backface.face"), verdict = tr("backface.verdict");
+    const bool cast = !v.faces.empty() && v.faces.front().seen.has_value();
+    if (cast && (v.kept_hidden > 0 || v.culled_seen > 0))
+        wrapped_text(tr("backface.against_ray_cast", {{"hidden", std::to_string(v.kept_hidden)}, {"seen", std::to_string(v.culled_seen)}}),
+                     v.culled_seen > 0 ? wrong : dim_text);
+    const std::string face = tr("backface.face"), verdict = tr("backface.verdict"), seen = tr("backface.seen");
     const std::string quantity = v.test == algo::BackfaceTest::view_vector      ? "v·n"
                                  : v.test == algo::BackfaceTest::plane_equation ? "N·eye + D"
                                                                                 : tr("machine.backface.screen_area");
-    if (ImGui::BeginTable("faces", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    if (ImGui::BeginTable("faces", cast ? 4 : 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         const float pad = 2 * ImGui::GetStyle().CellPadding.x;  // columns sized to their words, in any language and type size
-        ImGui::TableSetupColumn(face.c_str(), ImGuiTableColumnFlags_WidthFixed, std::max(ImGui::CalcTextSize(face.c_str()).x, ImGui::CalcTextSize("000").x) + pad);
-        ImGui::TableSetupColumn(quantity.c_str(), ImGuiTableColumnFlags_WidthFixed,
-                                std::max(ImGui::CalcTextSize(quantity.c_str()).x, ImGui::CalcTextSize("-0.0000e+00").x) + pad);
+        const auto fixed_width = [&](const std::string& title, const char* widest) {
+            return std::max(ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(widest).x) + pad;
+        };
+        ImGui::TableSetupColumn(face.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(face, "000"));
+        ImGui::TableSetupColumn(quantity.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(quantity, "-0.0000e+00"));
+        if (cast) ImGui::TableSetupColumn(seen.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(seen, "00000"));
         ImGui::TableSetupColumn(verdict.c_str());
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < v.faces.size(); ++i) {
             const FaceView& f = v.faces[i];
             ImGui::TableNextRow();
-            if (int(i) == v.current) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+            if (int(i) == v.current) {
+                ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+                // the face under test is brought into the box once, when it becomes current (then the box scrolls freely)
+                if (scrolled_to != v.current) ImGui::SetScrollHereY(0.5f), scrolled_to = v.current;
+            }
             ImGui::TableNextColumn();
             ImGui::Text("%d", f.id);
             ImGui::TableNextColumn();
             if (f.facing) ImGui::Text("%.4g", f.value);
+            if (cast) {  // shown once the face is tested: before, it would answer "kept or culled?"
+                ImGui::TableNextColumn();
+                if (f.facing) ImGui::Text("%zu", *f.seen);
+            }
             ImGui::TableNextColumn();
-            if (f.facing)
-                ImGui::TextColored(*f.facing == algo::Facing::front ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s",
-                                   words.say(algo::term(*f.facing)).c_str());
-            else
+            if (!f.facing) {
                 ImGui::TextColored(dim_text, "%s", tr("backface.not_tested").c_str());
+                continue;
+            }
+            const bool kept = *f.facing == algo::Facing::front;
+            std::string says = words.say(algo::term(*f.facing));
+            if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
+            if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
+            // wrapped in its cell: "front-facing: kept · hidden anyway" is wider than the column in a narrow box
+            ImGui::PushStyleColor(ImGuiCol_Text, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
+            ImGui::TextWrapped("%s", says.c_str());
+            ImGui::PopStyleColor();
         }
         ImGui::EndTable();
     }

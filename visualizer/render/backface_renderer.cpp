@@ -13,6 +13,8 @@ namespace hsr::viz {
 
 using algo::Vec3;
 
+constexpr glm::vec4 culled_seen_edge{1.0f, 0.35f, 0.45f, 1};  // as the table's "but seen!"
+
 void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
     const SceneColors colors(scene);
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
@@ -25,10 +27,14 @@ void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBat
                                          : glm::vec4(0.35f, 0.12f, 0.08f, 0.35f);
         for (std::size_t k = 1; k + 1 < vs.size(); ++k)
             out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
-        const glm::vec4 edge = current ? palette::current_edge : f.facing && !kept ? palette::outside
-                                                                                   : colors(f.id, 1);
+        // against the ray cast: a culled face the eye sees is drawn in the warning colour, bold
+        const bool culled_but_seen = f.facing && !kept && f.seen && *f.seen > 0;
+        const glm::vec4 edge = current           ? palette::current_edge
+                               : culled_but_seen ? culled_seen_edge
+                               : f.facing && !kept ? palette::outside
+                                                   : colors(f.id, 1);
         for (std::size_t k = 0; k < vs.size(); ++k)
-            (current ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
+            (current || culled_but_seen ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
         // every face numbered as the table and the questions name it, just off its outer side
         const Vec3 c = algo::centroid(vs);
         labels.push_back({glm::vec3(c + f.plane.n * 0.04), std::to_string(f.id),

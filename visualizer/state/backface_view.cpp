@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "state/backface_view.h"
 
+#include <algorithm>
+
+#include "analysis/face_visibility.h"
 #include "core/overloaded.h"
 
 namespace hsr::viz {
@@ -16,6 +19,12 @@ BackfaceView initial_view(const std::vector<Face>& faces, const Camera& camera, 
         plane_of(f.vertices, p);
         v.faces.push_back({f.id, std::make_shared<const std::vector<Vec3>>(f.vertices), p});
     }
+    if (faces.size() <= max_faces_cast) {
+        const double aspect = camera.aspect > 0.25 && camera.aspect < 4 ? camera.aspect : 1.0;
+        const Viewport size{128, std::max(1, int(128 / aspect))};
+        const std::vector<std::size_t> seen = analysis::pixels_seen(faces, camera, size);
+        for (std::size_t i = 0; i < faces.size(); ++i) v.faces[i].seen = seen[i];
+    }
     return v;
 }
 
@@ -27,7 +36,12 @@ void reduce(BackfaceView& v, const CullEvent& event) {
                                v.current = int(i);
                                v.faces[i].facing = e.facing;
                                v.faces[i].value = e.value;
-                               (e.facing == Facing::front ? v.kept : v.culled) += 1;
+                               const bool kept = e.facing == Facing::front;
+                               (kept ? v.kept : v.culled) += 1;
+                               if (const auto seen = v.faces[i].seen) {
+                                   if (kept && *seen == 0) ++v.kept_hidden;
+                                   if (!kept && *seen > 0) ++v.culled_seen;
+                               }
                                break;
                            }
                    },
