@@ -186,7 +186,13 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
     if (scene.coordinates != Coordinates::world) throw InvalidInput(scene.source + ": ray casting needs world coordinates");
     const auto prims = std::make_unique<Primitives>(primitives_of(scene));
     const auto grid = std::make_unique<Grid>(o.acceleration == Acceleration::grid ? build_grid(prims->polygons, o.grid_cells) : Grid{});
-    const auto tree = std::make_unique<Octree>(o.acceleration == Acceleration::octree ? build_octree(prims->polygons, o.octree) : Octree{});
+    const auto tree = std::make_unique<Octree>();
+    if (o.acceleration == Acceleration::octree) {  // BuildOctree first, its cells told when the rays are
+        auto build = octree_build(prims->polygons, o.octree);
+        for (const auto& e : build)
+            if (o.detail != RayDetail::ray) co_yield e;
+        *tree = std::move(build).result();
+    }
 
     const int w = o.viewport.width, h = o.viewport.height;
     RayCastResult out{Image(w, h, o.background), std::vector<std::int32_t>(std::size_t(w) * std::size_t(h), -1),

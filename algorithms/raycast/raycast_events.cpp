@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "raycast/raycast_events.h"
 
+#include <algorithm>
+
 #include "core/events.h"
 #include "core/overloaded.h"
 
@@ -31,8 +33,18 @@ constexpr Saying sees{"ray_cast.sees", "Pixel ({x}, {y}) sees polygon {polygon} 
 constexpr Saying sees_background{"ray_cast.sees_background", "Pixel ({x}, {y}) sees the background after {tests} {tests?test|tests}."};
 constexpr Saying done{"ray_cast.done", "Done: {rays} {rays?ray|rays}, {tests} primitive {tests?test|tests}."};
 constexpr Saying bound{"ray_cast.bound", "Stopped: the step bound of {tests} primitive tests was reached."};
+constexpr Saying examined{"ray_cast.examined",
+                          "Cell {node} (depth {depth}, edge {edge}) lists {primitives} {primitives?primitive|primitives}."};
+constexpr Saying split{"ray_cast.split", "Cell {node} is split into 8 subcells, {first} to {last}: {listed} primitives listed over them."};
+constexpr Saying leaf_made{"ray_cast.leaf_made", "Cell {node} stays a leaf with {primitives} {primitives?primitive|primitives}: {reason}."};
+constexpr Saying built{"ray_cast.built", "The octree is built: {nodes} cells, {leaves} leaves, {depth} levels below the root."};
+constexpr Saying few_primitives{"ray_cast.few_primitives", "few enough primitives"};
+constexpr Saying voxel_size{"ray_cast.voxel_size", "the voxel size is reached"};
+constexpr Saying node_budget{"ray_cast.node_budget", "the node budget is spent"};
+constexpr Saying would_multiply{"ray_cast.would_multiply", "its primitives would be listed in most subcells"};
 constexpr Saying all[] = {every_primitive, grid, octree, started, cell, empty_cell, node, leaf, hit, missed, nearer, sees,
-                          sees_background, done, bound};
+                          sees_background, done, bound, examined, split, leaf_made, built, few_primitives, voxel_size,
+                          node_budget, would_multiply};
 }  // namespace say
 }  // namespace
 
@@ -46,6 +58,18 @@ const Saying& term(Acceleration a) {
 }
 
 std::string_view to_string(Acceleration a) { return term(a).english; }
+
+const Saying& term(OctreeStop r) {
+    switch (r) {
+        case OctreeStop::few_primitives: return say::few_primitives;
+        case OctreeStop::voxel_size: return say::voxel_size;
+        case OctreeStop::node_budget: return say::node_budget;
+        case OctreeStop::would_multiply: return say::would_multiply;
+    }
+    return say::few_primitives;
+}
+
+std::string_view to_string(OctreeStop r) { return term(r).english; }
 
 std::span<const Saying> ray_cast_sayings() { return say::all; }
 
@@ -77,6 +101,23 @@ Phrase phrase(const RayCastEvent& event) {
             },
             [](const CastFinished& e) { return Phrase(say::done, {{"rays", n(e.rays)}, {"tests", n(e.tests)}}); },
             [](const CastStepBoundReached& e) { return Phrase(say::bound, {{"tests", n(e.max_tests)}}); },
+            [](const OctreeCellExamined& e) {
+                const glm::dvec3 size = e.hi - e.lo;
+                return Phrase(say::examined, {{"node", n(std::uint64_t(e.node))}, {"depth", n(e.depth)},
+                                              {"edge", format_number(std::max({size.x, size.y, size.z}))},
+                                              {"primitives", n(std::uint64_t(e.primitives))}});
+            },
+            [](const OctreeCellSplit& e) {
+                return Phrase(say::split, {{"node", n(std::uint64_t(e.node))}, {"first", n(std::uint64_t(e.first_child))},
+                                           {"last", n(std::uint64_t(e.first_child) + 7)}, {"listed", n(std::uint64_t(e.listed))}});
+            },
+            [](const OctreeLeafMade& e) {
+                return Phrase(say::leaf_made, {{"node", n(std::uint64_t(e.node))}, {"primitives", n(std::uint64_t(e.primitives))}},
+                              Terms{{"reason", &term(e.reason)}});
+            },
+            [](const OctreeBuilt& e) {
+                return Phrase(say::built, {{"nodes", n(std::uint64_t(e.nodes))}, {"leaves", n(std::uint64_t(e.leaves))}, {"depth", n(e.depth)}});
+            },
         },
         event);
 }

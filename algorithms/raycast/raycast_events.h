@@ -77,14 +77,51 @@ struct CastStepBoundReached {
     bool operator==(const CastStepBoundReached&) const = default;
 };
 
+// The octree's build, before the first ray ("Space Subdivision"): a cell examined, then split into 8 subcells or made
+// a leaf, and why it stopped. The notes' two stopping rules are few_primitives ("the object complexity within a
+// cell is below a certain limit") and voxel_size ("an elementary cell size (voxel) is reached"); the other two keep
+// the build bounded: a node budget, and a cell whose primitives would each be listed in most of its children.
+enum class OctreeStop : std::uint8_t { few_primitives, voxel_size, node_budget, would_multiply };
+struct OctreeCellExamined {
+    static constexpr std::string_view kind = "OctreeCellExamined";
+    std::uint32_t node;  // index into the octree's nodes; 0 is the root
+    int depth;
+    glm::dvec3 lo, hi;   // the cell
+    std::uint32_t primitives;  // listed in it
+    bool operator==(const OctreeCellExamined&) const = default;
+};
+struct OctreeCellSplit {
+    static constexpr std::string_view kind = "OctreeCellSplit";
+    std::uint32_t node, first_child;  // the children are first_child … first_child + 7
+    std::uint32_t listed;             // the primitives over the 8 children, each counted as often as it is listed
+    bool operator==(const OctreeCellSplit&) const = default;
+};
+struct OctreeLeafMade {
+    static constexpr std::string_view kind = "OctreeLeafMade";
+    std::uint32_t node;
+    OctreeStop reason;
+    std::uint32_t primitives;
+    double edge;  // the cell's longest edge, to set against the voxel size
+    bool operator==(const OctreeLeafMade&) const = default;
+};
+struct OctreeBuilt {
+    static constexpr std::string_view kind = "OctreeBuilt";
+    std::uint32_t nodes, leaves;
+    int depth;
+    bool operator==(const OctreeBuilt&) const = default;
+};
+
 using RayCastEvent = std::variant<RayStarted, CellEntered, NodeEntered, PrimitiveTested, NearerHitFound, RayFinished,
-                                  CastFinished, CastStepBoundReached>;
+                                  CastFinished, CastStepBoundReached, OctreeCellExamined, OctreeCellSplit, OctreeLeafMade,
+                                  OctreeBuilt>;
 
 // What an event says, as a template with named values (core/phrase.h), and in English.
 Phrase phrase(const RayCastEvent& e);
 std::string describe(const RayCastEvent& e);
 const Saying& term(Acceleration a);  // "regular grid"
 std::string_view to_string(Acceleration a);
+const Saying& term(OctreeStop r);  // "at most 8 primitives"
+std::string_view to_string(OctreeStop r);
 std::span<const Saying> ray_cast_sayings();
 
 }  // namespace hsr::algo

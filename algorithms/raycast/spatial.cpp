@@ -23,30 +23,67 @@ bool overlap(const Box& a, const Box& b) {
 
 double extent(const Box& b) { return std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z}); }
 
-void split(Octree& tree, std::size_t n, const std::vector<Box>& boxes, const OctreeOptions& o) {
-    if (tree.nodes[n].primitives.size() <= o.max_per_leaf || tree.nodes[n].depth >= o.max_depth ||
-        tree.nodes.size() + 8 > o.max_nodes)
-        return;
-    const Box box = tree.nodes[n].box;
+// What the build carries down the recursion.
+struct Building {
+    Octree tree;
+    std::vector<Box> boxes;  // each primitive's, padded
+    OctreeOptions options;
+    std::uint32_t leaves = 0;
+    int depth = 0;
+};
+
+// BuildOctree(cell): examine it; a leaf if a stopping rule holds, else 8 subcells, each built in turn.
+Steps<RayCastEvent, bool> build_cell(Building* b, std::size_t n) {
+    const OctreeOptions& o = b->options;
+    const Box box = b->tree.nodes[n].box;
+    const int depth = b->tree.nodes[n].depth;
+    const auto held = std::uint32_t(b->tree.nodes[n].primitives.size());
+    const double edge = extent(box);
+    b->depth = std::max(b->depth, depth);
+    co_yield OctreeCellExamined{std::uint32_t(n), depth, box.lo, box.hi, held};
+    const auto leaf = [&](OctreeStop why) {
+        ++b->leaves;
+        return OctreeLeafMade{std::uint32_t(n), why, held, edge};
+    };
+    if (held <= o.max_per_leaf) {
+        co_yield leaf(OctreeStop::few_primitives);
+        co_return true;
+    }
+    if (depth >= o.max_depth || (o.voxel > 0 && edge / 2 < o.voxel)) {
+        co_yield leaf(OctreeStop::voxel_size);
+        co_return true;
+    }
+    if (b->tree.nodes.size() + 8 > o.max_nodes) {
+        co_yield leaf(OctreeStop::node_budget);
+        co_return true;
+    }
     const Vec3 mid = (box.lo + box.hi) * 0.5;
     std::vector<OctreeNode> children(8);
     std::size_t listed = 0;  // primitives over all children, counting each as often as it is listed
     for (int c = 0; c < 8; ++c) {
         OctreeNode& child = children[std::size_t(c)];
-        child.depth = tree.nodes[n].depth + 1;
+        child.depth = depth + 1;
         child.box.lo = {c & 1 ? mid.x : box.lo.x, c & 2 ? mid.y : box.lo.y, c & 4 ? mid.z : box.lo.z};
         child.box.hi = {c & 1 ? box.hi.x : mid.x, c & 2 ? box.hi.y : mid.y, c & 4 ? box.hi.z : mid.z};
-        for (std::uint32_t p : tree.nodes[n].primitives)
-            if (overlap(boxes[p], child.box)) child.primitives.push_back(p);
+        for (std::uint32_t p : b->tree.nodes[n].primitives)
+            if (overlap(b->boxes[p], child.box)) child.primitives.push_back(p);
         listed += child.primitives.size();
     }
     // Big primitives listed in most children would multiply, not separate: stay a leaf
-    if (listed > 3 * tree.nodes[n].primitives.size()) return;
-    const auto first = std::int32_t(tree.nodes.size());
-    tree.nodes[n].first_child = first;
-    tree.nodes[n].primitives.clear();
-    for (auto& child : children) tree.nodes.push_back(std::move(child));
-    for (int c = 0; c < 8; ++c) split(tree, std::size_t(first + c), boxes, o);
+    if (listed > 3 * std::size_t(held)) {
+        co_yield leaf(OctreeStop::would_multiply);
+        co_return true;
+    }
+    const auto first = std::uint32_t(b->tree.nodes.size());
+    b->tree.nodes[n].first_child = std::int32_t(first);
+    b->tree.nodes[n].primitives.clear();
+    for (auto& child : children) b->tree.nodes.push_back(std::move(child));
+    co_yield OctreeCellSplit{std::uint32_t(n), first, std::uint32_t(listed)};
+    for (std::uint32_t c = 0; c < 8; ++c) {
+        auto sub = build_cell(b, first + c);
+        for (const auto& e : sub) co_yield e;
+    }
+    co_return true;
 }
 
 }  // namespace
@@ -102,18 +139,26 @@ Grid build_grid(const std::vector<std::vector<Vec3>>& polygons, int per_axis) {
     return g;
 }
 
-Octree build_octree(const std::vector<std::vector<Vec3>>& polygons, OctreeOptions options) {
-    Octree tree;
+Steps<RayCastEvent, Octree> octree_build(std::vector<std::vector<Vec3>> polygons, OctreeOptions options) {
+    Building b;
+    b.options = options;
     OctreeNode root{bounds_of(polygons), 0, -1, {}};
     const double pad = 1e-9 * extent(root.box);
-    std::vector<Box> boxes;
     for (std::uint32_t p = 0; p < polygons.size(); ++p) {
-        boxes.push_back(box_of(polygons[p], pad));
+        b.boxes.push_back(box_of(polygons[p], pad));
         root.primitives.push_back(p);
     }
-    tree.nodes.push_back(std::move(root));
-    split(tree, 0, boxes, options);
-    return tree;
+    b.tree.nodes.push_back(std::move(root));
+    auto cells = build_cell(&b, 0);
+    for (const auto& e : cells) co_yield e;
+    co_yield OctreeBuilt{std::uint32_t(b.tree.nodes.size()), b.leaves, b.depth};
+    co_return std::move(b.tree);
+}
+
+Octree build_octree(const std::vector<std::vector<Vec3>>& polygons, OctreeOptions options) {
+    auto machine = octree_build(polygons, options);
+    for (const auto& e : machine) (void)e;
+    return std::move(machine).result();
 }
 
 }  // namespace hsr::algo

@@ -13,7 +13,9 @@
 #include <glm/vec3.hpp>
 
 #include "core/plane.h"
+#include "core/steps.h"
 #include "raycast/nearest_hit.h"
+#include "raycast/raycast_events.h"
 
 namespace hsr::algo {
 
@@ -56,11 +58,18 @@ struct OctreeNode {
 struct Octree {
     std::vector<OctreeNode> nodes;  // nodes[0] is the root
 };
+// The stopping rules: a cell stays a leaf when it lists max_per_leaf primitives or fewer (the notes' "object
+// complexity below a certain limit"), or when its subcells would be smaller than the voxel (edge below `voxel`,
+// or deeper than max_depth: the notes' "elementary cell size"), or when the node budget is spent.
 struct OctreeOptions {
     std::size_t max_per_leaf = 8;  // split a node holding more
     int max_depth = 8;
+    double voxel = 0;              // the elementary cell's edge, world units (0: max_depth alone)
     std::size_t max_nodes = 1 << 20;
 };
+// BuildOctree as a machine: each cell examined, then split into 8 or made a leaf (and why), depth first.
+Steps<RayCastEvent, Octree> octree_build(std::vector<std::vector<Vec3>> polygons, OctreeOptions options = {});
+// The same octree, its events unseen.
 Octree build_octree(const std::vector<std::vector<Vec3>>& polygons, OctreeOptions options = {});
 
 }  // namespace hsr::algo

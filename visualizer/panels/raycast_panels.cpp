@@ -48,6 +48,18 @@ void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
     wrapped_text(tr("raycast.detail", {{"acceleration", window_strings().say(algo::term(v.acceleration))},
                                        {"width", n(v.viewport.width)}, {"height", n(v.viewport.height)}}),
                  dim_text);
+    if (v.examined >= 0 && std::size_t(v.examined) < v.octree.size()) {  // BuildOctree, at this cell
+        const OctreeCellView& c = v.octree[std::size_t(v.examined)];
+        const algo::Vec3 size = c.hi - c.lo;
+        wrapped_text(tr("raycast.octree_cell", {{"node", n(v.examined)}, {"depth", n(c.depth)},
+                                                {"edge", algo::format_number(std::max({size.x, size.y, size.z}))},
+                                                {"primitives", n(c.primitives)}, {"limit", n(s.octree_options().max_per_leaf)},
+                                                {"voxel", algo::format_number(s.octree_voxel())}}));
+        if (c.leaf)  // in the colours of the 3D view's leaves: green for few primitives, amber for a voxel
+            wrapped_text(tr("raycast.octree_leaf", {{"reason", window_strings().say(algo::term(c.reason))}}),
+                         c.reason == algo::OctreeStop::voxel_size ? ImVec4(0.9f, 0.62f, 0.0f, 1) : ImVec4(0.35f, 0.8f, 0.55f, 1));
+        if (c.split) wrapped_text(tr("raycast.octree_split"), ImVec4(0.34f, 0.71f, 0.91f, 1));
+    }
     if (v.ray_x >= 0) {
         wrapped_text(tr("raycast.pixel", {{"x", n(v.ray_x)}, {"y", n(v.ray_y)}, {"tests", n(v.ray_tests)}}));
         if (v.acceleration == algo::Acceleration::grid && !v.cells.empty())
@@ -63,6 +75,10 @@ void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
                          ImVec4(0.9f, 0.62f, 0, 1));
         else
             wrapped_text(tr("raycast.nearest_none"), dim_text);
+    }
+    if (v.examined >= 0) {  // no ray yet while the octree is built
+        end_column_box(l, Box::state);
+        return;
     }
     char per_ray[32];
     std::snprintf(per_ray, sizeof per_ray, "%.3g", v.rays ? double(v.tests) / double(v.rays) : 0.0);

@@ -52,6 +52,26 @@ void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& 
             box(last ? out.bold : out.faint, lo, lo + v.grid->size, last ? palette::parameter : glm::vec4(0.34f, 0.71f, 0.91f, 0.6f));
         }
     }
+    // The octree: while it is built, its leaves so far (green: few primitives, amber: a voxel) and the cell being
+    // examined; then its leaves faintly, and the node the ray entered last
+    for (std::size_t i = 0; i < v.octree.size(); ++i) {
+        const OctreeCellView& c = v.octree[i];
+        const bool examined = int(i) == v.examined, entered = int(i) == v.entered;
+        if (examined || entered) continue;  // drawn last, on top
+        if (!c.leaf) continue;  // a split cell is drawn by its children
+        const bool voxel = c.reason == algo::OctreeStop::voxel_size;
+        const float alpha = v.octree_built ? 0.18f : 0.45f;
+        box(out.faint, c.lo, c.hi, voxel ? glm::vec4(0.9f, 0.62f, 0.0f, alpha) : glm::vec4(0.35f, 0.8f, 0.55f, alpha));
+    }
+    if (v.examined >= 0 && std::size_t(v.examined) < v.octree.size()) {
+        const OctreeCellView& c = v.octree[std::size_t(v.examined)];
+        box(out.bold, c.lo, c.hi, palette::current_edge);
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%d: %u", v.examined, c.primitives);
+        labels.push_back({glm::vec3(c.hi), buf, palette::current_edge});
+    }
+    if (v.entered >= 0 && std::size_t(v.entered) < v.octree.size())
+        box(out.bold, v.octree[std::size_t(v.entered)].lo, v.octree[std::size_t(v.entered)].hi, palette::parameter);
     // The ray: solid up to the nearest hit, faint beyond
     if (v.ray_x >= 0) {
         const double t = std::min(v.nearest_t, 1.0);

@@ -57,7 +57,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "languages", "chapters"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.titles = read_texts(r, root.get("title"), "title", lesson.languages);
     if (lesson.titles.empty()) r.fail(&root, "title", "a lesson needs title = \"…\"");
@@ -90,6 +90,13 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         if (format == algo::format_id(f)) lesson.depth_format = f, known_format = true;
     if (!known_format)
         r.fail(root.get("format"), "format", "expected int16, int24, int32, float32, float32-reversed or linear24, got \"" + algo::printable(format, 60) + "\"");
+    // the octree's stopping rules (ray casting through an octree)
+    const std::int64_t leaf_limit = r.integer(root, "leaf_limit", "", std::int64_t(lesson.octree.max_per_leaf));
+    if (leaf_limit < 1 || leaf_limit > 1'000'000) r.fail(root.get("leaf_limit"), "leaf_limit", "expected a whole number from 1 to 1000000");
+    else lesson.octree.max_per_leaf = std::size_t(leaf_limit);
+    const double voxel = r.number(root, "voxel", "", 0.0);
+    if (!(voxel >= 0) || !std::isfinite(voxel)) r.fail(root.get("voxel"), "voxel", "expected a voxel edge ≥ 0 (world units; 0: 8 levels at most)");
+    else lesson.octree.voxel = voxel;
     if (root.contains("grid")) {
         const glm::dvec4 g = r.vector(*root.get("grid"), "grid", 2, 2);
         if (g.x < 1 || g.y < 1 || g.x > 256 || g.y > 256 || g.x != std::floor(g.x) || g.y != std::floor(g.y))

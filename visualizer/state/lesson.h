@@ -11,6 +11,7 @@
 //   format = "int16"                       # z-buffer lessons: the depth format (depth_format.h's format_id)
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
 //   cull = "back-face,frustum"             # culling lessons: the stages the scene needs
+//   leaf_limit = 4, voxel = 0.5            # octree ray-casting lessons: the octree's stopping rules
 //   display = "front-to-back"              # depth-sort lessons: draw the sorted list nearest first, on the grid,
 //                                          # each pixel once, and stop when the screen is full (else back to front);
 //                                          # BSP lessons: DisplayBSP visits the eye's side first
@@ -28,6 +29,7 @@
 #include "registry.h"
 #include "state/chapters.h"
 #include "raster/screen_polygon.h"
+#include "raycast/spatial.h"
 #include "scene/scene.h"
 #include "scene/toml_reader.h"
 #include "zbuffer/depth_format.h"
@@ -46,6 +48,7 @@ struct Lesson {
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
+    algo::OctreeOptions octree;  // octree ray-casting lessons: leaf_limit = N (max_per_leaf), voxel = edge
     bool front_to_back = false;  // depth-sort and BSP lessons: display = "front-to-back", the notes' optimisation of the display
     std::vector<std::string> languages{"en"};                  // of the narration; the first is the default
     std::vector<Chapter> chapters;                             // state/chapters.h

@@ -16,11 +16,15 @@ public:
     static const FamilyFacts facts;  // for the presets and the report
     static std::string sentence_of(const algo::RayCastEvent& e, const RayView& view);  // describe(e), as the view after it names things
     const algo::Scene& scene() const { return scene_; }  // the lesson's, with the grid's aspect
+    const algo::OctreeOptions& octree_options() const { return lesson().octree; }
+    // The voxel of the octree's stopping rule: the lesson's, or the cell max_depth halvings below the root.
+    double octree_voxel() const;
 
 private:
     std::string describe_event(const algo::RayCastEvent& e) const override;
     std::string speak_event(const algo::RayCastEvent& e) const override;
     const Pseudocode<algo::RayCastEvent>& table() const override;
+    bool is_major(const algo::RayCastEvent& e) const override;
 
     algo::Scene scene_;
 };

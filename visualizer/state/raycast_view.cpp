@@ -11,10 +11,10 @@ void reduce(RayView& v, const RayCastEvent& event) {
     std::visit(overloaded{
                    [&](const RayStarted& e) {
                        v.ray_x = e.x, v.ray_y = e.y, v.origin = e.origin, v.direction = e.direction;
-                       v.cells.clear(), v.nodes = 0, v.tested = -1, v.nearest = -1, v.nearest_t = 2, v.ray_tests = 0;
+                       v.cells.clear(), v.nodes = 0, v.entered = -1, v.tested = -1, v.nearest = -1, v.nearest_t = 2, v.ray_tests = 0;
                    },
                    [&](const CellEntered& e) { v.cells.push_back(e.cell); },
-                   [&](const NodeEntered&) { ++v.nodes; },
+                   [&](const NodeEntered& e) { ++v.nodes, v.entered = int(e.node); },
                    [&](const PrimitiveTested& e) {
                        v.tested = int(e.index), v.tested_hit = e.hit, v.tested_t = e.t;
                        ++v.ray_tests, ++v.tests;
@@ -27,12 +27,26 @@ void reduce(RayView& v, const RayCastEvent& event) {
                    },
                    [&](const CastFinished&) { v.done = true, v.ray_x = v.ray_y = -1, v.cells.clear(); },
                    [&](const CastStepBoundReached&) { v.bounded = true; },
+                   [&](const OctreeCellExamined& e) {
+                       if (v.octree.size() <= e.node) v.octree.resize(std::size_t(e.node) + 1);
+                       OctreeCellView& c = v.octree[e.node];
+                       c.lo = e.lo, c.hi = e.hi, c.depth = e.depth, c.primitives = e.primitives;
+                       v.examined = int(e.node);
+                   },
+                   [&](const OctreeCellSplit& e) {
+                       if (e.node < v.octree.size()) v.octree[e.node].split = true;
+                   },
+                   [&](const OctreeLeafMade& e) {
+                       if (e.node < v.octree.size()) v.octree[e.node].leaf = true, v.octree[e.node].reason = e.reason;
+                   },
+                   [&](const OctreeBuilt&) { v.octree_built = true, v.examined = -1; },
                },
                event);
 }
 
 std::size_t approx_bytes(const RayView& v) {
-    return sizeof(RayView) + v.owner.capacity() * sizeof(std::int32_t) + v.cells.capacity() * sizeof(glm::ivec3);
+    return sizeof(RayView) + v.owner.capacity() * sizeof(std::int32_t) + v.cells.capacity() * sizeof(glm::ivec3) +
+           v.octree.capacity() * sizeof(OctreeCellView);
 }
 
 }  // namespace hsr::viz

@@ -11,6 +11,15 @@
 
 namespace hsr::viz {
 
+// An octree cell as the build has told it so far.
+struct OctreeCellView {
+    algo::Vec3 lo{0}, hi{0};
+    int depth = 0;
+    std::uint32_t primitives = 0;
+    bool split = false, leaf = false;  // neither while it is being examined
+    algo::OctreeStop reason = algo::OctreeStop::few_primitives;  // why it stayed a leaf
+};
+
 struct RayView {
     algo::Viewport viewport;
     algo::Acceleration acceleration = algo::Acceleration::grid;
@@ -20,6 +29,10 @@ struct RayView {
     algo::Vec3 origin{0}, direction{0};  // world space; t = 0 near plane, t = 1 far plane
     std::vector<glm::ivec3> cells;       // walked by the current ray, in order
     int nodes = 0;                       // octree nodes entered by the current ray
+    int entered = -1;                    // the octree node the current ray entered last
+    std::vector<OctreeCellView> octree;  // the octree's cells in node order, as BuildOctree has made them so far
+    int examined = -1;                   // the cell BuildOctree examined last
+    bool octree_built = false;
     int tested = -1;                     // scene polygon index tested last
     bool tested_hit = false;
     double tested_t = 0;
