@@ -11,6 +11,7 @@
 #include "core/events.h"
 #include "panels/panel_style.h"
 #include "panels/wrapped_text.h"
+#include "state/horizon_colours.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
@@ -24,8 +25,8 @@ constexpr ImU32 current_colour = IM_COL32(255, 255, 255, 255);
 
 // A curve's colour by its depth: the nearest green, the farthest violet (so rows far apart are told apart).
 ImU32 curve_colour(int row, int rows) {
-    const float t = rows > 1 ? float(row) / float(rows - 1) : 0.0f;
-    return IM_COL32(int(110 + 90 * t), int(215 - 120 * t), int(120 + 120 * t), 255);
+    const algo::Color c = horizon_curve_colour(row, rows);
+    return IM_COL32(c.r, c.g, c.b, 255);
 }
 
 // Where the canvas draws screen column c (its centre) and screen height y.

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "horizon/floating_horizon.h"
+#include "state/horizon_colours.h"
 
 namespace hsr::viz {
 
@@ -24,9 +25,9 @@ HeightRange heights(const algo::Terrain& t) {
     return r;
 }
 
-glm::vec4 row_colour(int row, int rows) {  // as the canvas's: the nearest green, the farthest violet
-    const float t = rows > 1 ? float(row) / float(rows - 1) : 0.0f;
-    return {(110 + 90 * t) / 255, (215 - 120 * t) / 255, (120 + 120 * t) / 255, 1};
+glm::vec4 row_colour(int row, int rows) {
+    const algo::Color c = horizon_curve_colour(row, rows);
+    return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1};
 }
 
 }  // namespace
