@@ -13,20 +13,12 @@
 #include "portals/cell_model.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
+#include "scene/polygons_of.h"
 
 using namespace hsr::algo;
+using hsr::test::polygons_of;
 
 namespace {
-
-std::vector<std::vector<Vec3>> polygons_of(const Scene& s) {
-    std::vector<std::vector<Vec3>> out;
-    for (const auto& p : s.polygons) {
-        std::vector<Vec3> v;
-        for (const auto& q : p.vertices) v.emplace_back(q);
-        out.push_back(std::move(v));
-    }
-    return out;
-}
 
 const StageReport& report(const PipelineResult& r, Stage s) {
     return *std::find_if(r.stages.begin(), r.stages.end(), [&](const StageReport& x) { return x.stage == s; });

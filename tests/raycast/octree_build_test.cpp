@@ -10,20 +10,12 @@
 #include "raycast/ray_cast.h"
 #include "raycast/spatial.h"
 #include "scene/random_scene.h"
+#include "scene/polygons_of.h"
 
 using namespace hsr::algo;
+using hsr::test::polygons_of;
 
 namespace {
-
-std::vector<std::vector<Vec3>> polygons_of(const Scene& s) {
-    std::vector<std::vector<Vec3>> out;
-    for (const auto& p : s.polygons) {
-        std::vector<Vec3> v;
-        for (const auto& x : p.vertices) v.emplace_back(x);
-        out.push_back(std::move(v));
-    }
-    return out;
-}
 
 struct Told {
     std::vector<RayCastEvent> events;
