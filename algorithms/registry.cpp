@@ -27,6 +27,8 @@ constexpr std::array registry = {
     AlgorithmInfo{"portal_render_bbox", "Cells and portals: portal_render with bounding-box frusta", 4, PortalMachine::render_bbox},
     AlgorithmInfo{"z_merge", "Z-merge of two frame and depth buffers", 2, ZMergeMachine::merge},
     AlgorithmInfo{"scan_line", "Scan-line algorithm with a one-line z-buffer", 3, ScanLineMachine::scan_line},
+    AlgorithmInfo{"scan_line_classic", "Classic scan-line algorithm: edge and polygon tables, depth only where spans begin", 3,
+                  ScanLineMachine::classic},
     AlgorithmInfo{"raycast_brute", "Ray casting: every primitive", 1, Acceleration::none},
     AlgorithmInfo{"raycast_grid", "Ray casting through a regular grid", 3, Acceleration::grid},
     AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Acceleration::octree},

@@ -19,7 +19,7 @@ namespace hsr::algo {
 // The machines of the families that have no enum of their own in their folder.
 enum class BspMachine : std::uint8_t { build, traversal };  // the traversal lesson starts with the tree built
 enum class ZBufferMachine : std::uint8_t { fill };
-enum class ScanLineMachine : std::uint8_t { scan_line };
+enum class ScanLineMachine : std::uint8_t { scan_line, classic };  // classic: no z-buffer, the Brown notes' form
 enum class ZMergeMachine : std::uint8_t { merge };
 enum class DepthSortMachine : std::uint8_t { newell };
 enum class PortalMachine : std::uint8_t { pvs, render, render_bbox };  // render_bbox: bounding-box frusta

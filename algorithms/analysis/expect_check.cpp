@@ -15,6 +15,7 @@
 #include "horizon/floating_horizon.h"
 #include "portals/pvs.h"
 #include "raycast/ray_cast.h"
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
@@ -163,9 +164,10 @@ std::vector<SceneId> image_of(const Scene& scene, const std::string& algorithm, 
     const Viewport vp{x.width, x.height};
     if (algorithm == "zbuffer")
         return zbuffer_fill(project_polygons(scene, vp), zbuffer_options(scene, vp, format_named(x.format), EventDetail::polygon)).run_to_end().image.ids;
-    if (algorithm == "scanline") {
+    if (algorithm == "scanline" || algorithm == "scanline-classic") {
         ScanLineOptions o = scan_line_options(scene, vp, format_named(x.format));
         o.tell_crossings = false;
+        if (algorithm == "scanline-classic") return classic_scan_line(project_polygons(scene, vp), {.line = o}).run_to_end().image.ids;
         return scan_line(project_polygons(scene, vp), o).run_to_end().image.ids;
     }
     if (algorithm == "bsp") return paint_bsp(scene, rule_named(x.splitter), vp).image.ids;
@@ -175,7 +177,7 @@ std::vector<SceneId> image_of(const Scene& scene, const std::string& algorithm, 
 
 void check_images(const Scene& scene, std::vector<ExpectOutcome>& out) {
     for (const ExpectImage& x : scene.expect.image) {
-        std::string what = "expect.image " + x.algorithm + (x.algorithm == "zbuffer" || x.algorithm == "scanline" ? " " + x.format : "") +
+        std::string what = "expect.image " + x.algorithm + (x.algorithm == "zbuffer" || x.algorithm.starts_with("scanline") ? " " + x.format : "") +
                            (x.algorithm == "bsp" ? " " + x.splitter : "");
         try {
             const auto got = image_of(scene, x.algorithm, x);

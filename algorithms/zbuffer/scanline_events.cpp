@@ -17,11 +17,16 @@ constexpr Saying entered{"scanline.entered", "Edge {edge} of polygon #{polygon} 
 constexpr Saying left{"scanline.left", "Edge {edge} of polygon #{polygon} has ended: it leaves the active edge table."};
 constexpr Saying in{"scanline.in", "At x = {x} edge {edge}: polygon #{polygon} is now in."};
 constexpr Saying out{"scanline.out", "At x = {x} edge {edge}: polygon #{polygon} is now out; its span goes through the line's z-buffer."};
+constexpr Saying classic_out{"scanline.classic_out", "At x = {x} edge {edge}: polygon #{polygon} is now out."};
+constexpr Saying compared{"scanline.compared",
+                          "At x = {x}, {in} polygons are in: by their plane equations #{nearest} is nearest (depth {depth}; #{next}: {next_depth}). Its colour goes up to the next intersection."};
+constexpr Saying pierced{"scanline.pierced",
+                         "Polygons #{was} and #{now} pierce each other at x = {x}, before the next intersection: an extra intersection there, and #{now} is nearer from pixel {pixel} on."};
 constexpr Saying background{"scanline.background", "Line {y}, pixels {first} to {last}: background."};
 constexpr Saying coloured{"scanline.coloured", "Line {y}, pixels {first} to {last}: polygon {id}."};
 constexpr Saying done{"scanline.done", "Done: {lines} scan lines, {spans} spans."};
 constexpr Saying bound{"scanline.bound", "Stopped: the step bound of {limit} edge crossings was reached."};
-constexpr Saying all[] = {table, line, entered, left, in, out, background, coloured, done, bound};
+constexpr Saying all[] = {table, line, entered, left, in, out, classic_out, compared, pierced, background, coloured, done, bound};
 }  // namespace say
 }  // namespace
 
@@ -38,7 +43,15 @@ Phrase phrase(const ScanLineEvent& event) {
             },
             [&](const EdgeLeft& e) { return Phrase(say::left, {{"edge", n(e.edge)}, {"polygon", n(e.polygon)}}); },
             [&](const EdgeCrossed& e) {
-                return Phrase(e.entering ? say::in : say::out, {{"x", format_number(e.x)}, {"edge", n(e.edge)}, {"polygon", n(e.polygon)}});
+                return Phrase(e.entering ? say::in : e.classic ? say::classic_out : say::out,
+                              {{"x", format_number(e.x)}, {"edge", n(e.edge)}, {"polygon", n(e.polygon)}});
+            },
+            [&](const DepthsCompared& e) {
+                return Phrase(say::compared, {{"x", format_number(e.x)}, {"in", n(e.in)}, {"nearest", n(e.nearest)},
+                                              {"depth", format_number(e.depth)}, {"next", n(e.next)}, {"next_depth", format_number(e.next_depth)}});
+            },
+            [&](const PiercingFound& e) {
+                return Phrase(say::pierced, {{"was", n(e.was)}, {"now", n(e.now)}, {"x", format_number(e.x)}, {"pixel", n(e.pixel)}});
             },
             [&](const SpanColored& e) {
                 return Phrase(e.polygon < 0 ? say::background : say::coloured,

@@ -4,6 +4,7 @@
 #include "analysis/painters.h"
 #include "depth_sort/front_to_back.h"
 #include "culling/pipeline.h"
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
@@ -24,6 +25,15 @@ Drawn scan_line(const algo::Scene& s, algo::Viewport vp, DepthFormat f) {
     algo::ScanLineOptions o = algo::scan_line_options(s, vp, f);
     o.tell_crossings = false;
     algo::FrameDepth d = algo::scan_line(algo::project_polygons(s, vp), o).run_to_end();
+    return {std::move(d.image.ids), {}, d.bounded};
+}
+
+// The Brown notes' classic form: no z-buffer, the planes compared where spans begin (exact doubles: its ties are
+// the planes' own, which the int24 tie rule covers).
+Drawn classic_scan_line(const algo::Scene& s, algo::Viewport vp) {
+    algo::ScanLineOptions o = algo::scan_line_options(s, vp, DepthFormat::int24);
+    o.tell_crossings = false;
+    algo::FrameDepth d = algo::classic_scan_line(algo::project_polygons(s, vp), {.line = o}).run_to_end();
     return {std::move(d.image.ids), {}, d.bounded};
 }
 
@@ -82,6 +92,7 @@ std::vector<Renderer> cpu_renderers() {
         r.push_back({"zbuffer " + std::string(algo::format_id(f)), {f}, [f](const auto& s, auto vp) { return zbuffer(s, vp, f); }});
     for (const F f : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24})
         r.push_back({"scanline " + std::string(algo::format_id(f)), {f}, [f](const auto& s, auto vp) { return scan_line(s, vp, f); }});
+    r.push_back({"scanline classic", {}, classic_scan_line});
     for (const algo::Acceleration a : {algo::Acceleration::grid, algo::Acceleration::octree})
         r.push_back({"raycast " + std::string(algo::to_string(a)), {}, [a](const auto& s, auto vp) { return ray_cast(s, vp, a); }});
     using R = algo::SplitterRule;

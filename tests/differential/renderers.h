@@ -27,7 +27,7 @@ struct Renderer {
     std::function<Drawn(const algo::Scene&, algo::Viewport)> draw;
 };
 
-// The z-buffer in every depth format, the scan line, the ray cast with each acceleration, the BSP painter with
+// The z-buffer in every depth format, the scan line (hybrid in every format, and classic), the ray cast with each acceleration, the BSP painter with
 // each splitter rule, depth sort, and the culling pipeline's conservative stages before its z-buffer.
 std::vector<Renderer> cpu_renderers();
 // The plainest reference: the double-precision ray cast with no acceleration.

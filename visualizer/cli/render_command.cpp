@@ -27,6 +27,7 @@
 #include "raycast/ray_cast.h"
 #include "scene/generated_scenes.h"
 #include "scene/load_scene.h"
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
@@ -102,21 +103,33 @@ algo::Image render_zbuffer(const algo::Scene& scene, const RenderOptions& o, alg
     return std::move(f.image);
 }
 
-algo::Image render_scanline(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
+// The hybrid scan line (a one-line z-buffer) or the classic one (the polygon table's planes where spans begin).
+algo::Image render_scan_line(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter, bool classic) {
     const algo::DepthFormat format = format_named(o.format);
     const auto start = Clock::now();
     algo::ScanLineOptions options = algo::scan_line_options(scene, vp, format);
     options.tell_crossings = false;
     meter.stage("scan line", "rows", double(vp.height));
     std::uint64_t spans = 0;
-    algo::FrameDepth f = algo::drain(algo::scan_line(algo::project_polygons(scene, vp), options), &meter,
+    auto polygons = algo::project_polygons(scene, vp);
+    algo::FrameDepth f = algo::drain(classic ? algo::classic_scan_line(std::move(polygons), {.line = options})
+                                             : algo::scan_line(std::move(polygons), options),
+                                     &meter,
                                      [&](const algo::ScanLineEvent& e, double& rows) {
                                          spans += std::holds_alternative<algo::SpanColored>(e);
                                          if (const auto* line = std::get_if<algo::ScanLineStarted>(&e)) rows = line->y;
                                      });
-    std::printf("scanline (%s): %zu polygons, %llu spans in %.3f ms\n", std::string(to_string(format)).c_str(),
+    std::printf("%s (%s): %zu polygons, %llu spans in %.3f ms\n", classic ? "scanline-classic" : "scanline", std::string(to_string(format)).c_str(),
                 scene.polygons.size(), (unsigned long long)spans, ms_since(start));
     return std::move(f.image);
+}
+
+algo::Image render_scanline(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
+    return render_scan_line(scene, o, vp, meter, false);
+}
+
+algo::Image render_scanline_classic(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
+    return render_scan_line(scene, o, vp, meter, true);
 }
 
 algo::Image render_raycast(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {
@@ -210,11 +223,11 @@ int run_render(const RenderOptions& o) {
                                              " does not fit the 16-bit id image (ids 1 to 65535)");
 
         const std::map<std::string, std::function<algo::Image(const algo::Scene&, const RenderOptions&, algo::Viewport, algo::WorkMeter&)>>
-            renderers{{"bsp", render_bsp}, {"zbuffer", render_zbuffer}, {"scanline", render_scanline}, {"raycast", render_raycast},
-                      {"depth-sort", render_depth_sort}};
+            renderers{{"bsp", render_bsp}, {"zbuffer", render_zbuffer}, {"scanline", render_scanline}, {"scanline-classic", render_scanline_classic},
+                      {"raycast", render_raycast}, {"depth-sort", render_depth_sort}};
         const auto renderer = renderers.find(o.algorithm);
         if (renderer == renderers.end())
-            throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected bsp, zbuffer, scanline, raycast or depth-sort");
+            throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected bsp, zbuffer, scanline, scanline-classic, raycast or depth-sort");
         StopOnInterrupt ctrl_c;
         algo::WorkMeter meter(progress_on_stderr, &ctrl_c.asked);
         const algo::Image image = renderer->second(scene, o, {w, h}, meter);

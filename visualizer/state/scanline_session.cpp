@@ -22,26 +22,59 @@ const Pseudocode<ScanLineEvent> scan_lines = {
     {"done", {step<ScanFinished>(), step<ScanStepBoundReached>()}},
 };
 
+// The Brown notes' classic scan-line algorithm: no z-buffer, the polygon table's planes compared where spans begin.
+const Pseudocode<ScanLineEvent> classic_lines = {
+    {"ET = every non-horizontal edge (x, y_max, Δx, ID), by its first scan line", {step<EdgeTableBuilt>()}},
+    {"PT = every polygon (ID, plane equation, colour, in/out flag)", {}},
+    {"for each scan line y:", {step<ScanLineStarted>()}},
+    {"  AET += the ET's edges starting at y", {micro<EdgeEntered>()}},
+    {"  AET -= the edges that ended", {micro<EdgeLeft>()}},
+    {"  sort the AET by increasing x", {}},
+    {"  for each intersection E on the scan line, left to right:", {}},
+    {"    if E is a left edge:  P's flag = in  (entering)", {micro<EdgeCrossed>([](const EdgeCrossed& e) { return e.entering; })}},
+    {"    else:  P's flag = out  (leaving)", {micro<EdgeCrossed>()}},
+    {"    if two or more are in: the nearest by their planes at x", {micro<DepthsCompared>()}},
+    {"    if two in pierce before the next E: an extra one there", {micro<PiercingFound>()}},
+    {"    use its colour (none in: background) up to the next", {micro<SpanColored>()}},
+    {"done", {step<ScanFinished>(), step<ScanStepBoundReached>()}},
+};
+
 }  // namespace
 
-ScanLineSession::RunType ScanLineSession::machine(const Lesson& lesson) {
+ScanLineSession::RunType ScanLineSession::machine(const Lesson& lesson, bool find_piercings) {
     const Scene scene = grid_scene(lesson);
     auto polygons = std::make_shared<const std::vector<ScreenPolygon>>(project_polygons(scene, lesson.grid));
     ScanView initial = initial_view(polygons, lesson.grid);
-    return {scan_line(*polygons, scan_line_options(scene, lesson.grid, lesson.depth_format)), std::move(initial)};
+    const ScanLineOptions options = scan_line_options(scene, lesson.grid, lesson.depth_format);
+    if (machine_of<ScanLineMachine>(lesson) == ScanLineMachine::classic) {
+        initial.classic = true;
+        return {classic_scan_line(*polygons, {.line = options, .find_piercings = find_piercings}), std::move(initial)};
+    }
+    return {scan_line(*polygons, options), std::move(initial)};
 }
 
-ScanLineSession::ScanLineSession(Lesson lesson, PlayerOptions options) : PlayerSession(lesson, machine(lesson), options) {}
+ScanLineSession::ScanLineSession(Lesson lesson, PlayerOptions options)
+    : PlayerSession(lesson, machine(lesson), options), options_(options) {}
+
+void ScanLineSession::set_find_piercings(bool on) {
+    if (!classic() || on == find_piercings_) return;
+    find_piercings_ = on;
+    auto [run, initial] = machine(lesson(), on);
+    replace_player(PlayerType(std::move(run), std::move(initial), options_));
+}
 
 std::string ScanLineSession::sentence_of(const ScanLineEvent& e, const ScanView&) { return describe(e); }
 std::string ScanLineSession::describe_event(const ScanLineEvent& e) const { return sentence_of(e, view()); }
 std::string ScanLineSession::speak_event(const ScanLineEvent& e) const { return window_strings().say(phrase(e)); }
 
-const Pseudocode<ScanLineEvent>& ScanLineSession::table() const { return scan_lines; }
+const Pseudocode<ScanLineEvent>& ScanLineSession::table() const { return classic() ? classic_lines : scan_lines; }
 
 const FamilyFacts ScanLineSession::facts = {
     .topic = "Scan line",
-    .speaks_to = [](const algo::Scene& s, const algo::AlgorithmInfo&) { return expects_from_renderer(s, "scanline"); },
+    .speaks_to =
+        [](const algo::Scene& s, const algo::AlgorithmInfo& a) {
+            return expects_from_renderer(s, std::get<ScanLineMachine>(a.machine) == ScanLineMachine::classic ? "scanline-classic" : "scanline");
+        },
     .random_scene = &random_triangle_scene,
     .measure = &analysis::measure_zbuffer,
 };

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/scanline.h"
 
 namespace hsr::viz {
@@ -15,6 +16,14 @@ struct Crossing {
     std::uint32_t edge;
     double x;
     bool entering;
+};
+
+// Classic scan line: where, on the current line, the planes of the polygons in were compared, or two of them were
+// found to pierce each other (the extra intersection).
+struct DepthMark {
+    double x;
+    std::int32_t nearest;  // the polygon seen from there on
+    bool piercing;
 };
 
 struct ScanView {
@@ -26,6 +35,9 @@ struct ScanView {
     std::vector<std::uint32_t> active;   // the active edge table, as entered
     std::vector<Crossing> crossings;     // this line's, left to right
     std::vector<bool> in;                // per polygon: its in/out flag
+    bool classic = false;                // the classic machine (no line z-buffer)
+    std::vector<DepthMark> marks;        // classic: this line's depth comparisons and piercings
+    std::uint64_t compared = 0, piercings = 0;  // classic: so far
     std::uint64_t spans = 0;
     bool done = false, bounded = false;
 };
