@@ -9,6 +9,7 @@
 #include "analysis/painters.h"
 #include "raycast/ray_cast.h"
 #include "scene/random_scene.h"
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::analysis {
@@ -70,7 +71,7 @@ std::vector<Measurement> measure_zbuffer(const ReportOptions& o) {
 std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{80, 60} : algo::Viewport{256, 192};
     std::vector<Measurement> rows;
-    plan_runs(o, 4 + 1 + 1);  // the BSP's splitter rules, depth sort, the ray cast
+    plan_runs(o, 4 + 1 + 2 + 1);  // the BSP's splitter rules, depth sort, the two scan lines, the ray cast
     const algo::Scene s = algo::random_triangles({.count = o.quick ? 60u : 120u, .seed = 5, .size = 2.5});
     const algo::Image ref = reference(s, vp);
     const std::string setting = std::to_string(s.polygons.size()) + " random triangles, some piercing";
@@ -93,6 +94,29 @@ std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o) {
                     .wrong = count_differing(d.image.ids, ref.ids), .wrong_name = "pixels differing",
                     .extra = std::to_string(d.sorted.splits) + " splits, " + std::to_string(d.sorted.moves) + " moves" +
                              (d.sorted.bounded ? ", stopped at a bound" : "")});
+    // The scan line with a one-line z-buffer, and the classic one that compares planes only where spans begin (its
+    // comparisons and extra intersections counted in a run of their own, with events)
+    const auto screen = algo::project_polygons(s, vp);
+    algo::ScanLineOptions line = algo::scan_line_options(s, vp, algo::DepthFormat::int24);
+    line.tell_crossings = false;
+    algo::FrameDepth f{algo::Image(0, 0), {}, {}};
+    const double hybrid_ms = median_ms(o, [&] { f = algo::scan_line(screen, line).run_to_end(); });
+    rows.push_back({.family = "hsr", .method = "scan line (one-line z-buffer, int24)", .setting = setting, .median_ms = hybrid_ms,
+                    .error = share_differing(f.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
+                    .wrong = count_differing(f.image.ids, ref.ids), .wrong_name = "pixels differing"});
+    const double classic_ms = median_ms(o, [&] { f = algo::classic_scan_line(screen, {.line = line}).run_to_end(); });
+    std::uint64_t compared = 0, extra = 0, covered = 0;
+    line.tell_crossings = true;
+    for (const auto& e : algo::classic_scan_line(screen, {.line = line})) {
+        compared += std::holds_alternative<algo::DepthsCompared>(e);
+        extra += std::holds_alternative<algo::PiercingFound>(e);
+        if (const auto* span = std::get_if<algo::SpanColored>(&e)) covered += span->polygon >= 0 ? std::uint64_t(span->x_end - span->x_begin) : 0;
+    }
+    rows.push_back({.family = "hsr", .method = "scan line (classic: planes where spans begin)", .setting = setting, .median_ms = classic_ms,
+                    .error = share_differing(f.image.ids, ref.ids), .error_name = "share of pixels differing from the ray cast",
+                    .wrong = count_differing(f.image.ids, ref.ids), .wrong_name = "pixels differing",
+                    .extra = std::to_string(compared) + " plane comparisons for " + std::to_string(covered) + " covered pixels, " +
+                             std::to_string(extra) + " extra intersections where polygons pierce"});
     algo::Image r{0, 0};
     const double ray_ms = median_ms(o, [&] { r = reference(s, vp); });
     rows.push_back({.family = "hsr", .method = "ray cast (grid, the reference)", .setting = setting, .median_ms = ray_ms,

@@ -6,6 +6,8 @@
 #include <array>
 #include <random>
 
+#include <cstdio>
+
 #include "catch.h"
 #include "analysis/measurement.h"
 #include "analysis/report_files.h"
@@ -100,11 +102,20 @@ TEST_CASE("floating horizon: the image-precision error falls as the columns grow
 
 TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
     const auto rows = analysis::measure_hidden_surfaces(quick);
-    for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort"}) {
+    for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort",
+                               "scan line (one-line z-buffer, int24)", "scan line (classic: planes where spans begin)"}) {
         INFO(method);
         CHECK(row(rows, method).error < 0.002);  // edge pixels only (the depth-sort bug this report found gave 2%)
     }
     CHECK(row(rows, "bsp fewest-splits").extra != row(rows, "bsp first").extra);  // the rules build different trees
+    // the classic scan line compares planes at fewer places than it covers pixels, and its scene has piercing pairs
+    const std::string classic = row(rows, "scan line (classic: planes where spans begin)").extra;
+    INFO(classic);
+    unsigned long long compared = 0, covered = 0, extra = 0;
+    REQUIRE(std::sscanf(classic.c_str(), "%llu plane comparisons for %llu covered pixels, %llu extra", &compared, &covered, &extra) == 3);
+    CHECK(compared > 0);
+    CHECK(compared < covered);
+    CHECK(extra > 0);
 }
 
 TEST_CASE("portals and culling: the counts that must be 0 are, and the slack is measured", "[analysis][portals][culling]") {

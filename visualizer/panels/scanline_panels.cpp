@@ -38,13 +38,95 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
             d->AddCircleFilled(ImVec2(cx, ly), 6, colour);
             d->AddText(ImVec2(cx - 8, ly - 26), colour, tr(c.entering ? "scanline.in" : "scanline.out").c_str());
         }
+        // classic: where the planes were compared (a ring) and the extra intersections where two pierce (an orange bar)
+        for (const DepthMark& m : v.marks) {
+            const float mx = o.x + float(m.x) * cell;
+            if (m.piercing) {
+                d->AddLine(ImVec2(mx, ly - cell * 0.6f), ImVec2(mx, ly + cell * 0.6f), IM_COL32(255, 150, 40, 255), canvas_px(4));
+                d->AddText(ImVec2(mx - 8, ly + 10), IM_COL32(255, 150, 40, 255), tr("scanline.pierce_mark").c_str());
+            } else {
+                d->AddCircle(ImVec2(mx, ly), 7, IM_COL32(255, 255, 255, 255), 0, canvas_px(2));
+            }
+        }
     }
     ImGui::End();
 }
 
-void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, (tr("scanline.edge_table") + "###edge table").c_str());
+namespace {
+
+// The classic's tables as the Brown notes draw them: ET entry (x, y_max, Δx, ID), PT entry (ID, plane eq., in-out).
+void classic_tables(const ScanLineSession& s, UiActions& out) {
     const ScanView& v = s.view();
+    bool piercings = s.finds_piercings();
+    if (ImGui::Checkbox((tr("scanline.find_piercings") + "###piercings").c_str(), &piercings)) out.find_piercings = piercings;
+    wrapped_text(tr("scanline.classic_summary", {{"line", std::to_string(v.line)}, {"active", std::to_string(v.active.size())},
+                                                 {"compared", std::to_string(v.compared)}, {"piercings", std::to_string(v.piercings)}}),
+                 dim_text);
+    const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+    const std::string left = tr("scanline.left"), right = tr("scanline.right"), in = tr("scanline.in");
+    // The polygon table: each plane as the lecture's F′(x, y) = c0 + a·x + b·y, the window depth at pixel (x, y)
+    ImGui::TextUnformatted(tr("scanline.polygon_table").c_str());
+    const std::string pt[] = {"ID", tr("scanline.plane"), tr("scanline.in_out")};
+    if (ImGui::BeginTable("polygons", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn(pt[0].c_str(), ImGuiTableColumnFlags_WidthFixed, width("#000"));
+        ImGui::TableSetupColumn(pt[1].c_str());
+        ImGui::TableSetupColumn(pt[2].c_str(), ImGuiTableColumnFlags_WidthFixed, std::max(width(pt[2]), width(in)));
+        ImGui::TableHeadersRow();
+        for (std::size_t p = 0; p < v.polygons->size(); ++p) {
+            const algo::ScreenPolygon& poly = (*v.polygons)[p];
+            if (poly.status != algo::ScreenStatus::drawn) continue;
+            ImGui::TableNextRow();
+            if (v.in[p]) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(rgb(poly.color)), "#%zu", p);
+            ImGui::TableNextColumn();
+            ImGui::TextWrapped("z = %.4g %+.4g·x %+.4g·y", poly.plane.c0 + 0.0, poly.plane.per_x + 0.0, poly.plane.per_y + 0.0);  // + 0: no "−0"
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(v.in[p] ? in.c_str() : "");
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextUnformatted(tr("scanline.edge_table").c_str());
+    const std::string et[] = {tr("scanline.edge"), "x", "y_max", "Δx", tr("scanline.polygon"), tr("scanline.side")};
+    if (ImGui::BeginTable("classic edges", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+        const float widths[] = {std::max(width(et[0]), width("000")), width("-00.00"), std::max(width(et[2]), width("00")),
+                                width("-00.00"), std::max(width(et[4]), width("#000"))};
+        for (int c = 0; c < 5; ++c) ImGui::TableSetupColumn(et[c].c_str(), ImGuiTableColumnFlags_WidthFixed, widths[c]);
+        ImGui::TableSetupColumn(et[5].c_str());
+        ImGui::TableHeadersRow();
+        for (std::size_t i = 0; i < v.edges->size(); ++i) {
+            const algo::EdgeEntry& e = (*v.edges)[i];
+            const algo::EdgeFields f = algo::edge_fields(e);
+            ImGui::TableNextRow();
+            if (std::find(v.active.begin(), v.active.end(), std::uint32_t(i)) != v.active.end())
+                ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
+            ImGui::TableNextColumn();
+            ImGui::Text("%zu", i);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", f.x);
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", f.y_max);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", f.dx);
+            ImGui::TableNextColumn();
+            ImGui::Text("#%u", unsigned(e.polygon));
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(e.left ? left.c_str() : right.c_str());
+        }
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace
+
+void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActions& out) {
+    const ScanView& v = s.view();
+    begin_column_box(l, Box::state, (tr(v.classic ? "scanline.tables" : "scanline.edge_table") + "###edge table").c_str());
+    if (v.classic) {
+        classic_tables(s, out);
+        end_column_box(l, Box::state);
+        return;
+    }
     wrapped_text(tr("scanline.summary", {{"line", std::to_string(v.line)}, {"active", std::to_string(v.active.size())},
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);

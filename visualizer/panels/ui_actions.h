@@ -32,6 +32,7 @@ struct UiActions {
     std::optional<algo::Order> bsp_order;           // BSP lessons: DisplayBSP back to front or front to back
     std::optional<algo::SplitterRule> bsp_splitter; // BSP lessons: rebuild with this rule
     bool bsp_reverse = false, bsp_shuffle = false;  // BSP lessons: the insertion order reversed, or shuffled
+    std::optional<bool> find_piercings;             // classic scan line: rerun with or without the extra intersections
     std::optional<int> digit;                       // a number key: a question's choice when one is open, else its own use
     std::optional<std::string> answer;              // a question's choice, clicked
     bool next_chapter = false, previous_chapter = false, next_language = false;

@@ -14,13 +14,18 @@ class Screen<ScanLineSession> : public ScreenDefaults {
 public:
     void frame(const ScanLineSession&, OrbitCamera&) const {}  // no 3D view: the canvas covers it
     void draw_scene(const ScanLineSession& s, SceneFrame& f) const {
-        f.detail = tr("scanline.detail", {{"width", std::to_string(s.lesson().grid.width)},
+        f.detail = tr(s.classic() ? "scanline.detail_classic" : "scanline.detail", {{"width", std::to_string(s.lesson().grid.width)},
                                           {"height", std::to_string(s.lesson().grid.height)},
                                           {"format", window_strings().name(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
         scanline_canvas(s, 0, 0, f.view_w, f.view_h);
-        scanline_state_panel(s, f.layout);
+        scanline_state_panel(s, f.layout, f.actions);
+    }
+    bool apply(ScanLineSession& s, const UiActions& a) {
+        if (!a.find_piercings) return false;
+        s.set_find_piercings(*a.find_piercings);
+        return true;
     }
 };
 

@@ -24,18 +24,18 @@ const Pseudocode<ScanLineEvent> scan_lines = {
 
 // The Brown notes' classic scan-line algorithm: no z-buffer, the polygon table's planes compared where spans begin.
 const Pseudocode<ScanLineEvent> classic_lines = {
-    {"ET = every non-horizontal edge (x, y_max, Δx, ID), by its first scan line", {step<EdgeTableBuilt>()}},
-    {"PT = every polygon (ID, plane equation, colour, in/out flag)", {}},
+    {"ET = each non-horizontal edge: x, y_max, Δx, ID", {step<EdgeTableBuilt>()}},
+    {"PT = each polygon: ID, plane eq., colour, in/out", {}},
     {"for each scan line y:", {step<ScanLineStarted>()}},
     {"  AET += the ET's edges starting at y", {micro<EdgeEntered>()}},
     {"  AET -= the edges that ended", {micro<EdgeLeft>()}},
     {"  sort the AET by increasing x", {}},
-    {"  for each intersection E on the scan line, left to right:", {}},
-    {"    if E is a left edge:  P's flag = in  (entering)", {micro<EdgeCrossed>([](const EdgeCrossed& e) { return e.entering; })}},
-    {"    else:  P's flag = out  (leaving)", {micro<EdgeCrossed>()}},
-    {"    if two or more are in: the nearest by their planes at x", {micro<DepthsCompared>()}},
-    {"    if two in pierce before the next E: an extra one there", {micro<PiercingFound>()}},
-    {"    use its colour (none in: background) up to the next", {micro<SpanColored>()}},
+    {"  for each intersection E, left to right:", {}},
+    {"    left edge: P's flag = in  (entering)", {micro<EdgeCrossed>([](const EdgeCrossed& e) { return e.entering; })}},
+    {"    right edge: P's flag = out  (leaving)", {micro<EdgeCrossed>()}},
+    {"    two or more in: the nearest by their planes", {micro<DepthsCompared>()}},
+    {"    two in pierce before the next E: an extra E", {micro<PiercingFound>()}},
+    {"    use its colour (none in: background) to the next E", {micro<SpanColored>()}},
     {"done", {step<ScanFinished>(), step<ScanStepBoundReached>()}},
 };
 
