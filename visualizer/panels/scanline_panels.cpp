@@ -54,12 +54,15 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
 
 namespace {
 
+// The current scan line, or a dash before the first and after the last (where the view's line is −1).
+std::string line_number(const ScanView& v) { return v.line < 0 ? "–" : std::to_string(v.line); }
+
 // The classic's tables as the Brown notes draw them: ET entry (x, y_max, Δx, ID), PT entry (ID, plane eq., in-out).
 void classic_tables(const ScanLineSession& s, UiActions& out) {
     const ScanView& v = s.view();
     bool piercings = s.finds_piercings();
     if (ImGui::Checkbox((tr("scanline.find_piercings") + "###piercings").c_str(), &piercings)) out.find_piercings = piercings;
-    wrapped_text(tr("scanline.classic_summary", {{"line", std::to_string(v.line)}, {"active", std::to_string(v.active.size())},
+    wrapped_text(tr("scanline.classic_summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
                                                  {"compared", std::to_string(v.compared)}, {"piercings", std::to_string(v.piercings)}}),
                  dim_text);
     const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
@@ -127,7 +130,7 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActi
         end_column_box(l, Box::state);
         return;
     }
-    wrapped_text(tr("scanline.summary", {{"line", std::to_string(v.line)}, {"active", std::to_string(v.active.size())},
+    wrapped_text(tr("scanline.summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);
     // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first)
