@@ -25,10 +25,11 @@ enum class DepthSortMachine : std::uint8_t { newell };
 enum class PortalMachine : std::uint8_t { pvs, render, render_bbox };  // render_bbox: bounding-box frusta
 enum class CullingMachine : std::uint8_t { bounds, frustum, detail, occluders, hiz };
 enum class HorizonMachine : std::uint8_t { floating_horizon };
+enum class CompositeMachine : std::uint8_t { alpha };
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
-                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine>;
+                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

@@ -8,6 +8,7 @@
 #include "culling/hiz.h"
 #include "culling/occluders.h"
 #include "depth_sort/depth_sort_events.h"
+#include "compositing/composite_events.h"
 #include "horizon/horizon_events.h"
 #include "portals/portal_events.h"
 #include "raycast/raycast_events.h"
@@ -20,7 +21,7 @@ namespace hsr::algo {
 std::vector<std::span<const Saying>> machine_sayings() {
     return {backface_sayings(), bsp_sayings(),      clipping_sayings(), culling_sayings(),  depth_sort_sayings(), hiz_sayings(),
             occluder_sayings(), portal_sayings(),   ray_cast_sayings(), scanline_sayings(), zbuffer_sayings(),    zmerge_sayings(),
-            horizon_sayings()};
+            horizon_sayings(), composite_sayings()};
 }
 
 }  // namespace hsr::algo

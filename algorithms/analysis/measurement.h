@@ -56,6 +56,7 @@ std::vector<Measurement> measure_hidden_surfaces(const ReportOptions& o);  // BS
 std::vector<Measurement> measure_portals(const ReportOptions& o);
 std::vector<Measurement> measure_culling(const ReportOptions& o);
 std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floating horizon per screen resolution
+std::vector<Measurement> measure_compositing(const ReportOptions& o);  // alpha compositing per storage, against GMP
 // Every family's measurement, in the report's order (the command line's report and measure_all run these).
 using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
 std::vector<MeasureFamily> report_families();

@@ -100,6 +100,21 @@ TEST_CASE("floating horizon: the image-precision error falls as the columns grow
     CHECK(row(rows, "floating horizon", " 256 columns").error < row(rows, "floating horizon", " 16 columns").error / 4);
 }
 
+TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not, the early stop saves layers", "[analysis][compositing]") {
+    const auto rows = analysis::measure_compositing(quick);
+    REQUIRE(rows.size() == 6);
+    CHECK(row(rows, "premultiplied over, double, back to front").error < 1e-9);
+    CHECK(row(rows, "premultiplied over, double, back to front").wrong == 0);
+    CHECK(row(rows, "premultiplied over, float32, back to front").error < 1e-3);
+    CHECK(row(rows, "straight (the notes' formula), 8 bits per step").error > 0.5);   // rounding after every step adds up
+    CHECK(row(rows, "premultiplied over, 8 bits per step").error > 0.5);
+    CHECK(row(rows, "front to back (double), stop at α ≥ 0.99").error <= 0.01 * 255 + 1e-9);        // what lies behind: at most 1 − A
+    CHECK(row(rows, "front to back (double), stop at α ≥ 0.999").error <= row(rows, "front to back (double), stop at α ≥ 0.99").error);
+    double layers = 0;
+    REQUIRE(std::sscanf(row(rows, "front to back (double), stop at α ≥ 0.99").extra.c_str(), "%lf", &layers) == 1);
+    CHECK(layers < 8);
+}
+
 TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
     const auto rows = analysis::measure_hidden_surfaces(quick);
     for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort",

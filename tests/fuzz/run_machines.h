@@ -6,12 +6,14 @@
 
 #include "bsp/bsp_scene.h"
 #include "clipping/clip_scene.h"
+#include "compositing/compositing.h"
 #include "core/numeric.h"
 #include "culling/pipeline.h"
 #include "depth_sort/depth_sort.h"
 #include "horizon/floating_horizon.h"
 #include "portals/portal_render.h"
 #include "raycast/ray_cast.h"
+#include "zbuffer/classic_scanline.h"
 #include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::fuzz {
@@ -36,6 +38,12 @@ inline void run_machines(const algo::Scene& s) {
         (void)zbuffer_fill(project_polygons(s, {16, 12}), zbuffer_options(s, {16, 12}, DepthFormat::int16, EventDetail::polygon)).run_to_end();
     });
     refused_or_done([&] { (void)depth_sort(sort_polygons(s), {.max_splits = 64, .max_pairs = 20000}).run_to_end(); });
+    refused_or_done([&] { (void)composite(layers_along(s, centre_ray(s.camera))).run_to_end(); });
+    refused_or_done([&] {
+        ScanLineOptions o = scan_line_options(s, {16, 12}, DepthFormat::int24);
+        o.max_crossings = 20000;
+        (void)classic_scan_line(project_polygons(s, {16, 12}), {.line = o}).run_to_end();
+    });
     refused_or_done([&] {
         BspJob job = bsp_job(s, SplitterRule::balanced);
         job.options.max_depth = 64, job.options.max_polygons = 4096;

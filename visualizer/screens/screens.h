@@ -8,6 +8,7 @@
 #include "screens/backface_screen.h"
 #include "screens/bsp_screen.h"
 #include "screens/clip_screen.h"
+#include "screens/composite_screen.h"
 #include "screens/culling_screen.h"
 #include "screens/depth_sort_screen.h"
 #include "screens/horizon_screen.h"

@@ -21,6 +21,7 @@
 #include "state/backface_session.h"
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
+#include "state/composite_session.h"
 #include "state/culling_session.h"
 #include "state/depth_sort_session.h"
 #include "state/horizon_session.h"
@@ -47,7 +48,8 @@ struct SessionTypes {
 };
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
-                                 HierarchyCullSession, OccluderSession, HizSession, HorizonSession>;
+                                 HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
+                                 CompositeSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -62,6 +64,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](ScanLineMachine) { return f(Family<ScanLineSession>{}); },
                           [&](ZMergeMachine) { return f(Family<ZMergeSession>{}); },
                           [&](HorizonMachine) { return f(Family<HorizonSession>{}); },
+                          [&](CompositeMachine) { return f(Family<CompositeSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});
