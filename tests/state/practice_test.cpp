@@ -2,6 +2,7 @@
 // Practice: for every topic, 200 exercises over the three levels, each answer recomputed from the numbers the
 // exercise gives by an independent reference (exact rationals: outcodes, the trivial tests and Sutherland–Hodgman's
 // stages by hand, Liang–Barsky's parameters from the exact clipper, the eye's side of a plane), and the grading.
+#include <array>
 #include <gmpxx.h>
 
 #include <cmath>
@@ -318,6 +319,25 @@ std::string reference_answer(const Exercise& e) {
         }
         if (kind == "codes_apart") return apart.get_str();
         return e.choices[apart > 0 ? 0 : 1];
+    }
+    if (kind == "compositing_alpha" || kind == "compositing_channel") {  // the question's numbers, exactly
+        std::vector<std::array<Q, 4>> layers;  // premultiplied, nearest first
+        for (const auto& l : g["layers"]) {
+            const Q a(l[3].get<double>());
+            layers.push_back({a * Q(l[0].get<double>()), a * Q(l[1].get<double>()), a * Q(l[2].get<double>()), a});
+        }
+        const auto over = [](const std::array<Q, 4>& f, const std::array<Q, 4>& b) {
+            std::array<Q, 4> c;
+            for (int k = 0; k < 4; ++k) c[std::size_t(k)] = f[std::size_t(k)] + (1 - f[3]) * b[std::size_t(k)];
+            return c;
+        };
+        std::array<Q, 4> c{0, 0, 0, 0};
+        if (kind == "compositing_alpha") {
+            for (int i = 0; i <= g["layer"].get<int>(); ++i) c = over(c, layers[std::size_t(i)]);
+            return std::to_string(c[3].get_d());
+        }
+        for (std::size_t i = layers.size(); i-- > 0;) c = over(layers[i], c);
+        return std::to_string(c[std::size_t(g["channel"].get<int>())].get_d());
     }
     if (kind == "horizon_sight") {  // the exact ray walk says seen or hidden; a seen point's side is row 0's
         hsr::algo::Terrain t{.columns = g["samples"].get<int>(), .rows = g["rows"].get<int>(), .elevation = g["elevation"].get<double>()};

@@ -107,5 +107,6 @@ std::vector<Topic> scanline_topics();
 std::vector<Topic> hiz_topics();
 std::vector<Topic> portal_topics();
 std::vector<Topic> horizon_topics();
+std::vector<Topic> compositing_topics();
 
 }  // namespace hsr::viz::practice
