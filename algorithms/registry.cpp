@@ -33,6 +33,7 @@ constexpr std::array registry = {
     AlgorithmInfo{"raycast_grid", "Ray casting through a regular grid", 3, Acceleration::grid},
     AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Acceleration::octree},
     AlgorithmInfo{"floating_horizon", "The floating horizon for terrain", 2, HorizonMachine::floating_horizon},
+    AlgorithmInfo{"roberts", "Roberts' hidden lines: each edge against every convex body", 3, RobertsMachine::hidden_lines},
     AlgorithmInfo{"alpha_compositing", "Alpha compositing: premultiplied and straight, over, Porter–Duff", 2, CompositeMachine::alpha},
 };
 

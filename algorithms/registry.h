@@ -26,10 +26,12 @@ enum class PortalMachine : std::uint8_t { pvs, render, render_bbox };  // render
 enum class CullingMachine : std::uint8_t { bounds, frustum, detail, occluders, hiz };
 enum class HorizonMachine : std::uint8_t { floating_horizon };
 enum class CompositeMachine : std::uint8_t { alpha };
+enum class RobertsMachine : std::uint8_t { hidden_lines };
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
-                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine>;
+                             ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine,
+                             RobertsMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

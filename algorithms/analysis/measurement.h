@@ -57,6 +57,7 @@ std::vector<Measurement> measure_portals(const ReportOptions& o);
 std::vector<Measurement> measure_culling(const ReportOptions& o);
 std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floating horizon per screen resolution
 std::vector<Measurement> measure_compositing(const ReportOptions& o);  // alpha compositing per storage, against GMP
+std::vector<Measurement> measure_roberts(const ReportOptions& o);  // Roberts' hidden lines per body count, against rays
 // Every family's measurement, in the report's order (the command line's report and measure_all run these).
 using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
 std::vector<MeasureFamily> report_families();

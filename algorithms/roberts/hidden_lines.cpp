@@ -168,7 +168,7 @@ std::optional<std::pair<double, double>> hidden_part(const Camera& camera, const
     return std::pair{t0, t1};
 }
 
-Steps<RobertsEvent, LineDrawing> roberts(const Scene& scene, RobertsOptions o) {
+Steps<RobertsEvent, LineDrawing> roberts(Scene scene, RobertsOptions o) {
     LineDrawing out;
     out.input = convex_bodies(scene);
     const LineDrawingInput& in = out.input;

@@ -61,7 +61,8 @@ struct LineDrawing {
     bool bounded = false;
 };
 
-Steps<RobertsEvent, LineDrawing> roberts(const Scene& scene, RobertsOptions options = {});
+// The scene is copied into the machine: a coroutine outlives the caller's references.
+Steps<RobertsEvent, LineDrawing> roberts(Scene scene, RobertsOptions options = {});
 
 // The part [t0, t1] of the segment a→b that the convex body hides from the camera's eye (orthographic: from the
 // view direction), by Roberts' linear test after the perspective transform; nothing when it hides no part.

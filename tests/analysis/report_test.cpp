@@ -100,6 +100,19 @@ TEST_CASE("floating horizon: the image-precision error falls as the columns grow
     CHECK(row(rows, "floating horizon", " 256 columns").error < row(rows, "floating horizon", " 16 columns").error / 4);
 }
 
+TEST_CASE("Roberts' hidden lines: no sampled edge point wrong, tests growing as the square of the bodies", "[analysis][roberts]") {
+    const auto rows = analysis::measure_roberts(quick);
+    REQUIRE(rows.size() == 3);
+    unsigned long long tests[3] = {};
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        INFO(rows[k].setting << ": " << rows[k].extra);
+        CHECK(rows[k].wrong_must_be_zero);
+        CHECK(rows[k].wrong == 0);
+        REQUIRE(std::sscanf(rows[k].extra.c_str(), "%llu", &tests[k]) == 1);
+    }
+    CHECK(tests[2] > 10 * tests[0]);  // 4 times the bodies: about 16 times the tests
+}
+
 TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not, the early stop saves layers", "[analysis][compositing]") {
     const auto rows = analysis::measure_compositing(quick);
     REQUIRE(rows.size() == 6);

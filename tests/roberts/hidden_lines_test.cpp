@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "analysis/line_reference.h"
 #include "catch.h"
 #include "core/numeric.h"
 #include "roberts/hidden_lines.h"
@@ -49,64 +50,8 @@ Scene random_boxes(std::uint32_t seed, int count, bool orthographic) {
     return s;
 }
 
-enum class Sight { visible, hidden, unsure };
-
-// Does body B hide point p from the eye? The segment p → eye (orthographic: p → p + L·view back) inside every plane.
-Sight reference(const Scene& s, const ConvexBody& body, Vec3 p) {
-    const Vec3 to = s.camera.projection == Projection::orthographic ? p + 1000.0 * glm::normalize(s.camera.eye - s.camera.target) : s.camera.eye;
-    double enter = 0, leave = 1;
-    for (const Plane& plane : body.planes) {
-        const double f0 = plane.distance(p), df = glm::dot(plane.n, to - p);
-        if (std::abs(df) < 1e-15) {
-            if (f0 >= 0) return f0 < 1e-9 ? Sight::unsure : Sight::visible;
-            continue;
-        }
-        const double u = -f0 / df;
-        if (df > 0) leave = std::min(leave, u);
-        else enter = std::max(enter, u);
-    }
-    const double length = (leave - enter) * glm::length(to - p);
-    if (length > 1e-7) return Sight::hidden;
-    if (length < -1e-7) return Sight::visible;
-    return Sight::unsure;
-}
-
-struct Agreement {
-    int compared = 0, unsure = 0, wrong = 0;
-};
-
-Agreement against_rays(const Scene& s, const LineDrawing& d, int samples) {
-    Agreement a;
-    for (std::size_t e = 0; e < d.input.edges.size(); ++e) {
-        if (d.edges[e].removed) continue;
-        const BodyEdge& edge = d.input.edges[e];
-        for (int k = 0; k < samples; ++k) {
-            const double t = (k + 0.5) / samples;
-            const Vec3 p = edge.a + t * (edge.b - edge.a);
-            Sight want = Sight::visible;
-            for (std::uint32_t b = 0; b < d.input.bodies.size(); ++b) {
-                if (b == edge.body) continue;
-                const Sight by = reference(s, d.input.bodies[b], p);
-                if (by == Sight::hidden) want = Sight::hidden;
-                else if (by == Sight::unsure && want == Sight::visible) want = Sight::unsure;
-            }
-            bool got = false, near_end = false;
-            for (const auto& [t0, t1] : d.edges[e].hidden) {
-                got |= t >= t0 && t <= t1;
-                near_end |= std::abs(t - t0) < 1e-6 || std::abs(t - t1) < 1e-6;
-            }
-            if (want == Sight::unsure || near_end) {
-                ++a.unsure;
-                continue;
-            }
-            ++a.compared;
-            if (got != (want == Sight::hidden)) {
-                ++a.wrong;
-                UNSCOPED_INFO("edge " << e << " at t = " << t << ": machine " << (got ? "hidden" : "visible"));
-            }
-        }
-    }
-    return a;
+hsr::analysis::LineAgreement against_rays(const Scene& s, const LineDrawing& d, int samples) {
+    return hsr::analysis::against_rays(s, d, samples);
 }
 
 }  // namespace
@@ -120,7 +65,7 @@ TEST_CASE("Roberts: every sampled point of every edge is hidden exactly when a r
             CHECK_FALSE(d.bounded);
             CHECK(d.input.bodies.size() == 6);
             CHECK(d.input.edges.size() == 6 * 12);
-            const Agreement a = against_rays(s, d, 200);
+            const hsr::analysis::LineAgreement a = against_rays(s, d, 200);
             CHECK(a.wrong == 0);
             CHECK(a.compared > 10 * a.unsure);
         }
@@ -153,7 +98,7 @@ TEST_CASE("Roberts: back edges are removed, a box behind a larger one is hidden 
     add_box(pierce, {0, 0, 0}, {2, 2, 0.3}, 0, {0, 1, 0});
     add_box(pierce, {0, 0, 0}, {3.5, 0.2, 0.2}, 0, {0, 1, 0});
     const LineDrawing p = roberts(pierce).run_to_end();
-    const Agreement a = against_rays(pierce, p, 400);
+    const hsr::analysis::LineAgreement a = against_rays(pierce, p, 400);
     CHECK(a.wrong == 0);
     bool partly = false;
     for (std::size_t e = 0; e < p.input.edges.size(); ++e)

@@ -14,6 +14,7 @@
 #include "screens/horizon_screen.h"
 #include "screens/portal_screen.h"
 #include "screens/raycast_screen.h"
+#include "screens/roberts_screen.h"
 #include "screens/scanline_screen.h"
 #include "screens/zbuffer_screen.h"
 #include "screens/zmerge_screen.h"

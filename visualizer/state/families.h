@@ -27,6 +27,7 @@
 #include "state/horizon_session.h"
 #include "state/portal_session.h"
 #include "state/raycast_session.h"
+#include "state/roberts_session.h"
 #include "state/scanline_session.h"
 #include "state/zbuffer_session.h"
 #include "state/zmerge_session.h"
@@ -49,7 +50,7 @@ struct SessionTypes {
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
                                  HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
-                                 CompositeSession>;
+                                 CompositeSession, RobertsSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -65,6 +66,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](ZMergeMachine) { return f(Family<ZMergeSession>{}); },
                           [&](HorizonMachine) { return f(Family<HorizonSession>{}); },
                           [&](CompositeMachine) { return f(Family<CompositeSession>{}); },
+                          [&](RobertsMachine) { return f(Family<RobertsSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});
