@@ -86,17 +86,8 @@ Steps<ScanLineEvent, FrameDepth> classic_scan_line(std::vector<ScreenPolygon> po
     std::uint64_t steps = 0, spans = 0;
     for (int y = 0; y < h; ++y) {
         co_yield ScanLineStarted{y};
-        for (std::size_t k = 0; k < aet.size();)
-            if (et[aet[k]].end_row <= y) {
-                if (o.tell_crossings) co_yield EdgeLeft{aet[k], et[aet[k]].polygon, y};
-                aet.erase(aet.begin() + std::ptrdiff_t(k));
-            } else {
-                ++k;
-            }
-        for (; next < et.size() && et[next].first_row <= y; ++next) {
-            aet.push_back(std::uint32_t(next));
-            if (o.tell_crossings) co_yield EdgeEntered{std::uint32_t(next), et[next].polygon, y, edge_x_at_row(et[next].a, et[next].b, y)};
-        }
+        for (const ScanLineEvent& moved : advance_active_edges(et, aet, next, y))
+            if (o.tell_crossings) co_yield moved;
         line.clear();
         for (std::uint32_t e : aet) {
             const EdgeEntry& edge = et[e];

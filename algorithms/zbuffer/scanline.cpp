@@ -41,6 +41,22 @@ std::vector<EdgeEntry> edge_table(const std::vector<ScreenPolygon>& polygons, Vi
     return table;
 }
 
+std::vector<ScanLineEvent> advance_active_edges(const std::vector<EdgeEntry>& et, std::vector<std::uint32_t>& aet, std::size_t& next, int y) {
+    std::vector<ScanLineEvent> moved;
+    for (std::size_t k = 0; k < aet.size();)
+        if (et[aet[k]].end_row <= y) {
+            moved.emplace_back(EdgeLeft{aet[k], et[aet[k]].polygon, y});
+            aet.erase(aet.begin() + std::ptrdiff_t(k));
+        } else {
+            ++k;
+        }
+    for (; next < et.size() && et[next].first_row <= y; ++next) {
+        aet.push_back(std::uint32_t(next));
+        moved.emplace_back(EdgeEntered{std::uint32_t(next), et[next].polygon, y, edge_x_at_row(et[next].a, et[next].b, y)});
+    }
+    return moved;
+}
+
 Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, ScanLineOptions o) {
     const int w = o.viewport.width, h = o.viewport.height;
     FrameDepth out{Image(w, h, o.background), std::vector<std::uint32_t>(std::size_t(w) * std::size_t(h)),
@@ -61,17 +77,8 @@ Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, 
     for (int y = 0; y < h; ++y) {
         co_yield ScanLineStarted{y};
         // Update the AET: drop the edges that ended, enter the ET's edges that start on this line
-        for (std::size_t k = 0; k < aet.size();)
-            if (et[aet[k]].end_row <= y) {
-                if (o.tell_crossings) co_yield EdgeLeft{aet[k], et[aet[k]].polygon, y};
-                aet.erase(aet.begin() + std::ptrdiff_t(k));
-            } else {
-                ++k;
-            }
-        for (; next < et.size() && et[next].first_row <= y; ++next) {
-            aet.push_back(std::uint32_t(next));
-            if (o.tell_crossings) co_yield EdgeEntered{std::uint32_t(next), et[next].polygon, y, edge_x_at_row(et[next].a, et[next].b, y)};
-        }
+        for (const ScanLineEvent& moved : advance_active_edges(et, aet, next, y))
+            if (o.tell_crossings) co_yield moved;
         // Sort the AET by where its edges cross this line
         sorted.clear();
         for (std::uint32_t e : aet) sorted.emplace_back(edge_x_at_row(et[e].a, et[e].b, y), e);

@@ -40,6 +40,11 @@ struct EdgeEntry {
 
 std::vector<EdgeEntry> edge_table(const std::vector<ScreenPolygon>& polygons, Viewport viewport);
 
+// Moves the active edge table (indices into the edge table) to line y: drops the edges that ended, then enters the
+// ET's edges that start on it; `next` is the first edge of the ET not yet entered. Returns what it did, as the
+// EdgeLeft and EdgeEntered events a machine tells (both scan lines keep their AET this way).
+std::vector<ScanLineEvent> advance_active_edges(const std::vector<EdgeEntry>& et, std::vector<std::uint32_t>& aet, std::size_t& next, int y);
+
 // The result's depth holds the code of what each pixel shows (the line buffer's, kept for comparison).
 Steps<ScanLineEvent, FrameDepth> scan_line(std::vector<ScreenPolygon> polygons, ScanLineOptions options);
 
