@@ -237,9 +237,12 @@ case "$case" in
       grep -q "cannot make the folder $folder" e4.txt
     done ;;
   help)
-    "$hsrviz" --help | grep -q -- "--screenshot"
-    "$hsrviz" --help | grep -q "trace"
-    "$hsrviz" trace --help | grep -q -- "--out"
+    # into files: grep -q closes a pipe at its first match, and under pipefail the writer's SIGPIPE would fail the test
+    "$hsrviz" --help > help.txt
+    grep -q -- "--screenshot" help.txt
+    grep -q "trace" help.txt
+    "$hsrviz" trace --help > trace_help.txt
+    grep -q -- "--out" trace_help.txt
     "$hsrviz" --version | grep -qx "hsrviz [0-9]*\.[0-9]*\.[0-9]*"
     # a usage error says why and exits 2 (not CLI11's 105 or 109)
     set +e; "$hsrviz" --bogus 2> usage.txt; code=$?; set -e
