@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 #include <string>
+#include <tuple>
 
 #include <glm/glm.hpp>
 
@@ -21,6 +22,11 @@ std::vector<Vec3> face_vertices(const Scene& scene, std::uint32_t face) {
     for (const auto& p : scene.polygons[face].vertices) v.push_back(world(p));
     return v;
 }
+
+// Vertices ordered by their coordinates, so that equal points are one key.
+struct ByCoordinates {
+    bool operator()(const Vec3& a, const Vec3& b) const { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
+};
 
 // Union–find over the polygons, for bodies of faces that share edges.
 struct Groups {
@@ -66,9 +72,7 @@ LineDrawingInput convex_bodies(const Scene& scene) {
         return (p.line ? "line " + std::to_string(p.line) + ": " : std::string()) + "polygon " + std::to_string(p.id);
     };
     // The edges, by their two vertices (exactly equal coordinates are one vertex)
-    std::map<Vec3, std::uint32_t, decltype([](const Vec3& a, const Vec3& b) {
-                 return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-             })> vertex_ids;
+    std::map<Vec3, std::uint32_t, ByCoordinates> vertex_ids;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> faces_of;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<Vec3, Vec3>> ends;
     for (std::uint32_t f = 0; f < n; ++f) {
