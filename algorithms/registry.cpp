@@ -34,6 +34,8 @@ constexpr std::array registry = {
     AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Acceleration::octree},
     AlgorithmInfo{"floating_horizon", "The floating horizon for terrain", 2, HorizonMachine::floating_horizon},
     AlgorithmInfo{"roberts", "Roberts' hidden lines: each edge against every convex body", 3, RobertsMachine::hidden_lines},
+    AlgorithmInfo{"perspective_transform", "The perspective transform: occluding pairs before and after it", 2,
+                  PerspectiveMachine::occluding_pairs},
     AlgorithmInfo{"alpha_compositing", "Alpha compositing: premultiplied and straight, over, Porter–Duff", 2, CompositeMachine::alpha},
 };
 

@@ -27,11 +27,12 @@ enum class CullingMachine : std::uint8_t { bounds, frustum, detail, occluders, h
 enum class HorizonMachine : std::uint8_t { floating_horizon };
 enum class CompositeMachine : std::uint8_t { alpha };
 enum class RobertsMachine : std::uint8_t { hidden_lines };
+enum class PerspectiveMachine : std::uint8_t { occluding_pairs };
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
                              ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine,
-                             RobertsMachine>;
+                             RobertsMachine, PerspectiveMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

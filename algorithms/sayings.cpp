@@ -10,6 +10,7 @@
 #include "depth_sort/depth_sort_events.h"
 #include "compositing/composite_events.h"
 #include "horizon/horizon_events.h"
+#include "perspective/transform_events.h"
 #include "roberts/roberts_events.h"
 #include "portals/portal_events.h"
 #include "raycast/raycast_events.h"
@@ -22,7 +23,7 @@ namespace hsr::algo {
 std::vector<std::span<const Saying>> machine_sayings() {
     return {backface_sayings(), bsp_sayings(),      clipping_sayings(), culling_sayings(),  depth_sort_sayings(), hiz_sayings(),
             occluder_sayings(), portal_sayings(),   ray_cast_sayings(), scanline_sayings(), zbuffer_sayings(),    zmerge_sayings(),
-            horizon_sayings(), composite_sayings(), roberts_sayings()};
+            horizon_sayings(), composite_sayings(), roberts_sayings(), transform_sayings()};
 }
 
 }  // namespace hsr::algo

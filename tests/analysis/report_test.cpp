@@ -113,6 +113,22 @@ TEST_CASE("Roberts' hidden lines: no sampled edge point wrong, tests growing as 
     CHECK(tests[2] > 10 * tests[0]);  // 4 times the bodies: about 16 times the tests
 }
 
+TEST_CASE("occluding pairs: both ways decide every pair as exact rationals do; before divides per pair, after per point", "[analysis][perspective]") {
+    const auto rows = analysis::measure_perspective(quick);
+    REQUIRE(rows.size() == 4);  // two point counts, each way
+    for (const auto& m : rows) {
+        INFO(m.method << ", " << m.setting << ": " << m.extra);
+        CHECK(m.wrong_must_be_zero);
+        CHECK(m.wrong == 0);
+        unsigned long long divisions = 0, pairs = 0, on_projector = 0;
+        REQUIRE(std::sscanf(m.extra.c_str(), "%llu divisions for %llu pairs, %llu", &divisions, &pairs, &on_projector) == 3);
+        const unsigned long long points = m.setting == "64 points" ? 64 : 256;
+        CHECK(pairs == points * (points - 1) / 2);
+        CHECK(on_projector >= points / 4);  // the family puts a quarter of its pairs of neighbours on one projector
+        CHECK(divisions == (m.method.find("before") != std::string::npos ? 4 * pairs : 3 * points));
+    }
+}
+
 TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not, the early stop saves layers", "[analysis][compositing]") {
     const auto rows = analysis::measure_compositing(quick);
     REQUIRE(rows.size() == 6);

@@ -12,6 +12,7 @@
 #include "screens/culling_screen.h"
 #include "screens/depth_sort_screen.h"
 #include "screens/horizon_screen.h"
+#include "screens/perspective_screen.h"
 #include "screens/portal_screen.h"
 #include "screens/raycast_screen.h"
 #include "screens/roberts_screen.h"

@@ -25,6 +25,7 @@
 #include "state/culling_session.h"
 #include "state/depth_sort_session.h"
 #include "state/horizon_session.h"
+#include "state/perspective_session.h"
 #include "state/portal_session.h"
 #include "state/raycast_session.h"
 #include "state/roberts_session.h"
@@ -50,7 +51,7 @@ struct SessionTypes {
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
                                  HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
-                                 CompositeSession, RobertsSession>;
+                                 CompositeSession, RobertsSession, PerspectiveSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -67,6 +68,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](HorizonMachine) { return f(Family<HorizonSession>{}); },
                           [&](CompositeMachine) { return f(Family<CompositeSession>{}); },
                           [&](RobertsMachine) { return f(Family<RobertsSession>{}); },
+                          [&](PerspectiveMachine) { return f(Family<PerspectiveSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});
