@@ -68,7 +68,8 @@ std::vector<Measurement> measure_perspective(const ReportOptions& o) {
             for (int a = 0; a < p; ++a)
                 for (int b = a + 1; b < p; ++b) after_same.push_back(algo::same_projector(xy[std::size_t(a)], xy[std::size_t(b)], tolerance));
         });
-        std::uint64_t pairs = 0, wrong_before = 0, wrong_after = 0, on_projector = 0;
+        std::size_t pairs = 0;  // the index into both ways' answers (size_t: 32 bits in the browser build)
+        std::uint64_t wrong_before = 0, wrong_after = 0, on_projector = 0;
         for (int a = 0; a < p; ++a)
             for (int b = a + 1; b < p; ++b, ++pairs) {
                 const bool exact = exactly_same(r.eye[std::size_t(a)], r.eye[std::size_t(b)]);
@@ -85,7 +86,7 @@ std::vector<Measurement> measure_perspective(const ReportOptions& o) {
                             .error_name = "share of pairs decided unlike exact rationals", .wrong = wrong,
                             .wrong_name = "pairs decided wrong", .wrong_must_be_zero = true, .extra = extra});
         };
-        row("occluding pairs before the transform (x/z, y/z per pair)", before_ms, wrong_before, 4 * pairs);
+        row("occluding pairs before the transform (x/z, y/z per pair)", before_ms, wrong_before, 4 * std::uint64_t(pairs));
         row("occluding pairs after the transform (x′, y′; divide once)", after_ms, wrong_after, 3 * std::uint64_t(p));
     }
     return rows;
