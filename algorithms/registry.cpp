@@ -36,6 +36,7 @@ constexpr std::array registry = {
     AlgorithmInfo{"roberts", "Roberts' hidden lines: each edge against every convex body", 3, RobertsMachine::hidden_lines},
     AlgorithmInfo{"perspective_transform", "The perspective transform: occluding pairs before and after it", 2,
                   PerspectiveMachine::occluding_pairs},
+    AlgorithmInfo{"a_buffer", "The A-buffer: fragment lists with coverage masks, resolved front to back", 3, ABufferMachine::resolve},
     AlgorithmInfo{"alpha_compositing", "Alpha compositing: premultiplied and straight, over, Porter–Duff", 2, CompositeMachine::alpha},
 };
 

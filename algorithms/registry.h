@@ -28,11 +28,12 @@ enum class HorizonMachine : std::uint8_t { floating_horizon };
 enum class CompositeMachine : std::uint8_t { alpha };
 enum class RobertsMachine : std::uint8_t { hidden_lines };
 enum class PerspectiveMachine : std::uint8_t { occluding_pairs };
+enum class ABufferMachine : std::uint8_t { resolve };
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
                              ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine,
-                             RobertsMachine, PerspectiveMachine>;
+                             RobertsMachine, PerspectiveMachine, ABufferMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

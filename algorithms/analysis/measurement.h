@@ -58,7 +58,8 @@ std::vector<Measurement> measure_culling(const ReportOptions& o);
 std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floating horizon per screen resolution
 std::vector<Measurement> measure_compositing(const ReportOptions& o);  // alpha compositing per storage, against GMP
 std::vector<Measurement> measure_roberts(const ReportOptions& o);  // Roberts' hidden lines per body count, against rays
-std::vector<Measurement> measure_perspective(const ReportOptions& o);  // occluding pairs before and after the transform, against GMP
+std::vector<Measurement> measure_perspective(const ReportOptions& o);
+std::vector<Measurement> measure_abuffer(const ReportOptions& o);  // the A-buffer per mask size, against supersampled rays  // occluding pairs before and after the transform, against GMP
 // Every family's measurement, in the report's order (the command line's report and measure_all run these).
 using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
 std::vector<MeasureFamily> report_families();

@@ -129,6 +129,17 @@ TEST_CASE("occluding pairs: both ways decide every pair as exact rationals do; b
     }
 }
 
+TEST_CASE("the A-buffer: the error against supersampled rays falls with the mask size", "[analysis][abuffer]") {
+    const auto rows = analysis::measure_abuffer(quick);
+    REQUIRE(rows.size() == 4);  // masks 1, 2, 4, 8
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k) {
+        INFO(rows[k].method << ": " << rows[k].error << " → " << rows[k + 1].method << ": " << rows[k + 1].error);
+        CHECK(rows[k + 1].error < rows[k].error);
+    }
+    CHECK(rows[3].error < rows[0].error / 3);  // 8 × 8 against one sample
+    CHECK(rows[0].method == "A-buffer, 1 × 1 mask");
+}
+
 TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not, the early stop saves layers", "[analysis][compositing]") {
     const auto rows = analysis::measure_compositing(quick);
     REQUIRE(rows.size() == 6);

@@ -13,6 +13,12 @@
 
 namespace hsr::viz {
 
+// Where a canvas draws a grid of fat pixels: its top-left corner and the size of one pixel, in window points (so
+// that the window's mouse can be read in pixels of the grid).
+struct FatGrid {
+    float x0, y0, cell;
+};
+
 inline ImU32 rgb(algo::Color c, float alpha = 1) {
     return ImGui::GetColorU32(ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha));
 }

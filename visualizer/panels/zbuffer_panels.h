@@ -3,6 +3,7 @@
 // polygon, span and pixel under way; the depth-precision diagram; and the format, near and far controls.
 #pragma once
 
+#include "panels/fat_pixels.h"
 #include "panels/lesson_panels.h"
 #include "state/zbuffer_session.h"
 
@@ -10,11 +11,8 @@ namespace hsr::viz {
 
 // Fills the view area (x, y, w, h in window points, top-left origin).
 void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h);
-// Where the canvas in (x, y, w, h) draws the frame buffer: its top-left corner and the size of one fat pixel, so
-// that the window's mouse can be read in pixels of the grid (editing).
-struct FatGrid {
-    float x0, y0, cell;
-};
+// Where the canvas in (x, y, w, h) draws the frame buffer (FatGrid: panels/fat_pixels.h), so that the window's
+// mouse can be read in pixels of the grid (editing).
 FatGrid zbuffer_frame_grid(const ZBufferSession& s, float x, float y, float w, float h);
 // `in_3d`: whether the view shows the scene in 3D (the checkbox's state)
 void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout& layout, UiActions& out);

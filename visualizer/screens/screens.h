@@ -5,6 +5,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "screens/abuffer_screen.h"
 #include "screens/backface_screen.h"
 #include "screens/bsp_screen.h"
 #include "screens/clip_screen.h"

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/overloaded.h"
+#include "state/abuffer_session.h"
 #include "state/backface_session.h"
 #include "state/bsp_session.h"
 #include "state/clip_session.h"
@@ -51,7 +52,7 @@ struct SessionTypes {
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
                                  HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
-                                 CompositeSession, RobertsSession, PerspectiveSession>;
+                                 CompositeSession, RobertsSession, PerspectiveSession, ABufferSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -69,6 +70,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](CompositeMachine) { return f(Family<CompositeSession>{}); },
                           [&](RobertsMachine) { return f(Family<RobertsSession>{}); },
                           [&](PerspectiveMachine) { return f(Family<PerspectiveSession>{}); },
+                          [&](ABufferMachine) { return f(Family<ABufferSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});

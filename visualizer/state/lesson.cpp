@@ -57,7 +57,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "languages", "chapters"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "mask", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.titles = read_texts(r, root.get("title"), "title", lesson.languages);
     if (lesson.titles.empty()) r.fail(&root, "title", "a lesson needs title = \"…\"");
@@ -90,6 +90,10 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         if (format == algo::format_id(f)) lesson.depth_format = f, known_format = true;
     if (!known_format)
         r.fail(root.get("format"), "format", "expected int16, int24, int32, float32, float32-reversed or linear24, got \"" + algo::printable(format, 60) + "\"");
+    // the A-buffer's coverage mask: mask × mask sub-samples per pixel
+    const std::int64_t mask = r.integer(root, "mask", "", lesson.mask_size);
+    if (mask != 1 && mask != 2 && mask != 4 && mask != 8) r.fail(root.get("mask"), "mask", "expected 1, 2, 4 or 8 (sub-samples along each side of a pixel)");
+    else lesson.mask_size = int(mask);
     // the octree's stopping rules (ray casting through an octree)
     const std::int64_t leaf_limit = r.integer(root, "leaf_limit", "", std::int64_t(lesson.octree.max_per_leaf));
     if (leaf_limit < 1 || leaf_limit > 1'000'000) r.fail(root.get("leaf_limit"), "leaf_limit", "expected a whole number from 1 to 1000000");

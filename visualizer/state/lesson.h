@@ -12,6 +12,7 @@
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
 //   cull = "back-face,frustum"             # culling lessons: the stages the scene needs
 //   leaf_limit = 4, voxel = 0.5            # octree ray-casting lessons: the octree's stopping rules
+//   mask = 4                               # A-buffer lessons: 4 × 4 sub-samples per pixel (1, 2, 4 or 8)
 //   display = "front-to-back"              # depth-sort lessons: draw the sorted list nearest first, on the grid,
 //                                          # each pixel once, and stop when the screen is full (else back to front);
 //                                          # BSP lessons: DisplayBSP visits the eye's side first
@@ -49,6 +50,7 @@ struct Lesson {
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
     algo::OctreeOptions octree;  // octree ray-casting lessons: leaf_limit = N (max_per_leaf), voxel = edge
+    int mask_size = 4;           // A-buffer lessons: mask = N, the coverage mask's N × N sub-samples per pixel
     bool front_to_back = false;  // depth-sort and BSP lessons: display = "front-to-back", the notes' optimisation of the display
     std::vector<std::string> languages{"en"};                  // of the narration; the first is the default
     std::vector<Chapter> chapters;                             // state/chapters.h
