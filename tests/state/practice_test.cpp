@@ -355,6 +355,12 @@ std::string reference_answer(const Exercise& e) {
         const Q above = (height(row) - height(0)) * Q(view.cos_e) + Q(row) * Q(view.sin_e);
         return e.choices[above > 0 ? 0 : 1];
     }
+    if (kind == "occluding_pair") {  // one projection ray exactly: x_a·z_b = x_b·z_a and y_a·z_b = y_b·z_a (orthographic: x, y equal)
+        const auto a = exact(g["a"]), b = exact(g["b"]);
+        const bool one_ray = g["perspective"].get<bool>() ? a[0] * b[2] == b[0] * a[2] && a[1] * b[2] == b[1] * a[2] : a[0] == b[0] && a[1] == b[1];
+        if (!one_ray) return e.choices[2];
+        return e.choices[a[2] > b[2] ? 0 : 1];  // the nearer has the larger z (the eye looks down −z)
+    }
     FAIL("no reference for " << kind);
     return "";
 }

@@ -19,7 +19,7 @@ std::span<const Topic> topics() {
         std::vector<Topic> t;
         for (auto family : {clipping_topics, backface_topics, bsp_topics, zbuffer_topics, precision_topics, scanline_topics, raycast_topics,
                             culling_topics, hiz_topics, depth_sort_topics,
-                            portal_topics, horizon_topics, compositing_topics})
+                            portal_topics, horizon_topics, compositing_topics, perspective_topics})
             for (Topic& topic : family()) t.push_back(std::move(topic));
         return t;
     }();

@@ -108,5 +108,6 @@ std::vector<Topic> hiz_topics();
 std::vector<Topic> portal_topics();
 std::vector<Topic> horizon_topics();
 std::vector<Topic> compositing_topics();
+std::vector<Topic> perspective_topics();
 
 }  // namespace hsr::viz::practice
