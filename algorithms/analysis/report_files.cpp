@@ -39,6 +39,10 @@ const char* family_title(const std::string& f) {
     if (f == "portals") return "Cells and portals: PVS and frustum slack, missed cells and polygons";
     if (f == "culling") return "Culling pipeline: pixels lost, per scene";
     if (f == "horizon") return "Floating horizon: the curves' length drawn wrong, per screen resolution";
+    if (f == "compositing") return "Alpha compositing: colour error against GMP rationals, per storage and order";
+    if (f == "hidden lines") return "Roberts' hidden lines: sampled edge points against rays in world space";
+    if (f == "perspective transform") return "Occluding pairs: before and after the perspective transform, against GMP rationals";
+    if (f == "A-buffer") return "A-buffer: colour error against supersampled rays, per mask size";
     return "Other";
 }
 

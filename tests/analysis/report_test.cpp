@@ -127,6 +127,7 @@ TEST_CASE("occluding pairs: both ways decide every pair as exact rationals do; b
         CHECK(on_projector >= points / 4);  // the family puts a quarter of its pairs of neighbours on one projector
         CHECK(divisions == (m.method.find("before") != std::string::npos ? 4 * pairs : 3 * points));
     }
+    CHECK(analysis::report_markdown(rows).find("## Occluding pairs: ") != std::string::npos);
 }
 
 TEST_CASE("the A-buffer: the error against supersampled rays falls with the mask size", "[analysis][abuffer]") {
@@ -137,7 +138,9 @@ TEST_CASE("the A-buffer: the error against supersampled rays falls with the mask
         CHECK(rows[k + 1].error < rows[k].error);
     }
     CHECK(rows[3].error < rows[0].error / 3);  // 8 × 8 against one sample
+    CHECK(rows[3].wrong < rows[0].wrong);      // fewer pixels off by more than 2/255
     CHECK(rows[0].method == "A-buffer, 1 × 1 mask");
+    CHECK(analysis::report_markdown(rows).find("## A-buffer: ") != std::string::npos);  // a section of its own, not "Other"
 }
 
 TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not, the early stop saves layers", "[analysis][compositing]") {
