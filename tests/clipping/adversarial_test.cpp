@@ -415,7 +415,7 @@ TEST_CASE("the regression cases of exact clipping: a cut, then a face within an 
     }
 }
 
-TEST_CASE("coordinates a clipper cannot take are refused, naming the coordinate; up to the limit nothing is NaN", "[clipping][limits]") {
+TEST_CASE("coordinates a clipper cannot take are refused, naming the coordinate, up to the limit nothing is NaN", "[clipping][limits]") {
     // issue 19 bug 5b: w − z overflowed; CS answered NaN endpoints and LB "inside" with endpoints outside the volume
     const Vec4 a{0, 0, 1.5e308, 1e308}, b{0, 0, -1.5e308, 1e308};
     CHECK_THROWS_WITH(cohen_sutherland({1, a, b}).run_to_end(), Catch::Contains("segment 1 p1.z") && Catch::Contains("1e+307"));

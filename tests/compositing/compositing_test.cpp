@@ -81,7 +81,7 @@ TEST_CASE("the naive blend of straight colours is associative only when the midd
     CHECK(differ > 250);  // all but triples whose colours happen to agree
 }
 
-TEST_CASE("back to front and front to back give one colour; the early stop leaves out no more than 1 − A", "[compositing]") {
+TEST_CASE("back to front and front to back give one colour, the early stop leaves out no more than 1 − A", "[compositing]") {
     std::mt19937 rng(6);
     for (int k = 0; k < 200; ++k) {
         std::vector<Layer> layers;

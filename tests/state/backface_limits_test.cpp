@@ -47,7 +47,7 @@ TEST_CASE("On closed convex solids seen from outside, the culled faces are exact
     }
 }
 
-TEST_CASE("A non-convex closed solid keeps faces the eye never sees; an open box culls faces it sees",
+TEST_CASE("A non-convex closed solid keeps faces the eye never sees, an open box culls faces it sees",
           "[culling][backface][raycast]") {
     const Scene scene = load_scene(std::string(HSR_SOURCE_DIR) + "/assets/scenes/backface_limits.toml");
     const BackfaceView v = culled_view(scene, BackfaceTest::view_vector);

@@ -185,7 +185,7 @@ TEST_CASE("check reports every problem of a file, each with its line and the fie
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("the student's language is kept across lessons; the narration follows it where the lesson has it", "[lesson][classroom]") {
+TEST_CASE("the student's language is kept across lessons, the narration follows it where the lesson has it", "[lesson][classroom]") {
     auto german = make_session(load_lesson(HSR_SOURCE_DIR "/lessons/01_cohen_sutherland.toml"));
     // a lesson narrated only in English (every shipped lesson is narrated in English and German)
     const auto dir = std::filesystem::temp_directory_path() / "hsrviz_english_only_test";

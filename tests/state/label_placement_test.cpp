@@ -58,7 +58,7 @@ TEST_CASE("in a crowd, labels with no free spot are left out after the first few
     for (const Placed& q : place_labels(spread, 16)) CHECK(q.shown);
 }
 
-TEST_CASE("no label is placed on a part of the view an inset covers; a point under one is labelled above it", "[labels]") {
+TEST_CASE("no label is placed on a part of the view an inset covers, a point under one is labelled above it", "[labels]") {
     const ViewRect inset{20, 380, 300, 660};
     // the usual spot (upper right) would reach into the inset: another spot is taken
     const LabelBox beside{10, 390, 60, 14};

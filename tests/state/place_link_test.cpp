@@ -13,7 +13,7 @@
 
 using namespace hsr::viz;
 
-TEST_CASE("a link names a lesson, a step, a language and the projector; a bad part is named and left out", "[state][link]") {
+TEST_CASE("a link names a lesson, a step, a language and the projector, a bad part is named and left out", "[state][link]") {
     std::string problems;
     PlaceLink link = read_place_link("#lesson=05_bsp_traversal&step=12", problems);
     CHECK(problems.empty());

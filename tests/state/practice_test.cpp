@@ -418,7 +418,7 @@ TEST_CASE("practice topics: ids the command line takes, titles that fit the prac
     }
 }
 
-TEST_CASE("practice: the same series gives the same exercises, byte for byte; another series others", "[practice]") {
+TEST_CASE("practice: the same series gives the same exercises, byte for byte, another series others", "[practice]") {
     namespace p = hsr::viz::practice;
     for (const p::Topic& topic : p::topics()) {
         for (std::uint64_t i = 0; i < 20; ++i) {

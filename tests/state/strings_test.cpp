@@ -97,7 +97,7 @@ TEST_CASE("a template names its values: filled in any order, a missing one left 
     CHECK(value_names("{b} and {a} and {b}") == std::vector<std::string>{"a", "b"});
 }
 
-TEST_CASE("a language's missing, extra or differently filled keys are named; its gaps speak English", "[strings]") {
+TEST_CASE("a language's missing, extra or differently filled keys are named, its gaps speak English", "[strings]") {
     Strings s = Strings::from_texts({{"en", "[t]\nplay = \"Play\"\nstep = \"step {step} of {steps}\"\nend = \"End\"\n"},
                                      {"fr", "[t]\nplay = \"Jouer\"\nstep = \"étape {n} sur {steps}\"\nextra = \"?\"\n"}});
     const auto& p = s.problems();
@@ -115,7 +115,7 @@ TEST_CASE("a language's missing, extra or differently filled keys are named; its
     CHECK(s.text("t.play") == "Play");
 }
 
-TEST_CASE("a catalogue with a syntax error is left out and named with its line; the window speaks English", "[strings]") {
+TEST_CASE("a catalogue with a syntax error is left out and named with its line, the window speaks English", "[strings]") {
     Strings s = Strings::from_texts({{"en", "[t]\nplay = \"Play\"\n"}, {"de", "[t]\nplay = \"Abspielen\n"}});
     REQUIRE_FALSE(s.problems().empty());
     CHECK_THAT(s.problems().front(), Catch::Contains("de.toml:2"));
@@ -158,7 +158,7 @@ TEST_CASE("the catalogue's English copy of the practice questions is the code's 
         }
 }
 
-TEST_CASE("practice asks in the language the window speaks; its answers and JSON stay English", "[strings]") {
+TEST_CASE("practice asks in the language the window speaks, its answers and JSON stay English", "[strings]") {
     Strings s = Strings::load(HSR_SOURCE_DIR "/assets/strings");
     const std::regex unfilled(R"(\{[a-z_0-9]+[}?])");
     const auto in = [&](const practice::Wording& w) { return practice::said(w, [&](const hsr::algo::Saying& t) { return s.pattern("exercise", t); }); };
@@ -186,7 +186,7 @@ TEST_CASE("practice asks in the language the window speaks; its answers and JSON
             }
 }
 
-TEST_CASE("the machines narrate in the language the window speaks; their traces stay English", "[strings]") {
+TEST_CASE("the machines narrate in the language the window speaks, their traces stay English", "[strings]") {
     Strings& strings = window_strings();
     const std::string before = strings.language();
     const std::regex unfilled(R"(\{[a-z_]+[}?])");
