@@ -26,6 +26,7 @@ struct Measurement {
     std::string wrong_name;
     bool wrong_must_be_zero = false;
     std::string extra;        // what else the row says: splits, slack, primitives left out per stage
+    double size = 0;          // a sweep's input size at this row (the complexity table's P or p); 0: no sweep
 };
 
 // How far a measurement has come, and a request to stop it: the window runs R's measurement on a thread of its own
@@ -59,7 +60,13 @@ std::vector<Measurement> measure_horizon(const ReportOptions& o);  // the floati
 std::vector<Measurement> measure_compositing(const ReportOptions& o);  // alpha compositing per storage, against GMP
 std::vector<Measurement> measure_roberts(const ReportOptions& o);  // Roberts' hidden lines per body count, against rays
 std::vector<Measurement> measure_perspective(const ReportOptions& o);
-std::vector<Measurement> measure_abuffer(const ReportOptions& o);  // the A-buffer per mask size, against supersampled rays  // occluding pairs before and after the transform, against GMP
+std::vector<Measurement> measure_abuffer(const ReportOptions& o);  // the A-buffer per mask size, against supersampled rays
+// The Greek notes' complexity table measured: every hidden-surface algorithm's run time against the primitives P
+// (family "complexity (P)") and against the pixels p (family "complexity (p)"), each row one size, with the fitted
+// log–log slope of its method beside the lecture's exponent.
+std::vector<Measurement> measure_complexity(const ReportOptions& o);
+// The least-squares slope of log10 y against log10 x (the measured exponent of y = c·x^k); 0 with fewer than 2 points.
+double fitted_slope(const std::vector<std::pair<double, double>>& xy);  // occluding pairs before and after the transform, against GMP
 // Every family's measurement, in the report's order (the command line's report and measure_all run these).
 using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
 std::vector<MeasureFamily> report_families();

@@ -43,6 +43,8 @@ const char* family_title(const std::string& f) {
     if (f == "hidden lines") return "Roberts' hidden lines: sampled edge points against rays in world space";
     if (f == "perspective transform") return "Occluding pairs: before and after the perspective transform, against GMP rationals";
     if (f == "A-buffer") return "A-buffer: colour error against supersampled rays, per mask size";
+    if (f == "complexity (P)") return "The complexity table: run time against the primitives P (log–log)";
+    if (f == "complexity (p)") return "The complexity table: run time against the pixels p (log–log)";
     return "Other";
 }
 
@@ -73,11 +75,11 @@ std::string report_markdown(const std::vector<Measurement>& rows) {
 }
 
 std::string report_csv(const std::vector<Measurement>& rows) {
-    std::string csv = "family,method,setting,median_ms,error,error_name,wrong,wrong_name,wrong_must_be_zero,extra\n";
+    std::string csv = "family,method,setting,median_ms,error,error_name,wrong,wrong_name,wrong_must_be_zero,extra,size\n";
     for (const Measurement& m : rows)
         csv += csv_field(m.family) + "," + csv_field(m.method) + "," + csv_field(m.setting) + "," + number(m.median_ms) + "," +
                number(m.error) + "," + csv_field(m.error_name) + "," + std::to_string(m.wrong) + "," + csv_field(m.wrong_name) + "," +
-               (m.wrong_must_be_zero ? "true" : "false") + "," + csv_field(m.extra) + "\n";
+               (m.wrong_must_be_zero ? "true" : "false") + "," + csv_field(m.extra) + "," + (m.size > 0 ? number(m.size) : "") + "\n";
     return csv;
 }
 
@@ -182,6 +184,66 @@ std::string error_chart_svg(const std::vector<Measurement>& rows, const std::str
                "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text>\n";
     }
     return svg + "</svg>\n";
+}
+
+std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::string& family) {
+    // One line per method through its sizes, both axes log10; the legend gives each method's measured exponent.
+    std::map<std::string, std::vector<const Measurement*>> lines;
+    std::vector<std::string> methods;
+    double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
+    for (const Measurement& m : rows) {
+        if (m.family != family || m.size <= 0) continue;
+        if (lines[m.method].empty()) methods.push_back(m.method);
+        lines[m.method].push_back(&m);
+        const double x = std::log10(m.size), y = std::log10(std::max(m.median_ms, 1e-6));
+        x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+    }
+    if (methods.empty()) x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
+    x_lo = std::floor(x_lo), x_hi = std::max(std::ceil(x_hi), x_lo + 1);
+    y_lo = std::floor(y_lo), y_hi = std::max(std::ceil(y_hi), y_lo + 1);
+    const int width = 900, height = 460, left = 70, right = 340, top = 40, bottom = 50;
+    const auto x_of = [&](double x) { return left + (x - x_lo) / (x_hi - x_lo) * (width - left - right); };
+    const auto y_of = [&](double y) { return top + (y_hi - y) / (y_hi - y_lo) * (height - top - bottom); };
+    static const char* palette[] = {"#e69f00", "#56b4e9", "#009e73", "#d55e00", "#0072b2", "#cc79a7", "#f0e442", "#000000"};
+    const bool against_P = family.find("(P)") != std::string::npos;
+    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" + std::to_string(height) +
+                      "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(family_title(family)) + "</text>\n";
+    for (double x = x_lo; x <= x_hi + 1e-9; x += 1)
+        svg += "<line x1=\"" + number(x_of(x)) + "\" y1=\"" + std::to_string(top) + "\" x2=\"" + number(x_of(x)) + "\" y2=\"" +
+               std::to_string(height - bottom) + "\" stroke=\"#ddd\"/><text x=\"" + number(x_of(x)) + "\" y=\"" + std::to_string(height - bottom + 16) +
+               "\" text-anchor=\"middle\">1e" + std::to_string(int(x)) + "</text>\n";
+    for (double y = y_lo; y <= y_hi + 1e-9; y += 1)
+        svg += "<line x1=\"" + std::to_string(left) + "\" y1=\"" + number(y_of(y)) + "\" x2=\"" + std::to_string(width - right) + "\" y2=\"" +
+               number(y_of(y)) + "\" stroke=\"#ddd\"/><text x=\"" + std::to_string(left - 6) + "\" y=\"" + number(y_of(y) + 4) +
+               "\" text-anchor=\"end\">" + number(std::pow(10.0, y)) + "</text>\n";
+    svg += "<text x=\"" + number((left + width - right) / 2.0) + "\" y=\"" + std::to_string(height - 12) + "\" text-anchor=\"middle\">" +
+           (against_P ? "primitives P (log)" : "pixels p (log)") + "</text>\n";
+    svg += "<text transform=\"translate(16," + number((top + height - bottom) / 2.0) +
+           ") rotate(-90)\" text-anchor=\"middle\">median run time (ms, log)</text>\n";
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+        const char* colour = palette[k % 8];
+        std::string points;
+        for (const Measurement* m : lines[methods[k]]) {
+            const double x = x_of(std::log10(m->size)), y = y_of(std::log10(std::max(m->median_ms, 1e-6)));
+            points += number(x) + "," + number(y) + " ";
+            svg += "<g><title>" + xml_text(m->method + ", " + m->setting + ": " + number(m->median_ms) + " ms") + "</title><circle cx=\"" +
+                   number(x) + "\" cy=\"" + number(y) + "\" r=\"4\" fill=\"" + colour + "\"/></g>\n";
+        }
+        svg += "<polyline points=\"" + points + "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
+        const Measurement& first = *lines[methods[k]].front();
+        const int y = top + 8 + int(k) * 36;
+        svg += "<line x1=\"" + std::to_string(width - right + 12) + "\" y1=\"" + std::to_string(y) + "\" x2=\"" + std::to_string(width - right + 30) +
+               "\" y2=\"" + std::to_string(y) + "\" stroke=\"" + colour + "\" stroke-width=\"3\"/><text x=\"" + std::to_string(width - right + 36) +
+               "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text><text x=\"" + std::to_string(width - right + 36) +
+               "\" y=\"" + std::to_string(y + 20) + "\" fill=\"#444\">" + xml_text(first.extra.substr(0, first.extra.find(';'))) + "</text>\n";
+    }
+    return svg + "</svg>\n";
+}
+
+std::string chart_svg(const std::vector<Measurement>& rows, const std::string& family) {
+    const bool sweep = std::any_of(rows.begin(), rows.end(), [&](const Measurement& m) { return m.family == family && m.size > 0; });
+    return sweep ? growth_chart_svg(rows, family) : error_chart_svg(rows, family);
 }
 
 }  // namespace hsr::analysis

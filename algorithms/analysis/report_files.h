@@ -23,5 +23,9 @@ struct ExtremeCase {
 std::vector<ExtremeCase> run_extreme_cases(const std::string& dir);
 std::string extreme_markdown(const std::vector<ExtremeCase>& cases);
 std::string error_chart_svg(const std::vector<Measurement>& rows, const std::string& family);
+// A sweep's chart (rows with a size): run time against size, both axes logarithmic, one line per method.
+std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::string& family);
+// The family's chart: growth_chart_svg for a sweep, else error_chart_svg.
+std::string chart_svg(const std::vector<Measurement>& rows, const std::string& family);
 
 }  // namespace hsr::analysis

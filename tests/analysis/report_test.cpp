@@ -4,6 +4,7 @@
 // 2·10^7), the counts that must be 0 are, and the files carry every row.
 #include <algorithm>
 #include <array>
+#include <map>
 #include <random>
 
 #include <cstdio>
@@ -113,7 +114,7 @@ TEST_CASE("Roberts' hidden lines: no sampled edge point wrong, tests growing as 
     CHECK(tests[2] > 10 * tests[0]);  // 4 times the bodies: about 16 times the tests
 }
 
-TEST_CASE("occluding pairs: both ways decide every pair as exact rationals do; before divides per pair, after per point", "[analysis][perspective]") {
+TEST_CASE("occluding pairs: both ways decide every pair as exact rationals do, before divides per pair, after per point", "[analysis][perspective]") {
     const auto rows = analysis::measure_perspective(quick);
     REQUIRE(rows.size() == 4);  // two point counts, each way
     for (const auto& m : rows) {
@@ -158,7 +159,7 @@ TEST_CASE("alpha compositing: double is exact to 1e-9 of a step, 8 bits are not,
     CHECK(layers < 8);
 }
 
-TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels; every splitter rule is there", "[analysis][hsr]") {
+TEST_CASE("BSP and depth sort on 60 triangles agree with the ray cast but for a few edge pixels, every splitter rule is there", "[analysis][hsr]") {
     const auto rows = analysis::measure_hidden_surfaces(quick);
     for (const char* method : {"bsp first", "bsp balanced", "bsp fewest-splits", "bsp weighted", "depth sort",
                                "scan line (one-line z-buffer, int24)", "scan line (classic: planes where spans begin)"}) {
@@ -230,4 +231,37 @@ TEST_CASE("projection's shortcut for polygons wholly inside gives the clipper's 
         for (std::size_t i = 0; i < p.size(); ++i) CHECK(clipped[i] == p[(i + 7) % p.size()]);
         CHECK(fast.vertices.size() >= 3);
     }
+}
+
+TEST_CASE("the complexity table: the fitted slope is the exponent, and the sweep gives every algorithm its sizes", "[analysis][complexity]") {
+    // the fit itself, on exact powers: y = 3·x² and y = 5·x
+    std::vector<std::pair<double, double>> square, line;
+    for (const double x : {10.0, 100.0, 1000.0}) square.emplace_back(x, 3 * x * x), line.emplace_back(x, 5 * x);
+    CHECK(std::abs(analysis::fitted_slope(square) - 2) < 1e-12);
+    CHECK(std::abs(analysis::fitted_slope(line) - 1) < 1e-12);
+    CHECK(analysis::fitted_slope({{10.0, 1.0}}) == 0);  // one point: no slope
+    // the sweep (its exponents are figures the report prints, not asserted: run times are noisy)
+    const auto rows = analysis::measure_complexity(quick);
+    for (const std::string family : {"complexity (P)", "complexity (p)"}) {
+        std::map<std::string, std::vector<const analysis::Measurement*>> by_method;
+        for (const auto& m : rows)
+            if (m.family == family) by_method[m.method].push_back(&m);
+        CHECK(by_method.size() == 4);  // z-buffer, BSP, depth sort, ray casting
+        for (const auto& [method, ms] : by_method) {
+            INFO(family << ", " << method);
+            REQUIRE(ms.size() >= 2);
+            for (std::size_t k = 1; k < ms.size(); ++k) CHECK(ms[k]->size > ms[k - 1]->size);  // rising sizes
+            for (const auto* m : ms) {
+                CHECK(m->error == ms.front()->error);  // one measured exponent per method, on each of its rows
+                CHECK(m->extra.find("the notes: O(") != std::string::npos);
+            }
+        }
+        const std::string svg = analysis::chart_svg(rows, family);
+        CHECK(svg.find("log–log") != std::string::npos);
+        CHECK(std::count(svg.begin(), svg.end(), '\n') > 20);
+        std::size_t polylines = 0;
+        for (std::size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) ++polylines;
+        CHECK(polylines == 4);
+    }
+    CHECK(analysis::report_markdown(rows).find("## The complexity table: run time against the primitives P") != std::string::npos);
 }

@@ -41,8 +41,7 @@ int run_report(const ReportOptions& o) {
                                       analysis::extreme_markdown(extremes));
     write_file(dir / "report.csv", analysis::report_csv(rows));
     for (const std::string& family : analysis::families_of(rows))
-        write_file(dir / (family + ".svg"), "<!-- hsrviz " HSR_VERSION ": " + family + ", error against run time -->\n" +
-                                                analysis::error_chart_svg(rows, family));
+        write_file(dir / (family + ".svg"), "<!-- hsrviz " HSR_VERSION ": " + family + " -->\n" + analysis::chart_svg(rows, family));
 
     int violations = 0;
     for (const auto& m : rows)
