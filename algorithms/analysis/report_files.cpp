@@ -61,8 +61,10 @@ std::string report_markdown(const std::vector<Measurement>& rows) {
     std::string md;
     for (const std::string& family : families_of(rows)) {
         const auto first = std::find_if(rows.begin(), rows.end(), [&](const Measurement& m) { return m.family == family; });
-        md += "## " + std::string(family_title(family)) + "\n\nError: " + first->error_name + ". ![error against run time](" +
-              family + ".svg)\n\n| method | setting | median ms | error | " + first->wrong_name + " | notes |\n|---|---|---:|---:|---:|---|\n";
+        const bool sweep = first->size > 0;  // a chart of run time against size, else of error against run time
+        md += "## " + std::string(family_title(family)) + "\n\nError: " + first->error_name + ". ![" +
+              (sweep ? "run time against size" : "error against run time") + "](" + family + ".svg)\n\n| method | setting | median ms | error | " +
+              (first->wrong_name.empty() ? std::string("—") : first->wrong_name) + " | notes |\n|---|---|---:|---:|---:|---|\n";
         for (const Measurement& m : rows) {
             if (m.family != family) continue;
             const std::string wrong = std::to_string(m.wrong) + (m.wrong_must_be_zero ? (m.wrong == 0 ? " (must be 0: ok)" : " (must be 0: VIOLATED)") : "");
@@ -232,11 +234,14 @@ std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::st
         }
         svg += "<polyline points=\"" + points + "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
         const Measurement& first = *lines[methods[k]].front();
-        const int y = top + 8 + int(k) * 36;
+        const int y = top + 8 + int(k) * 52;
+        const std::size_t cut = first.extra.find("; ");
+        const std::string measured = first.extra.substr(0, cut), claimed = cut == std::string::npos ? "" : first.extra.substr(cut + 2);
         svg += "<line x1=\"" + std::to_string(width - right + 12) + "\" y1=\"" + std::to_string(y) + "\" x2=\"" + std::to_string(width - right + 30) +
                "\" y2=\"" + std::to_string(y) + "\" stroke=\"" + colour + "\" stroke-width=\"3\"/><text x=\"" + std::to_string(width - right + 36) +
                "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text><text x=\"" + std::to_string(width - right + 36) +
-               "\" y=\"" + std::to_string(y + 20) + "\" fill=\"#444\">" + xml_text(first.extra.substr(0, first.extra.find(';'))) + "</text>\n";
+               "\" y=\"" + std::to_string(y + 20) + "\" fill=\"#444\">" + xml_text(measured) + "</text><text x=\"" + std::to_string(width - right + 36) +
+               "\" y=\"" + std::to_string(y + 36) + "\" fill=\"#444\">" + xml_text(claimed) + "</text>\n";
     }
     return svg + "</svg>\n";
 }
