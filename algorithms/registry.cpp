@@ -37,6 +37,8 @@ constexpr std::array registry = {
     AlgorithmInfo{"perspective_transform", "The perspective transform: occluding pairs before and after it", 2,
                   PerspectiveMachine::occluding_pairs},
     AlgorithmInfo{"a_buffer", "The A-buffer: fragment lists with coverage masks, resolved front to back", 3, ABufferMachine::resolve},
+    AlgorithmInfo{"general_forms", "Object space and image space: the general forms of hidden-surface elimination", 1,
+                  FormsMachine::general_forms},
     AlgorithmInfo{"alpha_compositing", "Alpha compositing: premultiplied and straight, over, Porter–Duff", 2, CompositeMachine::alpha},
 };
 

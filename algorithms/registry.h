@@ -29,11 +29,12 @@ enum class CompositeMachine : std::uint8_t { alpha };
 enum class RobertsMachine : std::uint8_t { hidden_lines };
 enum class PerspectiveMachine : std::uint8_t { occluding_pairs };
 enum class ABufferMachine : std::uint8_t { resolve };
+enum class FormsMachine : std::uint8_t { general_forms };  // object space and image space, side by side
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
                              ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine,
-                             RobertsMachine, PerspectiveMachine, ABufferMachine>;
+                             RobertsMachine, PerspectiveMachine, ABufferMachine, FormsMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

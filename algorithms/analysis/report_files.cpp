@@ -188,21 +188,31 @@ std::string error_chart_svg(const std::vector<Measurement>& rows, const std::str
     return svg + "</svg>\n";
 }
 
-std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::string& family) {
-    // One line per method through its sizes, both axes log10; the legend gives each method's measured exponent.
-    std::map<std::string, std::vector<const Measurement*>> lines;
-    std::vector<std::string> methods;
+GrowthLines growth_lines(const std::vector<Measurement>& rows, const std::string& family) {
+    GrowthLines g;
     double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
     for (const Measurement& m : rows) {
         if (m.family != family || m.size <= 0) continue;
-        if (lines[m.method].empty()) methods.push_back(m.method);
-        lines[m.method].push_back(&m);
+        auto line = std::find_if(g.lines.begin(), g.lines.end(), [&](const GrowthLine& l) { return l.method == m.method; });
+        if (line == g.lines.end()) {
+            const std::size_t cut = m.extra.find("; ");
+            g.lines.push_back({m.method, {}, m.extra.substr(0, cut), cut == std::string::npos ? "" : m.extra.substr(cut + 2)});
+            line = g.lines.end() - 1;
+        }
+        line->rows.push_back(&m);
         const double x = std::log10(m.size), y = std::log10(std::max(m.median_ms, 1e-6));
         x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x), y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
     }
-    if (methods.empty()) x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
-    x_lo = std::floor(x_lo), x_hi = std::max(std::ceil(x_hi), x_lo + 1);
-    y_lo = std::floor(y_lo), y_hi = std::max(std::ceil(y_hi), y_lo + 1);
+    if (g.lines.empty()) return g;
+    g.x_lo = std::floor(x_lo), g.x_hi = std::max(std::ceil(x_hi), g.x_lo + 1);
+    g.y_lo = std::floor(y_lo), g.y_hi = std::max(std::ceil(y_hi), g.y_lo + 1);
+    return g;
+}
+
+std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::string& family) {
+    // One line per method through its sizes, both axes log10; the legend gives each method's measured exponent.
+    const GrowthLines g = growth_lines(rows, family);
+    const double x_lo = g.x_lo, x_hi = g.x_hi, y_lo = g.y_lo, y_hi = g.y_hi;
     const int width = 900, height = 460, left = 70, right = 340, top = 40, bottom = 50;
     const auto x_of = [&](double x) { return left + (x - x_lo) / (x_hi - x_lo) * (width - left - right); };
     const auto y_of = [&](double y) { return top + (y_hi - y) / (y_hi - y_lo) * (height - top - bottom); };
@@ -223,25 +233,23 @@ std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::st
            (against_P ? "primitives P (log)" : "pixels p (log)") + "</text>\n";
     svg += "<text transform=\"translate(16," + number((top + height - bottom) / 2.0) +
            ") rotate(-90)\" text-anchor=\"middle\">median run time (ms, log)</text>\n";
-    for (std::size_t k = 0; k < methods.size(); ++k) {
+    for (std::size_t k = 0; k < g.lines.size(); ++k) {
+        const GrowthLine& line = g.lines[k];
         const char* colour = palette[k % 8];
         std::string points;
-        for (const Measurement* m : lines[methods[k]]) {
+        for (const Measurement* m : line.rows) {
             const double x = x_of(std::log10(m->size)), y = y_of(std::log10(std::max(m->median_ms, 1e-6)));
             points += number(x) + "," + number(y) + " ";
             svg += "<g><title>" + xml_text(m->method + ", " + m->setting + ": " + number(m->median_ms) + " ms") + "</title><circle cx=\"" +
                    number(x) + "\" cy=\"" + number(y) + "\" r=\"4\" fill=\"" + colour + "\"/></g>\n";
         }
         svg += "<polyline points=\"" + points + "\" fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
-        const Measurement& first = *lines[methods[k]].front();
         const int y = top + 8 + int(k) * 52;
-        const std::size_t cut = first.extra.find("; ");
-        const std::string measured = first.extra.substr(0, cut), claimed = cut == std::string::npos ? "" : first.extra.substr(cut + 2);
         svg += "<line x1=\"" + std::to_string(width - right + 12) + "\" y1=\"" + std::to_string(y) + "\" x2=\"" + std::to_string(width - right + 30) +
                "\" y2=\"" + std::to_string(y) + "\" stroke=\"" + colour + "\" stroke-width=\"3\"/><text x=\"" + std::to_string(width - right + 36) +
-               "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text><text x=\"" + std::to_string(width - right + 36) +
-               "\" y=\"" + std::to_string(y + 20) + "\" fill=\"#444\">" + xml_text(measured) + "</text><text x=\"" + std::to_string(width - right + 36) +
-               "\" y=\"" + std::to_string(y + 36) + "\" fill=\"#444\">" + xml_text(claimed) + "</text>\n";
+               "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(line.method) + "</text><text x=\"" + std::to_string(width - right + 36) +
+               "\" y=\"" + std::to_string(y + 20) + "\" fill=\"#444\">" + xml_text(line.measured) + "</text><text x=\"" + std::to_string(width - right + 36) +
+               "\" y=\"" + std::to_string(y + 36) + "\" fill=\"#444\">" + xml_text(line.claimed) + "</text>\n";
     }
     return svg + "</svg>\n";
 }

@@ -14,6 +14,7 @@
 #include "portals/portal_render.h"
 #include "raycast/ray_cast.h"
 #include "abuffer/a_buffer.h"
+#include "forms/general_forms.h"
 #include "perspective/perspective_transform.h"
 #include "roberts/hidden_lines.h"
 #include "zbuffer/classic_scanline.h"
@@ -44,6 +45,7 @@ inline void run_machines(const algo::Scene& s) {
     refused_or_done([&] { (void)composite(layers_along(s, centre_ray(s.camera))).run_to_end(); });
     refused_or_done([&] { (void)roberts(s, {.max_tests = 20000}).run_to_end(); });
     refused_or_done([&] { (void)perspective_transform(s, {.max_comparisons = 20000}).run_to_end(); });
+    refused_or_done([&] { (void)general_forms(s, {.pixels = 24, .max_steps = 20000}).run_to_end(); });
     refused_or_done([&] { (void)a_buffer(s, {24, 18}, {.mask_size = 4, .max_fragments = 20000}).run_to_end(); });
     refused_or_done([&] {
         ScanLineOptions o = scan_line_options(s, {16, 12}, DepthFormat::int24);

@@ -12,6 +12,7 @@
 #include "screens/composite_screen.h"
 #include "screens/culling_screen.h"
 #include "screens/depth_sort_screen.h"
+#include "screens/forms_screen.h"
 #include "screens/horizon_screen.h"
 #include "screens/perspective_screen.h"
 #include "screens/portal_screen.h"

@@ -25,6 +25,7 @@
 #include "state/composite_session.h"
 #include "state/culling_session.h"
 #include "state/depth_sort_session.h"
+#include "state/forms_session.h"
 #include "state/horizon_session.h"
 #include "state/perspective_session.h"
 #include "state/portal_session.h"
@@ -52,7 +53,7 @@ struct SessionTypes {
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
                                  HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
-                                 CompositeSession, RobertsSession, PerspectiveSession, ABufferSession>;
+                                 CompositeSession, RobertsSession, PerspectiveSession, ABufferSession, FormsSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -71,6 +72,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](RobertsMachine) { return f(Family<RobertsSession>{}); },
                           [&](PerspectiveMachine) { return f(Family<PerspectiveSession>{}); },
                           [&](ABufferMachine) { return f(Family<ABufferSession>{}); },
+                          [&](FormsMachine) { return f(Family<FormsSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});
