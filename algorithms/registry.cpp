@@ -32,6 +32,7 @@ constexpr std::array registry = {
     AlgorithmInfo{"raycast_brute", "Ray casting: every primitive", 1, Acceleration::none},
     AlgorithmInfo{"raycast_grid", "Ray casting through a regular grid", 3, Acceleration::grid},
     AlgorithmInfo{"raycast_octree", "Ray casting through an octree", 3, Acceleration::octree},
+    AlgorithmInfo{"raycast_bvh", "Ray casting through a bounding-volume hierarchy", 3, Acceleration::bvh},
     AlgorithmInfo{"floating_horizon", "The floating horizon for terrain", 2, HorizonMachine::floating_horizon},
     AlgorithmInfo{"roberts", "Roberts' hidden lines: each edge against every convex body", 3, RobertsMachine::hidden_lines},
     AlgorithmInfo{"perspective_transform", "The perspective transform: occluding pairs before and after it", 2,
@@ -39,6 +40,8 @@ constexpr std::array registry = {
     AlgorithmInfo{"a_buffer", "The A-buffer: fragment lists with coverage masks, resolved front to back", 3, ABufferMachine::resolve},
     AlgorithmInfo{"general_forms", "Object space and image space: the general forms of hidden-surface elimination", 1,
                   FormsMachine::general_forms},
+    AlgorithmInfo{"intersection_test", "IntersectionTest(M): a ray against a hierarchy of bounding volumes (AABB, sphere, OBB, k-DOP, hulls)", 3,
+                  IntersectionMachine::hierarchical},
     AlgorithmInfo{"alpha_compositing", "Alpha compositing: premultiplied and straight, over, Porter–Duff", 2, CompositeMachine::alpha},
 };
 

@@ -30,11 +30,12 @@ enum class RobertsMachine : std::uint8_t { hidden_lines };
 enum class PerspectiveMachine : std::uint8_t { occluding_pairs };
 enum class ABufferMachine : std::uint8_t { resolve };
 enum class FormsMachine : std::uint8_t { general_forms };  // object space and image space, side by side
+enum class IntersectionMachine : std::uint8_t { hierarchical };  // IntersectionTest(M) over a bounding-volume hierarchy
 
 // One alternative per family.
 using Machine = std::variant<ClipAlgorithm, BspMachine, BackfaceTest, ZBufferMachine, Acceleration, ScanLineMachine,
                              ZMergeMachine, DepthSortMachine, PortalMachine, CullingMachine, HorizonMachine, CompositeMachine,
-                             RobertsMachine, PerspectiveMachine, ABufferMachine, FormsMachine>;
+                             RobertsMachine, PerspectiveMachine, ABufferMachine, FormsMachine, IntersectionMachine>;
 
 struct AlgorithmInfo {
     std::string_view id;          // as lessons and the command line name it

@@ -5,6 +5,7 @@
 #include "bsp/bsp_events.h"
 #include "clipping/clip_events.h"
 #include "forms/forms_events.h"
+#include "volumes/intersection_events.h"
 #include "culling/backface.h"
 #include "culling/culling_events.h"
 #include "culling/hiz.h"
@@ -25,7 +26,7 @@ namespace hsr::algo {
 std::vector<std::span<const Saying>> machine_sayings() {
     return {backface_sayings(), bsp_sayings(),      clipping_sayings(), culling_sayings(),  depth_sort_sayings(), hiz_sayings(),
             occluder_sayings(), portal_sayings(),   ray_cast_sayings(), scanline_sayings(), zbuffer_sayings(),    zmerge_sayings(),
-            horizon_sayings(), composite_sayings(), roberts_sayings(), transform_sayings(), abuffer_sayings(), forms_sayings()};
+            horizon_sayings(), composite_sayings(), roberts_sayings(), transform_sayings(), abuffer_sayings(), forms_sayings(), intersection_sayings()};
 }
 
 }  // namespace hsr::algo

@@ -44,7 +44,7 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
 }
 
 std::vector<MeasureFamily> report_families() {
-    return {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling, measure_horizon, measure_compositing, measure_roberts, measure_perspective, measure_abuffer, measure_complexity};
+    return {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling, measure_horizon, measure_compositing, measure_roberts, measure_perspective, measure_abuffer, measure_intersection, measure_complexity};
 }
 
 std::vector<Measurement> measure_all(const ReportOptions& o) {

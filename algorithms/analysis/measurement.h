@@ -61,6 +61,8 @@ std::vector<Measurement> measure_compositing(const ReportOptions& o);  // alpha 
 std::vector<Measurement> measure_roberts(const ReportOptions& o);  // Roberts' hidden lines per body count, against rays
 std::vector<Measurement> measure_perspective(const ReportOptions& o);
 std::vector<Measurement> measure_abuffer(const ReportOptions& o);  // the A-buffer per mask size, against supersampled rays
+// IntersectionTest(M) per kind of bounding volume: false alarms per ray, against a test of every polygon
+std::vector<Measurement> measure_intersection(const ReportOptions& o);
 // The Greek notes' complexity table measured: every hidden-surface algorithm's run time against the primitives P
 // (family "complexity (P)") and against the pixels p (family "complexity (p)"), each row one size, with the fitted
 // log–log slope of its method beside the lecture's exponent.

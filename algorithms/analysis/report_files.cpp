@@ -43,6 +43,8 @@ const char* family_title(const std::string& f) {
     if (f == "hidden lines") return "Roberts' hidden lines: sampled edge points against rays in world space";
     if (f == "perspective transform") return "Occluding pairs: before and after the perspective transform, against GMP rationals";
     if (f == "A-buffer") return "A-buffer: colour error against supersampled rays, per mask size";
+    if (f == "ray casting") return "Ray casting: every primitive, the grid, the octree and the BVH, primitive tests per ray";
+    if (f == "bounding volumes") return "Bounding volumes: IntersectionTest(M) per kind of volume, false alarms per ray";
     if (f == "complexity (P)") return "The complexity table: run time against the primitives P (log–log)";
     if (f == "complexity (p)") return "The complexity table: run time against the pixels p (log–log)";
     return "Other";

@@ -11,6 +11,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/numeric.h"
+#include "culling/hierarchy.h"
 
 namespace hsr::algo {
 namespace {
@@ -167,7 +168,49 @@ Steps<RayCastEvent, Hit> walk_octree(const Octree* tree, const Primitives* prims
     co_return best;
 }
 
+// A BVH: the same walk as the octree's, nearest box first, a node's box the union of its primitives' boxes (padded
+// by 1e-9 of the scene's extent, so that a hit on a box face is never lost to rounding).
+Steps<RayCastEvent, Hit> walk_bvh(const Hierarchy* bvh, const Primitives* prims, const Scene* scene, Ray ray, RayDetail detail, Tally* tally) {
+    Hit best;
+    struct Visit {
+        std::uint32_t node;
+        Interval span;
+    };
+    const Box scene_box = bounds_of(prims->polygons);
+    const double pad = 1e-9 * std::max({scene_box.hi.x - scene_box.lo.x, scene_box.hi.y - scene_box.lo.y, scene_box.hi.z - scene_box.lo.z});
+    const auto box_of_node = [&](std::uint32_t n) { return Box{bvh->nodes[n].box.lo - Vec3(pad), bvh->nodes[n].box.hi + Vec3(pad)}; };
+    std::vector<Visit> stack;
+    if (bvh->nodes.empty()) co_return best;
+    if (const auto root = ray_box(ray, box_of_node(0), 0, 1)) stack.push_back({0, *root});
+    while (!stack.empty() && !tally->full()) {
+        const Visit v = stack.back();
+        stack.pop_back();
+        if (best.t < v.span.enter) continue;  // a nearer hit is known: nothing in this box can be nearer
+        const HierarchyNode& node = bvh->nodes[v.node];
+        if (detail != RayDetail::ray) co_yield NodeEntered{v.node, int(node.depth), v.span.enter, v.span.exit, node.children.empty()};
+        for (std::uint32_t i : node.primitives) {
+            const Tested r = test(*prims, *scene, ray, i, best, *tally);
+            if (detail == RayDetail::test) co_yield r.event;
+            if (detail == RayDetail::test && r.nearer) co_yield nearer_event(*prims, *scene, best);
+        }
+        std::vector<Visit> children;
+        for (const std::uint32_t c : node.children)
+            if (const auto s = ray_box(ray, box_of_node(c), v.span.enter, v.span.exit)) children.push_back({c, *s});
+        std::sort(children.begin(), children.end(), [](const Visit& a, const Visit& b) { return a.span.enter > b.span.enter; });
+        stack.insert(stack.end(), children.begin(), children.end());  // the farthest first, so the nearest is walked next
+    }
+    co_return best;
+}
+
+Hierarchy bvh_over(const std::vector<std::vector<Vec3>>& polygons) {
+    std::vector<Aabb> boxes;
+    for (const auto& p : polygons) boxes.push_back(aabb_of(p));
+    return build_hierarchy(std::move(boxes), {.kind = HierarchyKind::bvh, .max_primitives = 4}).run_to_end();
+}
+
 }  // namespace
+
+Hierarchy ray_cast_bvh(const Scene& scene) { return bvh_over(primitives_of(scene).polygons); }
 
 Grid ray_cast_grid(const Scene& scene, int cells) { return build_grid(primitives_of(scene).polygons, cells); }
 
@@ -194,6 +237,8 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
         *tree = std::move(build).result();
     }
 
+    const auto bvh = std::make_unique<Hierarchy>(o.acceleration == Acceleration::bvh ? bvh_over(prims->polygons) : Hierarchy{});
+
     const int w = o.viewport.width, h = o.viewport.height;
     RayCastResult out{Image(w, h, o.background), std::vector<std::int32_t>(std::size_t(w) * std::size_t(h), -1),
                       std::vector<double>(std::size_t(w) * std::size_t(h), 2.0)};
@@ -206,6 +251,7 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions o) {
             const std::uint64_t before = tally.tests;
             auto walk = o.acceleration == Acceleration::grid     ? walk_grid(grid.get(), prims.get(), &scene, ray, o.detail, &tally)
                         : o.acceleration == Acceleration::octree ? walk_octree(tree.get(), prims.get(), &scene, ray, o.detail, &tally)
+                        : o.acceleration == Acceleration::bvh    ? walk_bvh(bvh.get(), prims.get(), &scene, ray, o.detail, &tally)
                                                                  : walk_all(prims.get(), &scene, ray, o.detail, &tally);
             for (const auto& e : walk) co_yield e;
             const Hit best = std::move(walk).result();

@@ -24,6 +24,7 @@
 
 #include "raster/image.h"
 #include "core/steps.h"
+#include "culling/hierarchy.h"
 #include "raycast/raycast_events.h"
 #include "raycast/spatial.h"
 #include "raster/screen_polygon.h"
@@ -54,6 +55,8 @@ Steps<RayCastEvent, RayCastResult> ray_cast(Scene scene, RayCastOptions options)
 
 // The grid ray_cast builds for a scene with grid_cells = cells (for a view that draws the cells it walks).
 Grid ray_cast_grid(const Scene& scene, int cells = 0);
+// The BVH a cast with Acceleration::bvh walks (axis boxes, at most 4 primitives a leaf), for the window to draw.
+Hierarchy ray_cast_bvh(const Scene& scene);
 
 // The ray through the centre of pixel (x, y): origin on the near plane, origin + direction on the far plane.
 Ray pixel_ray(const Camera& camera, Viewport viewport, int x, int y);

@@ -20,6 +20,7 @@ namespace say {
 constexpr Saying every_primitive{"ray_cast.every_primitive", "every primitive"};
 constexpr Saying grid{"ray_cast.grid", "regular grid"};
 constexpr Saying octree{"ray_cast.octree", "octree"};
+constexpr Saying bvh{"ray_cast.bvh", "bounding-volume hierarchy"};
 constexpr Saying started{"ray_cast.started", "Ray through pixel ({x}, {y}) from {origin}, direction {direction}."};
 constexpr Saying cell{"ray_cast.cell",
                       "Enter cell [{i}, {j}, {k}] for t in [{t_enter}, {t_exit}]: {primitives} {primitives?primitive|primitives} listed."};
@@ -42,7 +43,7 @@ constexpr Saying few_primitives{"ray_cast.few_primitives", "few enough primitive
 constexpr Saying voxel_size{"ray_cast.voxel_size", "the voxel size is reached"};
 constexpr Saying node_budget{"ray_cast.node_budget", "the node budget is spent"};
 constexpr Saying would_multiply{"ray_cast.would_multiply", "its primitives would be listed in most subcells"};
-constexpr Saying all[] = {every_primitive, grid, octree, started, cell, empty_cell, node, leaf, hit, missed, nearer, sees,
+constexpr Saying all[] = {every_primitive, grid, octree, bvh, started, cell, empty_cell, node, leaf, hit, missed, nearer, sees,
                           sees_background, done, bound, examined, split, leaf_made, built, few_primitives, voxel_size,
                           node_budget, would_multiply};
 }  // namespace say
@@ -53,6 +54,7 @@ const Saying& term(Acceleration a) {
         case Acceleration::none: return say::every_primitive;
         case Acceleration::grid: return say::grid;
         case Acceleration::octree: return say::octree;
+        case Acceleration::bvh: return say::bvh;
     }
     return say::every_primitive;
 }

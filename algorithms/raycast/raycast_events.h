@@ -16,7 +16,8 @@
 
 namespace hsr::algo {
 
-enum class Acceleration : std::uint8_t { none, grid, octree };
+// bvh: a bounding-volume hierarchy of axis boxes over the primitives, walked nearest box first (the fourth way)
+enum class Acceleration : std::uint8_t { none, grid, octree, bvh };
 // How much a cast tells: each ray's answer only, also its cells or nodes, or every primitive test too.
 enum class RayDetail : std::uint8_t { ray, cell, test };
 

@@ -36,6 +36,16 @@ void add_box(Scene& s, glm::dvec3 l, glm::dvec3 h, Color color, SceneId& id) {
     add_quad(s, c(4), c(5), c(7), c(6), color, id);  // +z
 }
 
+void add_turned_box(Scene& s, glm::dvec3 centre, glm::dvec3 half, const glm::dmat3& turn, Color color, SceneId& id) {
+    const auto c = [&](int k) { return centre + turn * glm::dvec3(k & 1 ? half.x : -half.x, k & 2 ? half.y : -half.y, k & 4 ? half.z : -half.z); };
+    add_quad(s, c(0), c(4), c(6), c(2), color, id);  // the same faces as add_box: a rotation keeps them outward
+    add_quad(s, c(1), c(3), c(7), c(5), color, id);
+    add_quad(s, c(0), c(1), c(5), c(4), color, id);
+    add_quad(s, c(2), c(6), c(7), c(3), color, id);
+    add_quad(s, c(0), c(2), c(3), c(1), color, id);
+    add_quad(s, c(4), c(5), c(7), c(6), color, id);
+}
+
 void add_sphere(Scene& s, glm::dvec3 centre, double r, int slices, int stacks, Color color, SceneId& id) {
     const auto at = [&](int i, int j) {
         const double theta = 2 * M_PI * i / slices, phi = M_PI * j / stacks;

@@ -12,6 +12,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/mat3x3.hpp>
+
 #include "scene/scene.h"
 
 namespace hsr::algo {
@@ -33,6 +35,8 @@ std::optional<std::size_t> generated_triangles(const std::string& name);
 
 // A box from lo to hi as 12 triangles wound outwards; ids from `first_id`.
 void add_box(Scene& scene, glm::dvec3 lo, glm::dvec3 hi, Color color, SceneId& next_id);
+// A box with half-extents `half` about `centre`, turned by the rotation `turn`, as 12 triangles wound outwards.
+void add_turned_box(Scene& scene, glm::dvec3 centre, glm::dvec3 half, const glm::dmat3& turn, Color color, SceneId& next_id);
 // A UV sphere (slices × stacks quads, as triangles) wound outwards.
 void add_sphere(Scene& scene, glm::dvec3 centre, double radius, int slices, int stacks, Color color, SceneId& next_id);
 

@@ -93,7 +93,7 @@ std::vector<Renderer> cpu_renderers() {
     for (const F f : {F::int16, F::int24, F::int32, F::float32, F::float32_reversed, F::linear24})
         r.push_back({"scanline " + std::string(algo::format_id(f)), {f}, [f](const auto& s, auto vp) { return scan_line(s, vp, f); }});
     r.push_back({"scanline classic", {}, classic_scan_line});
-    for (const algo::Acceleration a : {algo::Acceleration::grid, algo::Acceleration::octree})
+    for (const algo::Acceleration a : {algo::Acceleration::grid, algo::Acceleration::octree, algo::Acceleration::bvh})
         r.push_back({"raycast " + std::string(algo::to_string(a)), {}, [a](const auto& s, auto vp) { return ray_cast(s, vp, a); }});
     using R = algo::SplitterRule;
     for (const auto& [rule, name] : {std::pair{R::first, "first"}, std::pair{R::balanced, "balanced"},

@@ -15,6 +15,7 @@
 #include "raycast/ray_cast.h"
 #include "abuffer/a_buffer.h"
 #include "forms/general_forms.h"
+#include "volumes/intersection_test.h"
 #include "perspective/perspective_transform.h"
 #include "roberts/hidden_lines.h"
 #include "zbuffer/classic_scanline.h"
@@ -45,6 +46,9 @@ inline void run_machines(const algo::Scene& s) {
     refused_or_done([&] { (void)composite(layers_along(s, centre_ray(s.camera))).run_to_end(); });
     refused_or_done([&] { (void)roberts(s, {.max_tests = 20000}).run_to_end(); });
     refused_or_done([&] { (void)perspective_transform(s, {.max_comparisons = 20000}).run_to_end(); });
+    refused_or_done([&] {
+        (void)intersection_test(s, rays_of(s), {.bounding = {.volume = VolumeKind::hulls}, .max_steps = 20000}).run_to_end();
+    });
     refused_or_done([&] { (void)general_forms(s, {.pixels = 24, .max_steps = 20000}).run_to_end(); });
     refused_or_done([&] { (void)a_buffer(s, {24, 18}, {.mask_size = 4, .max_fragments = 20000}).run_to_end(); });
     refused_or_done([&] {
@@ -58,6 +62,7 @@ inline void run_machines(const algo::Scene& s) {
         (void)bsp_scene(std::move(job)).run_to_end();
     });
     refused_or_done([&] { (void)ray_cast(s, {.viewport = {8, 6}, .acceleration = Acceleration::grid, .detail = RayDetail::ray}).run_to_end(); });
+    refused_or_done([&] { (void)ray_cast(s, {.viewport = {8, 6}, .acceleration = Acceleration::bvh, .detail = RayDetail::ray}).run_to_end(); });
     refused_or_done([&] {
         (void)run_pipeline(s, {.stages = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::portals, Stage::hiz},
                                .viewport = {16, 12}});

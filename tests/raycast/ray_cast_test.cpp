@@ -26,7 +26,11 @@ TEST_CASE("the grid and the octree see exactly what brute force sees on random s
         const RayCastResult brute = cast(s, vp, Acceleration::none);
         const RayCastResult grid = cast(s, vp, Acceleration::grid);
         const RayCastResult octree = cast(s, vp, Acceleration::octree);
+        const RayCastResult bvh = cast(s, vp, Acceleration::bvh);
         INFO("seed " << seed);
+        CHECK(bvh.polygon == brute.polygon);  // the fourth way: a BVH of axis boxes
+        CHECK(bvh.t == brute.t);
+        CHECK(bvh.tests < brute.tests);
         CHECK(grid.polygon == brute.polygon);
         CHECK(grid.t == brute.t);
         CHECK(octree.polygon == brute.polygon);
@@ -50,7 +54,7 @@ TEST_CASE("axis-parallel rays along grid lines and through cell corners neither 
     s.polygons = {square(1, -2, -2, 0, 0, 0), square(2, 0, 0, 2, 2, 1), square(3, -1, -1, 1, 1, -1), square(4, -2, -2, 2, 2, -3)};
     const Viewport vp{8, 8};
     const RayCastResult brute = cast(s, vp, Acceleration::none);
-    for (auto a : {Acceleration::grid, Acceleration::octree}) {
+    for (auto a : {Acceleration::grid, Acceleration::octree, Acceleration::bvh}) {
         const RayCastResult r = cast(s, vp, a, 4);
         CHECK(r.polygon == brute.polygon);
         CHECK(r.t == brute.t);
@@ -103,7 +107,7 @@ TEST_CASE("coordinates near the double limit give a result, not undefined behavi
     s.camera = {.eye = {0, 0, 6}, .target = {0, 0, 0}, .fov_y = 50, .near = 0.5, .far = 30};
     s.polygons.push_back({1, {}, {{-1, -1, 0, 1}, {1, -1, 0, 1}, {0, 1, 0, 1}}});
     s.polygons.push_back({2, {}, {{1e300, 0, 0, 1}, {1e300, 1, 0, 1}, {-1e300, 0, 1e-310, 1}}});
-    for (const Acceleration a : {Acceleration::grid, Acceleration::octree}) {
+    for (const Acceleration a : {Acceleration::grid, Acceleration::octree, Acceleration::bvh}) {
         const RayCastResult r = ray_cast(s, {.viewport = {8, 6}, .acceleration = a, .detail = RayDetail::ray}).run_to_end();
         CHECK(r.image.width == 8);
     }

@@ -53,7 +53,8 @@ algo::Acceleration acceleration_named(const std::string& s) {
     if (s == "none") return algo::Acceleration::none;
     if (s == "grid") return algo::Acceleration::grid;
     if (s == "octree") return algo::Acceleration::octree;
-    throw std::runtime_error("unknown acceleration \"" + s + "\"; expected none, grid or octree");
+    if (s == "bvh") return algo::Acceleration::bvh;
+    throw std::runtime_error("unknown acceleration \"" + s + "\"; expected none, grid, octree or bvh");
 }
 
 algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter& meter) {

@@ -67,6 +67,7 @@ void raycast_state_panel(const RayCastSession& s, const PanelLayout& l) {
                                               {"k", n(v.cells.back().z)}, {"nx", n(v.grid->cells.x)}, {"ny", n(v.grid->cells.y)},
                                               {"nz", n(v.grid->cells.z)}}));
         if (v.acceleration == algo::Acceleration::octree) wrapped_text(tr("raycast.nodes", {{"nodes", n(v.nodes)}}));
+        if (v.acceleration == algo::Acceleration::bvh) wrapped_text(tr("raycast.bvh_nodes", {{"nodes", n(v.nodes)}}));
         if (v.tested >= 0)
             wrapped_text(tr(v.tested_hit ? "raycast.tested_hit" : "raycast.tested_missed",
                             {{"polygon", n(s.scene().polygons[std::size_t(v.tested)].id)}, {"t", algo::format_number(v.tested_t)}}));

@@ -14,6 +14,7 @@
 #include "screens/depth_sort_screen.h"
 #include "screens/forms_screen.h"
 #include "screens/horizon_screen.h"
+#include "screens/intersection_screen.h"
 #include "screens/perspective_screen.h"
 #include "screens/portal_screen.h"
 #include "screens/raycast_screen.h"

@@ -27,6 +27,7 @@
 #include "state/depth_sort_session.h"
 #include "state/forms_session.h"
 #include "state/horizon_session.h"
+#include "state/intersection_session.h"
 #include "state/perspective_session.h"
 #include "state/portal_session.h"
 #include "state/raycast_session.h"
@@ -53,7 +54,8 @@ struct SessionTypes {
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
                                  HierarchyCullSession, OccluderSession, HizSession, HorizonSession,
-                                 CompositeSession, RobertsSession, PerspectiveSession, ABufferSession, FormsSession>;
+                                 CompositeSession, RobertsSession, PerspectiveSession, ABufferSession, FormsSession,
+                                 IntersectionSession>;
 
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
@@ -73,6 +75,7 @@ decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
                           [&](PerspectiveMachine) { return f(Family<PerspectiveSession>{}); },
                           [&](ABufferMachine) { return f(Family<ABufferSession>{}); },
                           [&](FormsMachine) { return f(Family<FormsSession>{}); },
+                          [&](IntersectionMachine) { return f(Family<IntersectionSession>{}); },
                           [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
                           [&](PortalMachine m) {
                               return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});

@@ -57,7 +57,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "mask", "languages", "chapters"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "mask", "volume", "k", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.titles = read_texts(r, root.get("title"), "title", lesson.languages);
     if (lesson.titles.empty()) r.fail(&root, "title", "a lesson needs title = \"…\"");
@@ -94,6 +94,13 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     const std::int64_t mask = r.integer(root, "mask", "", lesson.mask_size);
     if (mask != 1 && mask != 2 && mask != 4 && mask != 8) r.fail(root.get("mask"), "mask", "expected 1, 2, 4 or 8 (sub-samples along each side of a pixel)");
     else lesson.mask_size = int(mask);
+    // the intersection test's bounding volume, and a k-DOP's k
+    lesson.volume = r.text(root, "volume", "", lesson.volume);
+    if (lesson.volume != "aabb" && lesson.volume != "sphere" && lesson.volume != "obb" && lesson.volume != "kdop" && lesson.volume != "hulls")
+        r.fail(root.get("volume"), "volume", "expected \"aabb\", \"sphere\", \"obb\", \"kdop\" or \"hulls\"");
+    const std::int64_t k = r.integer(root, "k", "", lesson.k);
+    if (k != 6 && k != 14 && k != 18 && k != 26) r.fail(root.get("k"), "k", "expected 6, 14, 18 or 26 (the faces of the k-DOP)");
+    else lesson.k = int(k);
     // the octree's stopping rules (ray casting through an octree)
     const std::int64_t leaf_limit = r.integer(root, "leaf_limit", "", std::int64_t(lesson.octree.max_per_leaf));
     if (leaf_limit < 1 || leaf_limit > 1'000'000) r.fail(root.get("leaf_limit"), "leaf_limit", "expected a whole number from 1 to 1000000");

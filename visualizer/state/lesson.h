@@ -51,6 +51,8 @@ struct Lesson {
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
     algo::OctreeOptions octree;  // octree ray-casting lessons: leaf_limit = N (max_per_leaf), voxel = edge
     int mask_size = 4;           // A-buffer lessons: mask = N, the coverage mask's N × N sub-samples per pixel
+    std::string volume = "aabb";  // intersection-test lessons: aabb, sphere, obb, kdop (with k) or hulls
+    int k = 14;                  // … and a k-DOP's k: 6, 14, 18 or 26
     bool front_to_back = false;  // depth-sort and BSP lessons: display = "front-to-back", the notes' optimisation of the display
     std::vector<std::string> languages{"en"};                  // of the narration; the first is the default
     std::vector<Chapter> chapters;                             // state/chapters.h

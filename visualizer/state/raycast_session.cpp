@@ -49,6 +49,11 @@ RayCastSession::RunType RayCastSession::machine(const Lesson& lesson) {
     initial.acceleration = a;
     initial.owner.assign(std::size_t(grid.width) * std::size_t(grid.height), -1);
     if (a == Acceleration::grid) initial.grid = std::make_shared<const Grid>(ray_cast_grid(scene));  // the machine's cells
+    if (a == Acceleration::bvh) {  // the BVH's nodes, drawn as the octree's cells are (leaves faint, the node entered bold)
+        for (const HierarchyNode& n : ray_cast_bvh(scene).nodes)
+            initial.octree.push_back({n.box.lo, n.box.hi, int(n.depth), n.subtree_primitives, !n.children.empty(), n.children.empty()});
+        initial.octree_built = true;
+    }
     return {ray_cast(scene, {.viewport = grid, .acceleration = a, .detail = RayDetail::test, .octree = lesson.octree}), std::move(initial)};
 }
 
