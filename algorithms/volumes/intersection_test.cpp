@@ -23,7 +23,7 @@ void subtree_points(const BoundingModel& m, std::uint32_t node, std::vector<Vec3
     for (const std::uint32_t c : n.children) subtree_points(m, c, out);
 }
 
-NodeVolume volume_of(std::span<const Vec3> points, const BoundingOptions& o) {
+NodeVolume volume_of(std::span<const Vec3> points, const BoundingOptions& o, bool root) {
     NodeVolume v;
     switch (o.volume) {
         case VolumeKind::aabb: {
@@ -51,7 +51,7 @@ NodeVolume volume_of(std::span<const Vec3> points, const BoundingOptions& o) {
                     const double pad = grow * std::max(std::abs(dop.lo[i]), std::abs(dop.hi[i])) * glm::length(dop.directions[i]);
                     dop.lo[i] -= pad, dop.hi[i] += pad;
                 }
-                v.volume = enclosed_volume(kdop_faces(dop));
+                if (root) v.volume = enclosed_volume(kdop_faces(dop));  // clipping out its polyhedron costs more than its tests
                 v.dops.push_back(std::move(dop));
             }
             break;
@@ -164,7 +164,7 @@ BoundingModel bounding_model(const Scene& scene, BoundingOptions options) {
     for (std::uint32_t node = 0; node < m.tree.nodes.size(); ++node) {
         std::vector<Vec3> points;
         subtree_points(m, node, points);
-        m.volumes.push_back(volume_of(points, options));
+        m.volumes.push_back(volume_of(points, options, node == 0));
     }
     return m;
 }

@@ -45,7 +45,7 @@ struct NodeVolume {
     Sphere sphere;
     Obb obb;
     std::vector<KDop> dops;  // a k-DOP: one; progressive hulls: the 6-, 14- and 26-DOP, outermost first
-    double volume = 0;       // of the kind asked for (hulls: the innermost)
+    double volume = 0;       // of the kind asked for (hulls: the innermost; k-DOPs: the root only, 0 below it)
 };
 
 // The hierarchy over the scene's polygons and each node's volume; what the window draws.
