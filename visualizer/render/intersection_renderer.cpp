@@ -82,8 +82,8 @@ void draw_intersection_view(const IntersectionView& v, const algo::Scene& scene,
             case CallMark::skipped: break;
         }
     }
-    if (v.volume && !v.calls.empty() && v.calls.back() == v.volume->node)  // the volume just tested, bold
-        volume(out.bold, m.volumes[v.volume->node], m.options.volume, v.volume->k, palette::current_edge);
+    if (v.volume && !v.calls.empty() && v.calls.back() == v.volume->node)  // the volume just tested, bold: yellow when met, red when missed
+        volume(out.bold, m.volumes[v.volume->node], m.options.volume, v.volume->k, v.volume->hit ? palette::current_edge : palette::outside);
     else if (!v.calls.empty() && m.tree.nodes[v.calls.back()].children.empty() && v.marks.size() > v.calls.back())
         volume(out.faint, m.volumes[v.calls.back()], algo::VolumeKind::aabb, 0, palette::current_edge);  // a bottom level: its box, faint
     // the rays: the one under test bold, from its origin past the scene
