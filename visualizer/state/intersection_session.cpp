@@ -94,7 +94,7 @@ void reduce(IntersectionView& v, const IntersectionEvent& event) {
                        if (e.false_alarm) ++v.false_alarms;
                        if (e.hit) v.marks[e.node] = CallMark::hit;
                        else if (e.false_alarm) v.marks[e.node] = CallMark::false_alarm;
-                       else if (v.marks[e.node] != CallMark::missed) v.marks[e.node] = CallMark::missed;
+                       else v.marks[e.node] = CallMark::missed;
                    },
                    [&](const RayAnswered& e) { v.answers[e.ray] = e.hit, v.volume.reset(), v.primitive.reset(); },
                    [&](const IntersectionFinished& e) { v.finished = e; },
