@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");
     render_cmd->add_option("--cull", render.cull, "zbuffer: culling stages first, from back-face,frustum,detail,occluders,portals,hiz");
+    render_cmd->add_option("--occluders", render.occluders, "The occluders stage's shapes: planar (default), proxy, solid (Papaioannou's, with planar)");
+    render_cmd->add_flag("--fusion", render.fusion, "The occluders stage fuses its occluders (a box hidden by several together is culled)");
     render_cmd->add_option("--eye", render.eye, "Eye position X,Y,Z (default: the scene camera's)");
     render_cmd->add_option("--size", render.size, "Image size WxH (default 512x512)");
     render_cmd->add_option("--out", render.out, "Colour image (PNG)")->required();

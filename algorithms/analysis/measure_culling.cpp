@@ -1,7 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The culling pipeline on generated scenes: what each stage leaves out, the frame time against rendering every
 // primitive, and visibility violations (front-face pixels the culled frame lost; must be 0 for the conservative
-// stages). Detail culling is not conservative by design: its lost pixels are its error, not a violation.
+// stages). Detail culling is not conservative by design: its lost pixels are its error, not a violation. The
+// occluder rows compare the stage's shapes (planar, proxies, solids) with and without fusion after back-face and
+// frustum culling: what each leaves out, and the front-face pixels lost (0 for all: fusion and solids stay
+// conservative).
+#include <cstdio>
+#include <iterator>
+
 #include "analysis/lost_pixels.h"
 #include "analysis/measurement.h"
 #include "culling/pipeline.h"
@@ -14,7 +20,16 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
     const algo::Viewport vp = o.quick ? algo::Viewport{96, 72} : algo::Viewport{320, 240};
     using S = algo::Stage;
     std::vector<Measurement> rows;
-    plan_runs(o, 3 * 3);  // scenes × (no culling, conservative stages, with detail)
+    using K = algo::OccluderKind;
+    struct OccluderSetting {
+        const char* name;
+        K kind;
+        bool fusion;
+    };
+    const OccluderSetting occluder_settings[] = {{"occluders: planar", K::planar, false}, {"occluders: proxies", K::proxy, false},
+                                                 {"occluders: solid and planar", K::solid, false}, {"occluders: planar, fused", K::planar, true},
+                                                 {"occluders: solid and planar, fused", K::solid, true}};
+    plan_runs(o, 3 * (3 + int(std::size(occluder_settings))));  // scenes × (no culling, conservative stages, with detail, occluders)
     for (const auto& kind_and_scene : {std::pair{"city", algo::city_scene({.triangles = n})},
                                        std::pair{"field", algo::field_scene({.triangles = n})},
                                        std::pair{"spheres", algo::spheres_scene({.triangles = n})}}) {
@@ -39,6 +54,20 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
         };
         run("back-face, frustum, occluders, hiz", {S::back_face, S::frustum, S::occluders, S::hiz}, true);
         run("back-face, frustum, detail (2 px), occluders, hiz", {S::back_face, S::frustum, S::detail, S::occluders, S::hiz}, false);
+        for (const OccluderSetting& c : occluder_settings) {
+            algo::PipelineResult r;
+            const double ms = median_ms(o, [&] {
+                r = algo::run_pipeline(scene, {.stages = {S::back_face, S::frustum, S::occluders}, .viewport = vp, .occluders = c.kind, .fusion = c.fusion});
+            });
+            const std::uint64_t lost = lost_front_pixels(scene, r.frame, all.frame);
+            const algo::StageReport& stage = r.stages[3];  // back-face, frustum, detail, occluders
+            char stage_ms[32];
+            std::snprintf(stage_ms, sizeof stage_ms, "%.2f", stage.milliseconds);
+            rows.push_back({.family = "culling", .method = c.name, .setting = setting, .median_ms = ms,
+                            .error = double(lost) / double(all.frame.image.ids.size()), .error_name = "share of pixels lost",
+                            .wrong = lost, .wrong_name = "front-face pixels lost", .wrong_must_be_zero = true,
+                            .extra = "occluders left out " + std::to_string(stage.left_out) + " of " + std::to_string(stage.in) + " in " + stage_ms + " ms"});
+        }
     }
     return rows;
 }

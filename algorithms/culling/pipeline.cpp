@@ -61,6 +61,9 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
     // The hierarchy the stages walk: pre-processing, built once
     const auto t_hierarchy = Clock::now();
     const Hierarchy hierarchy = build_hierarchy(polygon_boxes(scene), {.kind = o.hierarchy}).run_to_end();
+    // and the objects that are solid occluders, found once like the hierarchy
+    const bool solids_wanted = o.occluders == OccluderKind::solid && wanted(Stage::occluders);
+    const std::vector<std::vector<std::uint32_t>> solids = solids_wanted ? convex_solids(scene) : std::vector<std::vector<std::uint32_t>>{};
     out.hierarchy_milliseconds = ms_since(t_hierarchy);
     bool rendered = false;
     for (const Stage stage : all_stages) {
@@ -98,7 +101,10 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
                            .kept;
                 break;
             case Stage::occluders:
-                keep = occlusion_cull(&scene, &hierarchy, {.max_occluders = o.max_occluders, .candidates = out.kept}).run_to_end().kept;
+                keep = occlusion_cull(&scene, &hierarchy,
+                                      {.max_occluders = o.max_occluders, .candidates = out.kept, .kind = o.occluders, .fusion = o.fusion, .solids = &solids})
+                           .run_to_end()
+                           .kept;
                 break;
             case Stage::portals: {  // what portal_render draws through the PVS and the narrowing frusta
                 const CellBsp bsp = build_cell_bsp(*model);

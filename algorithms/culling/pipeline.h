@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "culling/hierarchy.h"
+#include "culling/occluders.h"
 #include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::algo {
@@ -33,6 +34,8 @@ struct PipelineOptions {
     HierarchyKind hierarchy = HierarchyKind::octree;
     double detail_pixels = 2;        // the detail stage's threshold
     std::uint32_t max_occluders = 8;
+    OccluderKind occluders = OccluderKind::planar;  // the occluders stage's: polygons, their proxies, or solids too
+    bool fusion = false;                            // … and whether it fuses them
 };
 
 struct StageReport {
@@ -49,7 +52,7 @@ struct PipelineResult {
     std::vector<StageReport> stages;  // one per stage in pipeline order, those not run marked so
     std::vector<std::uint8_t> kept;   // per polygon (of the scene, or of a floor plan's rooms): reached the last stage
     FrameDepth frame{Image(0, 0), {}, {}};
-    double hierarchy_milliseconds = 0;
+    double hierarchy_milliseconds = 0;  // pre-processing: the hierarchy, and the solid occluders when asked for
 };
 
 PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& options);

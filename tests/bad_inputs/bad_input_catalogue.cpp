@@ -425,7 +425,7 @@ std::vector<Case> catalogue() {
     for (const std::string eye : {"nan,nan,nan", "inf,0,0", "1,2", "1,2,3,4", "1e101,0,0", "a,b,c", "0,0,0", "0,5,0", ""})
         cs.push_back(command("render --eye " + eye, {"render", "s.toml", "--eye", eye, "--out", "o.png"}, 1, {"--eye"}, "o.png"));
     for (const auto& [option, value] : std::vector<std::pair<std::string, std::string>>{
-             {"--algorithm", "zbufer"}, {"--format", "int12"}, {"--accel", "kdtree"}, {"--splitter", "random"}, {"--cull", "everything"}})
+             {"--algorithm", "zbufer"}, {"--format", "int12"}, {"--accel", "kdtree"}, {"--splitter", "random"}, {"--cull", "everything"}, {"--occluders", "solids"}})
     {
         std::vector<std::string> args{"render", "s.toml", option, value, "--out", "o.png"};
         if (option != "--algorithm") args.insert(args.begin() + 2, {"--algorithm", option == "--accel" ? "raycast" : option == "--splitter" ? "bsp" : "zbuffer"});

@@ -67,6 +67,9 @@ inline void run_machines(const algo::Scene& s) {
         (void)run_pipeline(s, {.stages = {Stage::back_face, Stage::frustum, Stage::detail, Stage::occluders, Stage::portals, Stage::hiz},
                                .viewport = {16, 12}});
     });
+    refused_or_done([&] {  // solid occluders and fusion
+        (void)run_pipeline(s, {.stages = {Stage::occluders}, .viewport = {16, 12}, .occluders = OccluderKind::solid, .fusion = true});
+    });
     if (!s.floor_plan.cells.empty())
         refused_or_done([&] {
             const CellModel m = cell_model(s);

@@ -24,7 +24,8 @@ const CullingLesson& culling_lesson_of(const FamilySession& session) {
 }  // namespace
 
 TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]") {
-    const char* files[] = {"22_culling_frustum.toml", "23_culling_detail.toml", "24_culling_occluders.toml", "25_culling_hiz.toml"};
+    const char* files[] = {"22_culling_frustum.toml", "23_culling_detail.toml", "24_culling_occluders.toml", "25_culling_hiz.toml",
+                           "38_culling_fusion.toml"};
     for (const char* file : files) {
         INFO(file);
         const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
@@ -42,8 +43,14 @@ TEST_CASE("each culling lesson folds to its machine's answer", "[state][culling]
                                   {.frustum = false, .detail_pixels = w.detail_pixels, .viewport_height = lesson.grid.height, .candidates = w.candidates})
                        .run_to_end()
                        .kept;
-        if (lessonview.culling_machine() == CullingMachine::occluders)
-            want = occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4, .candidates = w.candidates}).run_to_end().kept;
+        if (lessonview.culling_machine() == CullingMachine::occluders) {
+            OcclusionOptions o = occlusion_options(lesson);
+            o.candidates = w.candidates;
+            auto machine = occlusion_cull(&w.scene, &w.hierarchy, o);
+            for (const OcclusionEvent& e : machine)
+                if (const auto* f = std::get_if<OcclusionFinished>(&e)) CHECK(v.fused == f->fused);  // what fusion culled, as the machine says
+            want = machine.result().kept;
+        }
         if (lessonview.culling_machine() == CullingMachine::hiz) want = hiz_render(&w.scene, &w.hierarchy, w.zbuffer, w.candidates).run_to_end().rendered;
         CHECK(kept_of(v) == want);
         CHECK(v.kept + v.left_out + v.earlier == w.scene.polygons.size());
@@ -57,7 +64,8 @@ TEST_CASE("a culling lesson's counts are the pipeline tab's: one definition per 
     const std::pair<const char*, Stage> lessons[] = {{"22_culling_frustum.toml", Stage::frustum},
                                                      {"23_culling_detail.toml", Stage::detail},
                                                      {"24_culling_occluders.toml", Stage::occluders},
-                                                     {"25_culling_hiz.toml", Stage::hiz}};
+                                                     {"25_culling_hiz.toml", Stage::hiz},
+                                                     {"38_culling_fusion.toml", Stage::occluders}};
     for (const auto& [file, lesson_stage] : lessons) {
         INFO(file);
         const Stage stage = lesson_stage;  // a variable, not a structured binding: clang 14 cannot capture those
@@ -83,7 +91,12 @@ TEST_CASE("a culling lesson's counts are the pipeline tab's: one definition per 
                            .run_to_end()
                            .too_small;
                 break;
-            case Stage::occluders: said = occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4, .candidates = w.candidates}).run_to_end().culled; break;
+            case Stage::occluders: {
+                OcclusionOptions o = occlusion_options(lesson);
+                o.candidates = w.candidates;
+                said = occlusion_cull(&w.scene, &w.hierarchy, o).run_to_end().culled;
+                break;
+            }
             default: {
                 auto machine = hiz_render(&w.scene, &w.hierarchy, w.zbuffer, w.candidates);
                 for (const HizEvent& e : machine)
@@ -121,4 +134,20 @@ TEST_CASE("the Hi-Z lesson's Z-pyramid is built from the depth the machine itsel
     const HizResult r = hiz_render(&v.world->scene, &v.world->hierarchy, v.world->zbuffer).run_to_end();
     CHECK(rendered_depth(v) == r.buffers.depth);
     CHECK(rendered_depth(v) != cleared);
+}
+
+TEST_CASE("an occluder lesson's occluder and fusion keys are checked, with the file and line", "[state][culling]") {
+    for (const auto& [line, key] : {std::pair{"occluder = \"solids\"\n", "occluder"}, std::pair{"fusion = \"yes\"\n", "fusion"}}) {
+        const std::string text = std::string("title = \"t\"\nalgorithm = \"cull_occluders\"\nscene = \"occluders_fusion.toml\"\n") + line;
+        try {
+            (void)load_lesson_text(HSR_SOURCE_DIR "/assets/scenes/fusion_test.toml", text);
+            FAIL("taken: " << line);
+        } catch (const std::exception& e) {
+            CHECK(std::string(e.what()).find(key) != std::string::npos);
+            CHECK(std::string(e.what()).find("fusion_test.toml:4") != std::string::npos);
+        }
+    }
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/38_culling_fusion.toml");
+    CHECK(occlusion_options(lesson).kind == OccluderKind::solid);
+    CHECK(occlusion_options(lesson).fusion);
 }

@@ -71,7 +71,11 @@ algo::Image render_bsp(const algo::Scene& scene, const RenderOptions& o, algo::V
 // The culling pipeline, then the z-buffer on what is left: one line per stage.
 algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo::Viewport vp, algo::WorkMeter&) {
     const auto start = Clock::now();
-    algo::PipelineResult r = algo::run_pipeline(scene, {.stages = algo::parse_stages(*o.cull), .viewport = vp, .format = format_named(o.format)});
+    algo::OccluderKind occluders = algo::OccluderKind::planar;
+    for (const algo::OccluderKind k : {algo::OccluderKind::planar, algo::OccluderKind::proxy, algo::OccluderKind::solid})
+        if (o.occluders == to_string(k)) occluders = k;
+    algo::PipelineResult r = algo::run_pipeline(
+        scene, {.stages = algo::parse_stages(*o.cull), .viewport = vp, .format = format_named(o.format), .occluders = occluders, .fusion = o.fusion});
     const double total = ms_since(start);
     std::printf("hierarchy (octree) built in %.3f ms\n", r.hierarchy_milliseconds);
     for (const algo::StageReport& s : r.stages) {
@@ -206,6 +210,8 @@ int run_render(const RenderOptions& o) {
         if (const auto refused = algo::polygons_not_convex(scene); !refused.empty())
             throw std::runtime_error(refused.front() + (refused.size() > 1 ? " (and " + std::to_string(refused.size() - 1) + " more)" : ""));
         if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
+        if (o.occluders != "planar" && o.occluders != "proxy" && o.occluders != "solid")
+            throw std::runtime_error("--occluders: expected planar, proxy or solid, got \"" + algo::printable(o.occluders, 60) + "\"");
         if (scene.coordinates != algo::Coordinates::world)
             throw std::runtime_error(o.scene + ": render needs world coordinates");
         if (o.eye) {

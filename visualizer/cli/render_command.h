@@ -18,6 +18,8 @@ struct RenderOptions {
     std::string format = "int24";         // zbuffer and scanline: the depth format
     std::string acceleration = "grid";    // raycast: none, grid or octree
     std::optional<std::string> cull;      // zbuffer: the culling stages to run first ("back-face,frustum,…")
+    std::string occluders = "planar";     // … the occluders stage's shapes: planar, proxy or solid
+    bool fusion = false;                  // … and whether it fuses them
     std::optional<std::string> eye;  // "x,y,z": replaces the scene camera's eye (the target stays)
     std::string size = "512x512";
     std::string out;

@@ -130,6 +130,13 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
                             {{"machine", machine_name(s.culling_machine())}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}});
     if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + tr("culling.plane_tests", {{"tests", n(v.plane_tests)}});
     if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + tr("culling.texels", {{"texels", n(v.texels)}});
+    if (s.culling_machine() == algo::CullingMachine::occluders) {
+        const algo::OccluderKind k = v.world->occluders;
+        std::string shape = tr(k == algo::OccluderKind::solid ? "culling.shape_solid" : k == algo::OccluderKind::proxy ? "culling.shape_proxy" : "culling.shape_planar");
+        if (v.world->fusion) shape = tr("culling.shape_fused", {{"shape", shape}});
+        header += " · " + tr("culling.occluders_shape", {{"shape", shape}});
+        if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
+    }
     wrapped_text(header + " · " + tr("culling.view_key"), dim_text);
     if (ImGui::BeginTabBar("culling tabs")) {
         if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem((tr("culling.void_tab") + "###void space").c_str())) {

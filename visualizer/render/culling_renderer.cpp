@@ -82,20 +82,21 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
     }
     if (v.current >= 0) box_lines(out.bold, h.nodes[std::size_t(v.current)].box, mark_colour(v.nodes[std::size_t(v.current)]));
     // occluders and the rays of their occlusion frusta
+    // (a proxy is the polygon square to the view that stands for a polygon or a solid; a solid's is drawn with its
+    // silhouette rays, which bound what it hides)
+    const algo::ViewPlane view = algo::ViewPlane::of(scene.camera);
     for (std::size_t k = 0; k < v.occluders.size(); ++k) {
-        const auto& p = scene.polygons[v.occluders[k]];
-        const glm::vec3 eye(scene.camera.eye);
-        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-            const glm::vec3 a(p.vertices[i]), b(p.vertices[(i + 1) % p.vertices.size()]);
+        const auto& o = v.occluders[k];
+        for (std::size_t i = 0; i < o.outline.size(); ++i) {
+            const glm::vec3 a(o.outline[i]), b(o.outline[(i + 1) % o.outline.size()]);
             out.bold.line(a, b, palette::intersection);
-            out.faint.line(a, a + (a - eye) * 1.5f, {0.9f, 0.62f, 0.0f, 0.5f});
+            // the frustum's edge: away from the eye, or along the view for an orthographic camera
+            const glm::vec3 away = view.orthographic ? glm::vec3(view.direction) * glm::length(a - glm::vec3(scene.camera.eye)) : a - glm::vec3(scene.camera.eye);
+            out.faint.line(a, a + away * 1.5f, {0.9f, 0.62f, 0.0f, 0.5f});
         }
-        labels.push_back({glm::vec3(algo::centroid([&] {
-                              std::vector<algo::Vec3> w;
-                              for (const auto& q : p.vertices) w.emplace_back(q);
-                              return w;
-                          }())),
-                          "occluder " + std::to_string(k + 1), palette::intersection});
+        const char* key = o.shape == algo::OccluderKind::solid ? "culling.label_solid" : o.shape == algo::OccluderKind::proxy ? "culling.label_proxy" : "culling.label_occluder";
+        // numbered from 0, as the machine's sentences number them
+        labels.push_back({glm::vec3(algo::centroid(o.outline)), tr(key, {{"n", std::to_string(k)}}), palette::intersection});
     }
 }
 

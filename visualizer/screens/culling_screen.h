@@ -4,6 +4,10 @@
 // the four culling machines.
 #pragma once
 
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
 #include "panels/culling_panels.h"
 #include "render/culling_renderer.h"
 #include "screens/screen.h"
@@ -33,6 +37,14 @@ public:
         if (f.second_view) {  // the view from the scene's own camera
             algo::Camera eye = w.scene.camera;
             eye.aspect = f.aspect();
+            // a canvas narrower than the lesson's image shows all of its width (and more above and below): what the
+            // pipeline renders at the sides stays in the picture
+            if (const double wide = w.scene.camera.aspect / eye.aspect; wide > 1) {
+                if (eye.projection == algo::Projection::perspective)
+                    eye.fov_y = 2 * glm::degrees(std::atan(std::tan(glm::radians(eye.fov_y) / 2) * wide));
+                else
+                    eye.box[2] *= wide, eye.box[3] *= wide;
+            }
             f.view_projection = glm::mat4(algo::view_projection(eye));
         }
     }

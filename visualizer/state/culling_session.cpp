@@ -39,6 +39,13 @@ void count(CullingView& v) {
 }  // namespace
 
 // ── [SECTION] the world and the view ────────────────────────────────────────────────────────────────────────
+OcclusionOptions occlusion_options(const Lesson& lesson) {
+    OcclusionOptions o{.max_occluders = 8, .fusion = lesson.fusion};
+    for (const OccluderKind k : {OccluderKind::planar, OccluderKind::proxy, OccluderKind::solid})
+        if (lesson.occluder == to_string(k)) o.kind = k;
+    return o;
+}
+
 std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     auto w = std::make_shared<CullingWorld>();
     w->scene = lesson.scene;
@@ -48,8 +55,11 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     w->zbuffer = zbuffer_options(w->scene, lesson.grid, lesson.depth_format, EventDetail::polygon);
     w->detail_pixels = 4;
     w->frustum = view_frustum(w->scene.camera);
+    const OcclusionOptions occlusion = occlusion_options(lesson);
+    w->occluders = occlusion.kind, w->fusion = occlusion.fusion;
     w->pipeline = run_pipeline(w->scene, {.stages = parse_stages(lesson.cull), .viewport = lesson.grid, .hierarchy = kind,
-                                          .detail_pixels = w->detail_pixels})
+                                          .detail_pixels = w->detail_pixels, .max_occluders = occlusion.max_occluders,
+                                          .occluders = occlusion.kind, .fusion = occlusion.fusion})
                       .stages;
     // the stage the lesson's machine is: it starts from what the stages before it kept
     const std::optional<Stage> stage = [&]() -> std::optional<Stage> {
@@ -80,7 +90,9 @@ std::vector<std::uint32_t> rendered_depth(const CullingView& v) {
 }
 
 std::size_t approx_bytes(const CullingView& v) {
-    return sizeof(CullingView) + v.nodes.capacity() + v.primitives.capacity() + (v.occluders.capacity() + v.rendered.capacity()) * 4;
+    std::size_t outlines = 0;
+    for (const auto& o : v.occluders) outlines += sizeof(o) + o.outline.capacity() * sizeof(Vec3);
+    return sizeof(CullingView) + v.nodes.capacity() + v.primitives.capacity() + outlines + v.rendered.capacity() * 4;
 }
 
 void reduce(CullingView& v, const HierarchyEvent& event) {
@@ -125,8 +137,9 @@ void reduce(CullingView& v, const HierarchyCullEvent& event) {
 
 void reduce(CullingView& v, const OcclusionEvent& event) {
     std::visit(overloaded{
-                   [&](const OccluderChosen& e) { v.occluders.push_back(e.polygon); },
+                   [&](const OccluderChosen& e) { v.occluders.push_back({e.outline, e.shape, e.polygon, e.faces}); },
                    [&](const OcclusionTested& e) {
+                       const std::uint32_t left_out_before = v.left_out;
                        if (e.node >= 0) {
                            v.current = e.node;
                            if (e.outcome == OcclusionOutcome::occluded) mark_subtree(v, std::uint32_t(e.node), NodeMark::occluded, PrimitiveMark::left_out);
@@ -135,6 +148,7 @@ void reduce(CullingView& v, const OcclusionEvent& event) {
                            v.primitives[std::size_t(e.primitive)] = e.outcome == OcclusionOutcome::occluded ? PrimitiveMark::left_out : PrimitiveMark::kept;
                        }
                        count(v);
+                       if (e.fused) v.fused += v.left_out - left_out_before;  // what fusion culled, no single occluder
                    },
                    [&](const OcclusionFinished&) {
                        v.done = true, v.current = -1;
@@ -242,8 +256,10 @@ Steps<HierarchyCullEvent, HierarchyCull> steps_of(const CullingWorld& w, const L
                                                               .viewport_height = lesson.grid.height, .candidates = w.candidates};
     return cull_hierarchy(&w.hierarchy, w.scene.camera, o);
 }
-Steps<OcclusionEvent, OcclusionCull> steps_of(const CullingWorld& w, const Lesson&, OcclusionEvent*) {
-    return occlusion_cull(&w.scene, &w.hierarchy, {.max_occluders = 4, .candidates = w.candidates});
+Steps<OcclusionEvent, OcclusionCull> steps_of(const CullingWorld& w, const Lesson& lesson, OcclusionEvent*) {
+    OcclusionOptions o = occlusion_options(lesson);
+    o.candidates = w.candidates;
+    return occlusion_cull(&w.scene, &w.hierarchy, std::move(o));
 }
 Steps<HizEvent, HizResult> steps_of(const CullingWorld& w, const Lesson&, HizEvent*) {
     return hiz_render(&w.scene, &w.hierarchy, w.zbuffer, w.candidates);

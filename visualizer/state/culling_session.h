@@ -23,6 +23,8 @@ struct CullingWorld {
     algo::ZBufferOptions zbuffer;              // the lesson's grid, for the Z-pyramid
     std::vector<algo::Plane> frustum;          // the camera's view frustum
     double detail_pixels = 0;
+    algo::OccluderKind occluders = algo::OccluderKind::planar;  // the occluder stage's shapes, and fusion
+    bool fusion = false;
     // per polygon: reached the lesson's stage, kept by the pipeline's stages before it (empty: all, for the bounds
     // lesson). The machine runs on these only, so that its counts are the pipeline's.
     std::vector<std::uint8_t> candidates;
@@ -35,10 +37,16 @@ struct CullingView {
     std::shared_ptr<const CullingWorld> world;
     std::vector<NodeMark> nodes;
     std::vector<PrimitiveMark> primitives;
-    std::vector<std::uint32_t> occluders;       // polygons chosen, best first
+    struct ShownOccluder {
+        std::vector<algo::Vec3> outline;  // the polygon, or the proxy that stands for it (or for a solid)
+        algo::OccluderKind shape;
+        std::uint32_t polygon, faces;
+    };
+    std::vector<ShownOccluder> occluders;       // chosen, best first
     std::vector<std::uint32_t> rendered;        // Hi-Z: primitives rendered, in order (the pyramid is rebuilt from them)
     std::int32_t current = -1;                  // the node last touched
     std::uint32_t kept = 0, left_out = 0, earlier = 0, plane_tests = 0, texels = 0;
+    std::uint32_t fused = 0;                    // occluders: primitives culled by fusion (no single occluder hid them)
     bool done = false;
 };
 std::size_t approx_bytes(const CullingView& view);
@@ -49,6 +57,9 @@ void reduce(CullingView& view, const algo::HizEvent& event);
 
 // Hi-Z: the depth buffer of the primitives rendered so far (the Z-pyramid is built from it).
 std::vector<std::uint32_t> rendered_depth(const CullingView& view);
+
+// The occluder stage a lesson asks for (occluder = "…", fusion = …), the same in its pipeline and its machine.
+algo::OcclusionOptions occlusion_options(const Lesson& lesson);
 
 // The world a culling lesson plays in (its hierarchy: a BVH for the bounds lesson, else an octree).
 std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson);

@@ -21,9 +21,10 @@ HSR_TO_JSON(HierarchyNodeBuilt, node, parent, depth, primitives, box, leaf)
 HSR_TO_JSON(HierarchyBuilt, nodes, leaves, depth)
 HSR_TO_JSON(NodeCulled, node, outcome, planes_tested, mask_after, plane, pixels, primitives)
 HSR_TO_JSON(HierarchyCullFinished, nodes_tested, plane_tests, kept, outside, too_small)
-HSR_TO_JSON(OccluderChosen, polygon, rank, area)
-HSR_TO_JSON(OcclusionTested, node, primitive, outcome, occluder)
-HSR_TO_JSON(OcclusionFinished, occluders, culled, passed)
+inline void to_json(nlohmann::json& j, OccluderKind k) { j = std::string(to_string(k)); }
+HSR_TO_JSON(OccluderChosen, polygon, rank, area, shape, faces)
+HSR_TO_JSON(OcclusionTested, node, primitive, outcome, occluder, fused)
+HSR_TO_JSON(OcclusionFinished, occluders, culled, passed, fused)
 HSR_TO_JSON(HizNodeTested, node, outcome, footprint, near, texels_tested, primitives_rendered, subtree_primitives)
 HSR_TO_JSON(HizFinished, nodes, occluded_nodes, rendered, left_out)
 

@@ -57,7 +57,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         return lesson;
     }
 
-    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "display", "leaf_limit", "voxel", "mask", "volume", "k", "languages", "chapters"});
+    r.only_keys(root, "", {"title", "algorithm", "scene", "difficulty", "prerequisites", "summary", "splitter", "format", "grid", "cull", "occluder", "fusion", "display", "leaf_limit", "voxel", "mask", "volume", "k", "languages", "chapters"});
     lesson.chapters = read_chapters(r, root, lesson.languages);
     lesson.titles = read_texts(r, root.get("title"), "title", lesson.languages);
     if (lesson.titles.empty()) r.fail(&root, "title", "a lesson needs title = \"…\"");
@@ -101,6 +101,11 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
     const std::int64_t k = r.integer(root, "k", "", lesson.k);
     if (k != 6 && k != 14 && k != 18 && k != 26) r.fail(root.get("k"), "k", "expected 6, 14, 18 or 26 (the faces of the k-DOP)");
     else lesson.k = int(k);
+    // the occluders' shape, and fusion
+    lesson.occluder = r.text(root, "occluder", "", lesson.occluder);
+    if (lesson.occluder != "planar" && lesson.occluder != "proxy" && lesson.occluder != "solid")
+        r.fail(root.get("occluder"), "occluder", "expected \"planar\", \"proxy\" or \"solid\"");
+    lesson.fusion = r.boolean(root, "fusion", "", lesson.fusion);
     // the octree's stopping rules (ray casting through an octree)
     const std::int64_t leaf_limit = r.integer(root, "leaf_limit", "", std::int64_t(lesson.octree.max_per_leaf));
     if (leaf_limit < 1 || leaf_limit > 1'000'000) r.fail(root.get("leaf_limit"), "leaf_limit", "expected a whole number from 1 to 1000000");

@@ -11,6 +11,7 @@
 //   format = "int16"                       # z-buffer lessons: the depth format (depth_format.h's format_id)
 //   grid = [32, 24]                        # z-buffer lessons: the viewport, in fat pixels
 //   cull = "back-face,frustum"             # culling lessons: the stages the scene needs
+//   occluder = "solid", fusion = true      # occluder lessons: planar, proxy or solid occluders; fused or one at a time
 //   leaf_limit = 4, voxel = 0.5            # octree ray-casting lessons: the octree's stopping rules
 //   mask = 4                               # A-buffer lessons: 4 × 4 sub-samples per pixel (1, 2, 4 or 8)
 //   display = "front-to-back"              # depth-sort lessons: draw the sorted list nearest first, on the grid,
@@ -49,6 +50,8 @@ struct Lesson {
     algo::DepthFormat depth_format = algo::DepthFormat::int24;  // z-buffer lessons
     algo::Viewport grid{32, 24};                                // z-buffer lessons: pixels across and down
     std::string cull = "back-face,frustum,detail,occluders,hiz";  // culling lessons: the stages the scene needs
+    std::string occluder = "planar";  // occluder lessons: planar, proxy or solid (culling/occluders.h)
+    bool fusion = false;              // … and whether the occluders are fused
     algo::OctreeOptions octree;  // octree ray-casting lessons: leaf_limit = N (max_per_leaf), voxel = edge
     int mask_size = 4;           // A-buffer lessons: mask = N, the coverage mask's N × N sub-samples per pixel
     std::string volume = "aabb";  // intersection-test lessons: aabb, sphere, obb, kdop (with k) or hulls

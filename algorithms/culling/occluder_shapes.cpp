@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: MIT
+#include "culling/occluder_shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+
+namespace hsr::algo {
+
+// ── the view plane ──────────────────────────────────────────────────────────────────────────────────────────
+ViewPlane ViewPlane::of(const Camera& c) {
+    ViewPlane v;
+    v.eye = c.eye;
+    const Vec3 d = c.target - c.eye;
+    v.direction = glm::length(d) > 0 ? glm::normalize(d) : Vec3(0, 0, -1);
+    Vec3 r = glm::cross(v.direction, c.up);
+    if (glm::length(r) == 0) r = glm::cross(v.direction, std::abs(v.direction.y) < 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0));
+    v.right = glm::normalize(r);
+    v.up = glm::cross(v.right, v.direction);
+    v.orthographic = c.projection == Projection::orthographic;
+    v.near = c.near;
+    return v;
+}
+
+double ViewPlane::depth(const Vec3& p) const { return glm::dot(p - eye, direction); }
+
+std::optional<Vec2> ViewPlane::image(const Vec3& p) const {
+    const Vec3 q = p - eye;
+    const Vec2 across{glm::dot(q, right), glm::dot(q, up)};
+    if (orthographic) return across;
+    const double z = glm::dot(q, direction);
+    if (!(z > 0)) return std::nullopt;
+    const Vec2 at = across / z;
+    if (!std::isfinite(at.x) || !std::isfinite(at.y)) return std::nullopt;
+    return at;
+}
+
+Vec3 ViewPlane::point(const Vec2& at, double z) const {
+    const Vec2 across = orthographic ? at : at * z;
+    return eye + right * across.x + up * across.y + direction * z;
+}
+
+// ── hulls and proxies ───────────────────────────────────────────────────────────────────────────────────────
+namespace {
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+double area(const std::vector<Vec2>& p) {
+    double a = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) a += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
+    return a / 2;
+}
+double perimeter(const std::vector<Vec2>& p) {
+    double s = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) s += glm::length(p[(i + 1) % p.size()] - p[i]);
+    return s;
+}
+// Thinner than `gap` everywhere: twice the area over the perimeter is about the width of a long thin piece.
+bool thinner_than(const std::vector<Vec2>& p, double gap) { return p.size() < 3 || 2 * std::abs(area(p)) <= gap * perimeter(p); }
+}  // namespace
+
+std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
+    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return p;
+    std::vector<Vec2> h(2 * p.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {  // upper chain
+        while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+std::optional<std::vector<Vec3>> proxy_of(std::span<const Vec3> vertices, const ViewPlane& view) {
+    std::vector<Vec2> images;
+    double far = -1e308;
+    for (const Vec3& v : vertices) {
+        const double z = view.depth(v);
+        if (!(z >= view.near)) return std::nullopt;
+        const auto at = view.image(v);
+        if (!at) return std::nullopt;
+        images.push_back(*at);
+        far = std::max(far, z);
+    }
+    const std::vector<Vec2> hull = convex_hull(std::move(images));
+    if (hull.size() < 3 || !(area(hull) > 0) || !std::isfinite(far)) return std::nullopt;
+    std::vector<Vec3> out;
+    for (const Vec2& at : hull) out.push_back(view.point(at, far));
+    return out;
+}
+
+// ── convex solids ───────────────────────────────────────────────────────────────────────────────────────────
+namespace {
+struct PointHash {
+    std::size_t operator()(const std::array<double, 3>& p) const {
+        std::size_t h = 0;
+        for (const double x : p) h = h * 1000003u ^ std::hash<double>{}(x);
+        return h;
+    }
+};
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> convex_solids(const Scene& scene) {
+    // the same vertex is the same point, bit for bit: a solid's faces are written with shared corners
+    std::unordered_map<std::array<double, 3>, std::uint32_t, PointHash> vertex_id;
+    std::vector<std::vector<std::uint32_t>> faces;
+    for (const ScenePolygon& p : scene.polygons) {
+        faces.emplace_back();
+        for (const auto& v : p.vertices) faces.back().push_back(vertex_id.emplace(std::array<double, 3>{v.x, v.y, v.z}, std::uint32_t(vertex_id.size())).first->second);
+    }
+    // objects: polygons joined through shared vertices (union–find over the vertices)
+    std::vector<std::uint32_t> parent(vertex_id.size());
+    for (std::uint32_t k = 0; k < parent.size(); ++k) parent[k] = k;
+    const auto root = [&](std::uint32_t k) {
+        while (parent[k] != k) k = parent[k] = parent[parent[k]];
+        return k;
+    };
+    for (const auto& f : faces)
+        for (std::uint32_t v : f) parent[root(v)] = root(f.front());
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> objects;
+    for (std::uint32_t i = 0; i < faces.size(); ++i)
+        if (!faces[i].empty()) objects[root(faces[i].front())].push_back(i);
+    std::vector<std::vector<std::uint32_t>> out;
+    for (auto& [r, object] : objects) {
+        if (object.size() < 4) continue;
+        // closed: each directed edge once, and its reverse once
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+        for (std::uint32_t i : object)
+            for (std::size_t k = 0; k < faces[i].size(); ++k) edges.push_back({faces[i][k], faces[i][(k + 1) % faces[i].size()]});
+        std::sort(edges.begin(), edges.end());
+        const bool closed = std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
+                            std::all_of(edges.begin(), edges.end(), [&](const auto& e) {
+                                return std::binary_search(edges.begin(), edges.end(), std::pair{e.second, e.first});
+                            });
+        if (!closed) continue;
+        // convex: every vertex on or behind every face's plane (outward normals by the counter-clockwise winding)
+        std::vector<Vec3> points;
+        for (std::uint32_t i : object)
+            for (const auto& v : scene.polygons[i].vertices) points.emplace_back(v);
+        const Tolerance tol = Tolerance::for_points(points);
+        const bool convex = std::all_of(object.begin(), object.end(), [&](std::uint32_t i) {
+            std::vector<Vec3> face;
+            for (const auto& v : scene.polygons[i].vertices) face.emplace_back(v);
+            Plane p;
+            return plane_of(face, p) && std::all_of(points.begin(), points.end(), [&](const Vec3& q) { return p.distance(q) <= tol.epsilon; });
+        });
+        if (convex) out.push_back(std::move(object));
+    }
+    std::sort(out.begin(), out.end());  // in the scene's order, whatever the hash did
+    return out;
+}
+
+// ── fusion ──────────────────────────────────────────────────────────────────────────────────────────────────
+namespace {
+// The part of a convex polygon on the left of the directed line a → b (keep_left) or on its right.
+std::vector<Vec2> clip_to_side(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& b, bool keep_left) {
+    std::vector<Vec2> out;
+    const auto side = [&](const Vec2& p) { return keep_left ? cross(a, b, p) : -cross(a, b, p); };
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
+        const double sp = side(p), sq = side(q);
+        if (sp >= 0) out.push_back(p);
+        if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
+    }
+    return out;
+}
+}  // namespace
+
+Coverage covered_by_union(const std::vector<Vec2>& image, std::span<const std::vector<Vec2>> covers, double gap, std::size_t max_pieces) {
+    Coverage c;
+    if (thinner_than(image, gap)) return {false, 0, std::abs(area(image))};  // nothing to cover is no proof of being hidden
+    std::vector<std::vector<Vec2>> left{image};  // what no cover has taken yet, in convex pieces
+    for (const std::vector<Vec2>& cover : covers) {
+        if (left.empty()) break;
+        bool took = false;
+        std::vector<std::vector<Vec2>> next;
+        for (const std::vector<Vec2>& piece : left) {
+            // piece − cover: the parts outside each edge of the cover in turn, and what is inside them all goes
+            std::vector<std::vector<Vec2>> outside;
+            std::vector<Vec2> inside = piece;
+            for (std::size_t e = 0; e < cover.size() && !thinner_than(inside, gap); ++e) {
+                const Vec2 &a = cover[e], &b = cover[(e + 1) % cover.size()];
+                if (auto out = clip_to_side(inside, a, b, false); !thinner_than(out, gap)) outside.push_back(std::move(out));
+                inside = clip_to_side(inside, a, b, true);
+            }
+            if (thinner_than(inside, gap)) {
+                next.push_back(piece);  // the cover missed it (or only grazed it): keep it whole
+                continue;
+            }
+            took = true;
+            for (auto& o : outside) next.push_back(std::move(o));
+        }
+        c.used += took;
+        left = std::move(next);
+        if (left.size() > max_pieces) break;
+    }
+    for (const auto& piece : left) c.area_left += std::abs(area(piece));
+    c.covered = left.empty();
+    return c;
+}
+
+std::optional<std::vector<Vec2>> box_image(const Aabb& box, const ViewPlane& view) {
+    std::vector<Vec2> corners;
+    for (int k = 0; k < 8; ++k) {
+        const auto at = view.image(box.corner(k));
+        if (!at) return std::nullopt;
+        corners.push_back(*at);
+    }
+    return convex_hull(std::move(corners));
+}
+
+}  // namespace hsr::algo
