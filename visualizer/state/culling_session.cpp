@@ -203,10 +203,12 @@ const Pseudocode<HierarchyCullEvent> frustum_lines = {
     {"done", {step<HierarchyCullFinished>()}},
 };
 const Pseudocode<OcclusionEvent> occluder_lines = {
-    {"choose occluders: f = -A (n . v) / |v|^2, the best first", {step<OccluderChosen>()}},
+    {"choose occluders (polygons, proxies, solids):", {}},
+    {"  f = -A (n . v) / |v|^2, the best first", {step<OccluderChosen>()}},
     {"occlusion frustum: eye and the occluder's edges, and its plane", {}},
     {"Cull(node):", {}},
-    {"  wholly inside one occlusion frustum: cull node and subtree", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::occluded; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::occluded; })}},
+    {"  wholly inside one occlusion frustum: cull node and subtree", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::occluded && !e.fused; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::occluded && !e.fused; })}},
+    {"  fusion: image covered by occluders it lies behind: cull", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.fused; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.fused > 0; })}},
     {"  partly inside: test its primitives; Cull(each child)", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::partly; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::partly; })}},
     {"  outside them all: pass it on to hidden-surface elimination", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0; }), micro<OcclusionTested>()}},
     {"done", {step<OcclusionFinished>()}},
