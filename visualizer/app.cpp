@@ -74,6 +74,7 @@ void keys(const SDL_Event& e, UiActions& a) {
         case SDLK_m: a.toggle_menu = true; break;
         case SDLK_o: a.open_file = true; break;
         case SDLK_x: a.toggle_practice = true; break;
+        case SDLK_w: a.toggle_walk = true; break;  // culling and portal lessons: walk through the scene
         case SDLK_PERIOD:
         case SDLK_KP_PERIOD: a.typed = '.'; break;
         case SDLK_COMMA: a.typed = ','; break;

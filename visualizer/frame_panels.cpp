@@ -59,12 +59,13 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
     const Session& s = *lp.session();
     // the family's canvases and state panel, then what every lesson has
     PanelFrame panels{view_w, view_h, layout, lp.second_view, lp.animate, actions};
-    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_panels(session, panels); });
+    bool walking = false;  // a walk through the scene (W) needs the column for its stages, not the step-through's boxes
+    lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_panels(session, panels), walking = screen.walking(session); });
     if (s.lesson().chapters.empty()) lesson_panel(s, detail, layout);
     else chapter_lesson_panel(s, lp.classroom, detail, layout);
-    pseudocode_panel(s, layout);
+    if (!walking) pseudocode_panel(s, layout);
     if (lp.practice.open && lp.path == lp.practice_scene) practice_panel(lp.practice, layout, actions);
-    else question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
+    else if (!walking) question_panel(s, lp.classroom, lp.next_in_course(), layout, actions);
     if (lp.show_report)
         report_panel(lp.report, lp.measuring.running() ? std::optional(lp.measuring.fraction()) : std::nullopt, layout, actions);
     if (lp.show_keys) keys_panel(layout);
@@ -72,8 +73,8 @@ void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, 
         preset_panel(lp.presets, has_random_scene(s.lesson().algorithm), lp.next_seed, lp.path != lp.home, layout, actions);
     if (lp.show_menu) lesson_menu(lp.course, lp.home, lp.menu_cursor, lp.classroom.chosen_language(), layout, actions);
     toast_panel(lp.toasts, seconds_now(), layout);
-    narration_panel(s, layout);
-    const Question* open = lp.classroom.open_question(s);
+    if (!walking) narration_panel(s, layout);
+    const Question* open = walking ? nullptr : lp.classroom.open_question(s);  // a walk hides the question: no key answers it
     std::vector<TimelineMark> marks;
     if (const LessonScript* script = lp.classroom.script())
         for (std::size_t k = 0; k < script->places().size() && k < s.lesson().chapters.size(); ++k)

@@ -293,11 +293,12 @@ void Lessonplay::save_edited(const algo::Scene& scene) {
 void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) {
     // In a screen's drive mode the arrows move the eye (and the machine's whole run is shown); else they step.
     UiActions a = keyed;
-    bool drives = false;
-    if (session()) with_family_screen([&](auto& s, auto& screen) { drives = screen.drives(s, second_view); });
-    if (drives && !show_menu) {
+    bool drives = false, walking = false;
+    if (session()) with_family_screen([&](auto& s, auto& screen) { drives = screen.drives(s, second_view), walking = screen.walking(s); });
+    if ((drives || walking) && !show_menu) {
         a.step = a.step_back = a.micro_step = a.micro_step_back = false;
-        a.to_end = a.to_end || a.forward || a.left;
+        if (!walking) a.to_end = a.to_end || a.forward || a.left;  // a walk leaves the lesson where it stands
+        if (walking) a.digit.reset(), a.answer.reset();          // and its question, hidden while it walks
     } else {
         a.forward = a.left = 0;
     }

@@ -140,12 +140,25 @@ Phrase phrase(const HizEvent& event) {
 
 std::string describe(const HizEvent& event) { return phrase(event).english(); }
 
-Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZBufferOptions o, std::vector<std::uint8_t> enabled) {
-    HizResult out{cleared_buffers(o), std::vector<std::uint8_t>(h->boxes.size(), 0), 0, 0, 0};
+Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZBufferOptions o, std::vector<std::uint8_t> enabled,
+                                      std::vector<std::uint8_t> draw_first) {
+    HizResult out{cleared_buffers(o), std::vector<std::uint8_t>(h->boxes.size(), 0), 0, 0, 0, 0};
+    const auto render = [&](std::uint32_t p) {
+        const ScenePolygon& poly = scene->polygons[p];
+        std::vector<glm::dvec4> clip;
+        for (const auto& v : poly.vertices) clip.push_back(to_clip(*scene, v));
+        const ScreenPolygon sp = project_polygon(poly.id, poly.color, std::move(clip), o.viewport);
+        fill_polygon(out.buffers, sp, std::int32_t(p), o);
+        out.rendered[p] = 1;
+        return sp;
+    };
+    std::uint32_t nodes = 0, rendered = 0;
+    // frame-to-frame coherence: what the previous frame saw first, then the pyramid over it
+    for (std::uint32_t p = 0; p < draw_first.size() && p < h->boxes.size(); ++p)
+        if (draw_first[p] && (enabled.empty() || enabled[p])) render(p), ++rendered, ++out.drawn_first;
     ZPyramid pyramid(out.buffers.depth, o.viewport.width, o.viewport.height);
     const std::vector<Plane> frustum = view_frustum(scene->camera);
     const Vec3 eye = scene->camera.eye;
-    std::uint32_t nodes = 0, rendered = 0;
     std::vector<std::uint32_t> stack;
     if (!h->nodes.empty()) stack.push_back(0);
     while (!stack.empty()) {
@@ -172,15 +185,9 @@ Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* h, ZB
         // render each primitive of N and update Zp over what it covered
         PixelRect touched{o.viewport.width, o.viewport.height, 0, 0};
         for (std::uint32_t p : node.primitives) {
-            if (!enabled.empty() && !enabled[p]) continue;
-            const ScenePolygon& poly = scene->polygons[p];
-            const ScreenPolygon sp = project_polygon(poly.id, poly.color, [&] {
-                std::vector<glm::dvec4> clip;
-                for (const auto& v : poly.vertices) clip.push_back(to_clip(*scene, v));
-                return clip;
-            }(), o.viewport);
-            fill_polygon(out.buffers, sp, std::int32_t(p), o);
-            out.rendered[p] = 1, ++rendered, ++e.primitives_rendered;
+            if ((!enabled.empty() && !enabled[p]) || out.rendered[p]) continue;  // culled before, or drawn first
+            const ScreenPolygon sp = render(p);
+            ++rendered, ++e.primitives_rendered;
             if (sp.status == ScreenStatus::drawn)
                 touched = {std::min(touched.x0, 0), std::min(touched.y0, std::max(sp.row_begin, 0)), o.viewport.width,
                            std::max(touched.y1, std::min(sp.row_end, o.viewport.height))};

@@ -89,11 +89,15 @@ struct HizResult {
     FrameDepth buffers;
     std::vector<std::uint8_t> rendered;  // per primitive
     std::uint32_t occluded_nodes = 0, outside_nodes = 0, texels_tested = 0;
+    std::uint32_t drawn_first = 0;  // of the rendered, those drawn before the walk (frame-to-frame coherence)
 };
 
 // Cull_or_Render over an octree (or BVH) of the scene's polygons. The scene and hierarchy must outlive the machine.
-// `enabled` (per polygon; empty: all) leaves out what earlier stages culled.
+// `enabled` (per polygon; empty: all) leaves out what earlier stages culled. `draw_first` (per polygon; empty:
+// none) is frame-to-frame coherence, Greene's: what the previous frame saw is rendered before the walk, and the
+// pyramid built from it, so the walk starts against a nearly full pyramid. It stays conservative: whatever the
+// previous frame saw, what is tested is tested against depth really drawn this frame.
 Steps<HizEvent, HizResult> hiz_render(const Scene* scene, const Hierarchy* hierarchy, ZBufferOptions options,
-                                      std::vector<std::uint8_t> enabled = {});
+                                      std::vector<std::uint8_t> enabled = {}, std::vector<std::uint8_t> draw_first = {});
 
 }  // namespace hsr::algo

@@ -47,30 +47,51 @@ std::vector<Stage> parse_stages(std::string_view list) {
     return out;
 }
 
-PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
+PreparedScene prepare_scene(const Scene& given, const PipelineOptions& o) {
+    const auto t = Clock::now();
+    PreparedScene p;
     // A floor plan plays as its rooms' walls, floors and objects
-    std::optional<CellModel> model;
-    if (!given.floor_plan.cells.empty()) model = cell_model(given);
-    const Scene rooms = model ? model_scene(*model) : Scene{};
-    const Scene& scene = model ? rooms : given;
+    if (!given.floor_plan.cells.empty()) p.model = cell_model(given);
+    p.scene = p.model ? model_scene(*p.model) : given;
+    const auto wanted = [&](Stage s) { return std::find(o.stages.begin(), o.stages.end(), s) != o.stages.end(); };
+    p.hierarchy = build_hierarchy(polygon_boxes(p.scene), {.kind = o.hierarchy}).run_to_end();
+    // and the objects that are solid occluders, found once like the hierarchy
+    if (o.occluders == OccluderKind::solid && wanted(Stage::occluders)) p.solids = convex_solids(p.scene);
+    if (p.model && wanted(Stage::portals)) p.cell_bsp = build_cell_bsp(*p.model), p.pvs = build_pvs(&*p.model).run_to_end();
+    p.milliseconds = ms_since(t);
+    return p;
+}
+
+PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
+    PreparedScene prepared = prepare_scene(given, o);
+    const Camera camera = prepared.scene.camera;
+    return run_frame(prepared, camera, o);
+}
+
+std::vector<std::uint8_t> seen_in(const PipelineResult& frame, std::size_t polygons) {
+    std::vector<std::uint8_t> seen(polygons, 0);
+    for (const std::int32_t p : frame.frame.polygon)
+        if (p >= 0 && std::size_t(p) < polygons) seen[std::size_t(p)] = 1;
+    return seen;
+}
+
+PipelineResult run_frame(PreparedScene& prepared, const Camera& camera, const PipelineOptions& o, const std::vector<std::uint8_t>& seen_before) {
+    prepared.scene.camera = camera;
+    if (prepared.model) prepared.model->camera = camera;
+    const Scene& scene = prepared.scene;
+    const Hierarchy& hierarchy = prepared.hierarchy;
     const std::size_t n = scene.polygons.size();
     const auto wanted = [&](Stage s) { return s == Stage::hse || std::find(o.stages.begin(), o.stages.end(), s) != o.stages.end(); };
     PipelineResult out;
     out.kept.assign(n, 1);
     const ZBufferOptions zo = zbuffer_options(scene, o.viewport, o.format, EventDetail::polygon);
-    // The hierarchy the stages walk: pre-processing, built once
-    const auto t_hierarchy = Clock::now();
-    const Hierarchy hierarchy = build_hierarchy(polygon_boxes(scene), {.kind = o.hierarchy}).run_to_end();
-    // and the objects that are solid occluders, found once like the hierarchy
-    const bool solids_wanted = o.occluders == OccluderKind::solid && wanted(Stage::occluders);
-    const std::vector<std::vector<std::uint32_t>> solids = solids_wanted ? convex_solids(scene) : std::vector<std::vector<std::uint32_t>>{};
-    out.hierarchy_milliseconds = ms_since(t_hierarchy);
+    out.hierarchy_milliseconds = prepared.milliseconds;
     bool rendered = false;
     for (const Stage stage : all_stages) {
         StageReport r{stage};
         r.in = std::uint32_t(std::count(out.kept.begin(), out.kept.end(), 1));
         r.candidates = out.kept;
-        if (!wanted(stage) || (stage == Stage::hse && rendered) || (stage == Stage::portals && !model)) {
+        if (!wanted(stage) || (stage == Stage::hse && rendered) || (stage == Stage::portals && !prepared.pvs)) {
             r.passed = r.in;
             out.stages.push_back(r);
             continue;
@@ -102,18 +123,16 @@ PipelineResult run_pipeline(const Scene& given, const PipelineOptions& o) {
                 break;
             case Stage::occluders:
                 keep = occlusion_cull(&scene, &hierarchy,
-                                      {.max_occluders = o.max_occluders, .candidates = out.kept, .kind = o.occluders, .fusion = o.fusion, .solids = &solids})
+                                      {.max_occluders = o.max_occluders, .candidates = out.kept, .kind = o.occluders, .fusion = o.fusion,
+                                       .solids = &prepared.solids})
                            .run_to_end()
                            .kept;
                 break;
-            case Stage::portals: {  // what portal_render draws through the PVS and the narrowing frusta
-                const CellBsp bsp = build_cell_bsp(*model);
-                const Pvs pvs = build_pvs(&*model).run_to_end();
-                keep = portal_render(&*model, &bsp, &pvs, model->camera).run_to_end().drawn;
+            case Stage::portals:  // what portal_render draws through the PVS and the narrowing frusta
+                keep = portal_render(&*prepared.model, &*prepared.cell_bsp, &*prepared.pvs, camera).run_to_end().drawn;
                 break;
-            }
             case Stage::hiz: {
-                HizResult hiz = hiz_render(&scene, &hierarchy, zo, out.kept).run_to_end();
+                HizResult hiz = hiz_render(&scene, &hierarchy, zo, out.kept, seen_before).run_to_end();
                 keep = std::move(hiz.rendered);
                 out.frame = std::move(hiz.buffers);
                 rendered = true;  // it rendered as it culled: the z-buffer's work is done

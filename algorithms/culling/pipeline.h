@@ -11,12 +11,16 @@
 
 #include <chrono>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "culling/hierarchy.h"
 #include "culling/occluders.h"
+#include "portals/cell_bsp.h"
+#include "portals/pvs.h"
 #include "zbuffer/zbuffer_fill.h"
 
 namespace hsr::algo {
@@ -56,5 +60,25 @@ struct PipelineResult {
 };
 
 PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& options);
+
+// What stays the same from frame to frame when only the eye moves, made once: the polygons (a floor plan's rooms),
+// the hierarchy, the solid occluders, and a floor plan's cell BSP and PVS. Walking through the scene runs frames
+// on it (run_frame); run_pipeline is one frame on a scene prepared for it.
+struct PreparedScene {
+    std::optional<CellModel> model;  // a floor-plan scene's
+    Scene scene;                     // the polygons the stages work on; its camera is the frame's
+    Hierarchy hierarchy;
+    std::vector<std::vector<std::uint32_t>> solids;  // when the occluders stage uses solid occluders
+    std::optional<CellBsp> cell_bsp;
+    std::optional<Pvs> pvs;
+    double milliseconds = 0;  // the time it took
+};
+PreparedScene prepare_scene(const Scene& scene, const PipelineOptions& options);
+// One frame from `camera` (the prepared scene's camera becomes it). `seen_before` (per polygon; empty: none): what
+// the previous frame saw, which the Hi-Z stage draws first (frame-to-frame coherence).
+PipelineResult run_frame(PreparedScene& prepared, const Camera& camera, const PipelineOptions& options,
+                         const std::vector<std::uint8_t>& seen_before = {});
+// What a frame saw: per polygon, whether some pixel shows it.
+std::vector<std::uint8_t> seen_in(const PipelineResult& frame, std::size_t polygons);
 
 }  // namespace hsr::algo

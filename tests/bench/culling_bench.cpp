@@ -4,7 +4,10 @@
 //   build/tests/bench/hsr_bench --benchmark_filter=Culling --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include "culling/pipeline.h"
+#include "state/walkthrough.h"
 #include "scene/generated_scenes.h"
 
 using namespace hsr::algo;
@@ -46,5 +49,47 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_CullingPipeline)->Apply(sizes);
 BENCHMARK(BM_CullingNone)->Apply(sizes);
+
+// Walking through the city (state/walkthrough.h, key W in the window): 60 frames along one path at 320 × 240, the
+// median and the slowest frame time per set of stages, and what the last stage drew on average.
+//   build/tests/bench/hsr_bench --benchmark_filter=Walk --benchmark_counters_tabular=true
+void BM_Walk(benchmark::State& state) {
+    const Scene scene = city_scene({.triangles = std::size_t(state.range(1)), .seed = 3});
+    using S = Stage;
+    struct Setting {
+        const char* name;
+        std::vector<Stage> stages;
+        PipelineOptions options;
+        bool coherent;
+    };
+    const Setting settings[] = {
+        {"no culling", {}, {}, false},
+        {"back-face, frustum", {S::back_face, S::frustum}, {}, false},
+        {"+ occluders", {S::back_face, S::frustum, S::occluders}, {}, false},
+        {"+ solid occluders, fused", {S::back_face, S::frustum, S::occluders}, {.occluders = OccluderKind::solid, .fusion = true}, false},
+        {"+ Hi-Z", {S::back_face, S::frustum, S::hiz}, {}, false},
+        {"+ Hi-Z from the previous frame", {S::back_face, S::frustum, S::hiz}, {}, true},
+    };
+    const Setting& setting = settings[state.range(0)];
+    std::vector<double> ms;
+    double drawn = 0;
+    for (auto _ : state) {
+        hsr::viz::Walkthrough walk(scene, setting.stages, {320, 240}, setting.options);
+        walk.set_coherent(setting.coherent);
+        for (int k = 0; k < 60; ++k) {
+            const PipelineResult& r = walk.frame();
+            ms.push_back(walk.frame_ms());
+            drawn += double(r.stages.back().in);
+            if (k % 10 == 9) walk.walk(0, 1);  // a turn now and then, else straight on
+            else walk.walk(1, 0);
+        }
+    }
+    std::sort(ms.begin(), ms.end());
+    state.SetLabel(std::string(setting.name) + ", " + std::to_string(scene.polygons.size()) + " polygons");
+    state.counters["median_ms"] = ms[ms.size() / 2];
+    state.counters["slowest_ms"] = ms.back();
+    state.counters["drawn"] = drawn / double(ms.size());
+}
+BENCHMARK(BM_Walk)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {3000, 30000}})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

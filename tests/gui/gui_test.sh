@@ -269,6 +269,21 @@ case "$case" in
             if (d > 1e-12) { print "eye", ex, ey, "target", tx, ty, "expected", wx, wy, vx, vy; exit 1 } }' "$saved"
     "$hsrviz" 04_bsp_build.toml --screenshot back.png --frames 2 --keys "V,V,Right,Right" > back.txt
     grep -q "at step 2 of 41" back.txt ;;         # V again: the arrows step again
+  walk)  # W in a culling lesson: the arrows walk and turn the eye (the lesson does not step), each move runs the
+         # pipeline again from the new eye (one line each); W again: the arrows step again. The same in a portal lesson.
+    "$hsrviz" "$src/lessons/25_culling_hiz.toml" --screenshot walk.png --frames 2 --keys "W,Up,Up,Left,Right,Down" > walk.txt
+    cat walk.txt
+    "$png_check" walk.png 1280 800
+    [ "$(grep -c '^hsrviz: walk: eye' walk.txt)" -eq 6 ]      # the first frame, then one per key
+    grep -q "at step 0 of" walk.txt                          # no step taken
+    grep '^hsrviz: walk:' walk.txt | tail -1 | grep -q "hiz .* left out; frame"
+    first=$(grep '^hsrviz: walk: eye' walk.txt | head -1 | sed 's/.*eye \([^ ]*\) .*/\1/')
+    last=$(grep '^hsrviz: walk: eye' walk.txt | tail -1 | sed 's/.*eye \([^ ]*\) .*/\1/')
+    [ "$first" != "$last" ]                                   # the eye moved
+    "$hsrviz" "$src/lessons/24_culling_occluders.toml" --screenshot back.png --frames 2 --keys "W,Up,W,Right,Right" > back.txt
+    grep -q "at step 2 of" back.txt                           # W again: the arrows step again
+    "$hsrviz" "$src/lessons/19_portals_render.toml" --screenshot rooms.png --frames 2 --keys "W,Up,Left" > rooms.txt
+    grep -q "portals .* left out" rooms.txt ;;
   drop)  # files dropped on the window together: the lesson among them opens, its scene found beside it; O on the
          # desktop says to drop a file (a browser shows its picker); the player's trace hash is printed
     mkdir -p mine

@@ -77,7 +77,7 @@ algo::Image render_culled(const algo::Scene& scene, const RenderOptions& o, algo
     algo::PipelineResult r = algo::run_pipeline(
         scene, {.stages = algo::parse_stages(*o.cull), .viewport = vp, .format = format_named(o.format), .occluders = occluders, .fusion = o.fusion});
     const double total = ms_since(start);
-    std::printf("hierarchy (octree) built in %.3f ms\n", r.hierarchy_milliseconds);
+    std::printf("built once (the octree; the solid occluders, cell BSP and PVS when asked for) in %.3f ms\n", r.hierarchy_milliseconds);
     for (const algo::StageReport& s : r.stages) {
         const std::string name(to_string(s.stage));
         if (!s.ran && s.stage == algo::Stage::hse && r.frame.image.width > 0)

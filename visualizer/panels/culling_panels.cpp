@@ -2,6 +2,8 @@
 #include "panels/culling_panels.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -149,6 +151,75 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
         }
         ImGui::EndTabBar();
     }
+    end_column_box(l, Box::state);
+}
+
+void walk_panel(const Walkthrough& walk, const PanelLayout& l, UiActions& out) {
+    begin_column_box(l, Box::state, (tr("walk.title") + "###state").c_str());
+    const auto n = [](auto value) { return std::to_string(value); };
+    const algo::Camera& c = walk.camera();
+    char eye[96];
+    std::snprintf(eye, sizeof eye, "%.2f, %.2f, %.2f", c.eye.x, c.eye.y, c.eye.z);
+    wrapped_text(tr("walk.keys"), dim_text);
+    if (!walk.error().empty()) wrapped_text(tr("walk.cannot", {{"why", walk.error()}}), ImVec4(1.0f, 0.55f, 0.4f, 1));
+    const algo::PipelineResult& r = walk.last();
+    if (ImGui::BeginTable("walk", 4, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) {
+        const float pad = 2 * ImGui::GetStyle().CellPadding.x;
+        const auto wide = [&](std::initializer_list<std::string> words) {
+            float w = 0;
+            for (const std::string& t : words) w = std::max(w, ImGui::CalcTextSize(t.c_str()).x);
+            return w + pad;
+        };
+        const std::string stage = tr("culling.stage"), in = tr("culling.in"), left_out = tr("culling.left_out"), ms = tr("culling.ms");
+        ImGui::TableSetupColumn(stage.c_str(), ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn(in.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({in, "000000"}));
+        ImGui::TableSetupColumn(left_out.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({left_out, "000000"}));
+        ImGui::TableSetupColumn(ms.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({ms, "000.00"}));
+        ImGui::TableHeadersRow();
+        const std::vector<algo::Stage> switchable = walk.switchable();
+        for (std::size_t k = 0; k < std::size(algo::all_stages); ++k) {
+            const algo::Stage st = algo::all_stages[k];
+            const bool can = st == algo::Stage::hse || std::find(switchable.begin(), switchable.end(), st) != switchable.end();
+            if (!can) continue;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            const auto report = std::find_if(r.stages.begin(), r.stages.end(), [&](const algo::StageReport& x) { return x.stage == st; });
+            const bool drawn_by_hiz = report != r.stages.end() && st == algo::Stage::hse && !report->ran;  // Hi-Z rendered as it culled
+            ImGui::PushID(int(k));
+            if (st == algo::Stage::hse) ImGui::TextUnformatted((stage_name(st) + (drawn_by_hiz ? " " + tr("walk.by_hiz") : "")).c_str());
+            else if (bool on = walk.on(st); ImGui::Checkbox(stage_name(st).c_str(), &on)) out.walk_stage = int(k);
+            ImGui::PopID();
+            if (drawn_by_hiz) {
+                ImGui::TableNextColumn();
+                ImGui::Text("%u", report->in);
+                ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
+                ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
+                continue;
+            }
+            if (report == r.stages.end() || !report->ran) {
+                for (int c2 = 0; c2 < 3; ++c2) ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
+                continue;
+            }
+            ImGui::TableNextColumn();
+            ImGui::Text("%u", report->in);
+            ImGui::TableNextColumn();
+            ImGui::Text("%u", report->left_out);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", report->milliseconds);
+        }
+        ImGui::EndTable();
+    }
+    char frame_ms[32], window_ms[32];
+    std::snprintf(frame_ms, sizeof frame_ms, "%.2f", walk.frame_ms());
+    std::snprintf(window_ms, sizeof window_ms, "%.1f", 1000.0 / std::max(1.0f, ImGui::GetIO().Framerate));
+    const std::size_t drawn = r.kept.empty() ? 0 : std::size_t(std::count(r.kept.begin(), r.kept.end(), 1));
+    wrapped_text(tr("walk.frame", {{"ms", frame_ms}, {"drawn", n(drawn)}, {"primitives", n(walk.scene().polygons.size())}, {"window", window_ms}}));
+    if (walk.on(algo::Stage::hiz)) {
+        bool coherent = walk.coherent();
+        if (ImGui::Checkbox(tr("walk.coherent").c_str(), &coherent)) out.walk_coherent = coherent;
+        wrapped_text(walk.coherent() ? tr("walk.drawn_first", {{"first", n(walk.drawn_first())}}) : tr("walk.coherence_why"), dim_text);
+    }
+    wrapped_text(tr("walk.eye", {{"eye", eye}}), dim_text);
     end_column_box(l, Box::state);
 }
 

@@ -9,10 +9,14 @@
 
 #include "panels/lesson_panels.h"
 #include "state/culling_session.h"
+#include "state/walkthrough.h"
 
 namespace hsr::viz {
 
 void culling_state_panel(const CullingLesson& s, const PanelLayout& layout);
+// Walking through the scene (W): each stage with a switch, what reached it, what it left out and its time, the
+// frame's time, the Hi-Z stage's frame-to-frame coherence; the switches fill in `out`.
+void walk_panel(const Walkthrough& walk, const PanelLayout& layout, UiActions& out);
 // Over the view area: the Z-pyramid's finest levels, built from `depth`, the depth buffer of what has been rendered
 // so far (rendered_depth: the Hi-Z lesson).
 void zpyramid_canvas(const CullingView& view, const std::vector<std::uint32_t>& depth, float x, float y, float w, float h);

@@ -25,6 +25,7 @@ void keys_panel(const PanelLayout& l) {
         {"X", "keys.practice"},
         {"R", "keys.report"},
         {"V", "keys.view"},
+        {"W", "keys.walk"},
         {"F5", "keys.reload"},
         {"O", "keys.open"},
         {"E", "keys.export"},

@@ -69,6 +69,11 @@ struct UiActions {
     bool open_file = false;                                        // O: a lesson or scene file of the person's own
     int up_down = 0;                                               // ↑ −1, ↓ +1 (the menu's highlight)
     int forward = 0, left = 0;  // ↑ +1 ↓ −1, ← +1 → −1: a screen's drive mode (2D BSP) takes them instead of the steps
+    // W: walk through a culling scene (the arrows walk and turn, a drag looks around); a stage switched on or off
+    // (its index in algo::all_stages), the Hi-Z stage's frame-to-frame coherence
+    bool toggle_walk = false;
+    std::optional<int> walk_stage;
+    std::optional<bool> walk_coherent;
     bool enter = false;                                            // Enter (opens the highlighted lesson)
     // X: practice; a key for the number being typed ('.', ',', '-', '\b' for Backspace; digits come as `digit`)
     bool toggle_practice = false;

@@ -100,4 +100,16 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
     }
 }
 
+void draw_walk_view(const Walkthrough& walk, LineBatches& out) {
+    const auto& polygons = walk.scene().polygons;
+    const auto& kept = walk.last().kept;
+    for (std::size_t i = 0; i < polygons.size() && i < kept.size(); ++i) {
+        if (!kept[i]) continue;
+        const auto& p = polygons[i];
+        const glm::vec4 c(p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, 1);
+        for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+            out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]), c);
+    }
+}
+
 }  // namespace hsr::viz

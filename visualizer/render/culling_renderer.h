@@ -11,10 +11,14 @@
 #include "render/label.h"
 #include "render/line_batch.h"
 #include "state/culling_session.h"
+#include "state/walkthrough.h"
 
 namespace hsr::viz {
 
 void draw_culling_view(const CullingView& view, LineBatches& batches, std::vector<Label>& labels);
 void culling_view_bounds(const CullingView& view, glm::vec3& centre, float& radius);
+
+// Walking (W): the primitives the walk's last frame drew, solid, as the walker's eye sees them.
+void draw_walk_view(const Walkthrough& walk, LineBatches& out);
 
 }  // namespace hsr::viz

@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Culling: a god's-eye view of the camera's frustum and the hierarchy's boxes coloured by what happened to them,
 // or the view from the scene's own camera (key V); the pipeline and the machine's panel beside it. One screen for
-// the four culling machines.
+// the four culling machines. W walks through the scene: the arrows and the mouse move the eye, each stage can be
+// switched, and the pipeline runs again from every new eye (state/walkthrough.h).
 #pragma once
 
-#include <cmath>
-
-#include <glm/trigonometric.hpp>
 
 #include "panels/culling_panels.h"
 #include "render/culling_renderer.h"
 #include "screens/screen.h"
+#include "screens/walk_mode.h"
 #include "state/culling_session.h"
 #include "state/strings.h"
 
@@ -30,25 +29,15 @@ public:
     }
     void draw_scene(const S& s, SceneFrame& f) const {
         const CullingWorld& w = *s.view().world;
+        if (walk_.walking()) return walk_.draw_scene(f);  // the walker's eye, and what its frame drew
         draw_culling_view(s.view(), f.batches, f.labels);
         f.detail = tr(f.second_view ? "culling.caption_camera" : "culling.caption_above",
                       {{"primitives", std::to_string(w.scene.polygons.size())},
                        {"hierarchy", w.hierarchy.kind == algo::HierarchyKind::bvh ? tr("culling.bvh") : tr("culling.octree")}});
-        if (f.second_view) {  // the view from the scene's own camera
-            algo::Camera eye = w.scene.camera;
-            eye.aspect = f.aspect();
-            // a canvas narrower than the lesson's image shows all of its width (and more above and below): what the
-            // pipeline renders at the sides stays in the picture
-            if (const double wide = w.scene.camera.aspect / eye.aspect; wide > 1) {
-                if (eye.projection == algo::Projection::perspective)
-                    eye.fov_y = 2 * glm::degrees(std::atan(std::tan(glm::radians(eye.fov_y) / 2) * wide));
-                else
-                    eye.box[2] *= wide, eye.box[3] *= wide;
-            }
-            f.view_projection = glm::mat4(algo::view_projection(eye));
-        }
+        if (f.second_view) f.view_projection = whole_width(w.scene.camera, f.aspect());  // the view from the scene's own camera
     }
     void draw_panels(const S& s, PanelFrame& f) {
+        if (walk_.walking()) return walk_.draw_panels(f);
         if (s.culling_machine() == algo::CullingMachine::hiz) {  // the Z-pyramid, rebuilt when a primitive is rendered
             if (depth_for_ != s.view().rendered.size()) depth_ = rendered_depth(s.view()), depth_for_ = s.view().rendered.size();
             zpyramid_canvas(s.view(), depth_, 0, 0, f.view_w, f.view_h);
@@ -56,7 +45,19 @@ public:
         culling_state_panel(s, f.layout);
     }
 
+    // Walking (W): the lesson's stages on at the start, its occluder shapes, from the lesson's camera
+    bool apply(S& s, const UiActions& a) {
+        const CullingWorld& w = *s.view().world;
+        const algo::OcclusionOptions occlusion = occlusion_options(s.lesson());
+        walk_.apply(a, w.scene, algo::parse_stages(s.lesson().cull),
+                    {.hierarchy = w.hierarchy.kind, .detail_pixels = w.detail_pixels, .occluders = occlusion.kind, .fusion = occlusion.fusion});
+        return false;
+    }
+    bool pointer(const S&, const Pointer& p, const ViewGeometry&, UiActions&) { return walk_.pointer(p); }
+    bool walking(const S&) const { return walk_.walking(); }
+
 private:
+    WalkMode walk_;
     std::vector<std::uint32_t> depth_;     // the depth buffer of the primitives rendered so far (Hi-Z)
     std::optional<std::size_t> depth_for_;  // how many primitives depth_ holds
 };

@@ -99,6 +99,10 @@ struct ScreenDefaults {
         return false;  // true: the arrow keys move the eye (UiActions::forward, left) instead of stepping
     }
     template <class S>
+    bool walking(const S&) const {
+        return false;  // true: the arrows walk through the scene (a screen's own walk), not step nor show the whole run
+    }
+    template <class S>
     bool two_d(const S&) const {
         return false;  // a 2D lesson (its random scenes are 2D too)
     }
