@@ -204,6 +204,7 @@ std::uint32_t fused_cover(const Aabb& box, const std::vector<Occluder>& occluder
     }
     if (covers.size() < 2) return 0;  // one alone was tested in 3D already
     const double size = std::max({glm::length(hi - lo), std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)});
+    if (!(size < 1e100)) return 0;  // areas of images this large overflow: no fusion, the box is passed on
     const Coverage c = covered_by_union(*image, covers, Tolerance::relative * size);
     return c.covered ? c.used : 0;
 }

@@ -409,6 +409,13 @@ TEST_CASE("fusion on cases built to break it", "[culling][occluders][fusion]") {
     CHECK(box_culled(scene_of(0, 1, 1, 0.3)));        // the right wall nearer still in front of the box
     CHECK(box_culled(scene_of(0, 2, 1e6, 1e-3)));     // giant walls, a tiny box
     CHECK(box_culled(scene_of(0, 2, 1e-6, 1e-10)));   // everything tiny
+    {  // near the double limits: no crash, nothing visible culled (fusion may give up)
+        const Scene huge = scene_of(0, 2, 1e150, 1e149);
+        const Run r = run(huge, OccluderKind::solid, true);
+        CHECK(r.cull.kept.size() == huge.polygons.size());
+        CHECK(r.cull.kept[0] == 1);
+        CHECK(r.cull.kept[1] == 1);
+    }
     // a box reaching across the eye's plane (its image turns over): never culled, and no crash
     Scene across = scene_of(0, 2, 1, 0.3);
     SceneId next = 100;
