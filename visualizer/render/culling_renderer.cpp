@@ -2,6 +2,7 @@
 #include "render/culling_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -106,9 +107,16 @@ void draw_walk_view(const Walkthrough& walk, LineBatches& out) {
     for (std::size_t i = 0; i < polygons.size() && i < kept.size(); ++i) {
         if (!kept[i]) continue;
         const auto& p = polygons[i];
-        const glm::vec4 c(p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, 1);
+        // flat colours, shaded a little by the face's turn to a light above and behind the eye: walls that meet at a
+        // corner stay apart
+        float shade = 1;
+        if (p.vertices.size() >= 3) {
+            const glm::vec3 n = glm::cross(glm::vec3(p.vertices[1] - p.vertices[0]), glm::vec3(p.vertices[2] - p.vertices[0]));
+            if (glm::length(n) > 0) shade = 0.65f + 0.35f * std::abs(glm::dot(glm::normalize(n), glm::normalize(glm::vec3(0.4f, 0.8f, 0.45f))));
+        }
+        const glm::vec4 c(shade * p.color.r / 255.f, shade * p.color.g / 255.f, shade * p.color.b / 255.f, 1);
         for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
-            out.faint.triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]), c);
+            out.faint.solid_triangle(glm::vec3(p.vertices[0]), glm::vec3(p.vertices[k]), glm::vec3(p.vertices[k + 1]), c);
     }
 }
 

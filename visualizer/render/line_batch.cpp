@@ -89,6 +89,7 @@ LineBatch::~LineBatch() {
 void LineBatch::clear() {
     lines_.clear();
     triangles_.clear();
+    solid_.clear();
     points_.clear();
 }
 
@@ -101,6 +102,12 @@ void LineBatch::triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec4 color)
     triangles_.push_back({a, color});
     triangles_.push_back({b, color});
     triangles_.push_back({c, color});
+}
+
+void LineBatch::solid_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec4 color) {
+    solid_.push_back({a, color});
+    solid_.push_back({b, color});
+    solid_.push_back({c, color});
 }
 
 void LineBatch::point(glm::vec3 p, glm::vec4 color) { points_.push_back({p, color}); }
@@ -124,6 +131,8 @@ void LineBatch::draw(const glm::mat4& view_projection, glm::vec2 viewport, float
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 
+    glDepthMask(GL_TRUE);
+    if (!solid_.empty()) upload_and_draw(solid_, GL_TRIANGLES);  // opaque faces hide what lies behind them
     glDepthMask(GL_FALSE);  // translucent faces never hide what is behind them
     upload_and_draw(triangles_, GL_TRIANGLES);
     glDepthMask(GL_TRUE);
