@@ -205,7 +205,18 @@ std::uint32_t fused_cover(const Aabb& box, const std::vector<Occluder>& occluder
     if (covers.size() < 2) return 0;  // one alone was tested in 3D already
     const double size = std::max({glm::length(hi - lo), std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)});
     if (!(size < 1e100)) return 0;  // areas of images this large overflow: no fusion, the box is passed on
-    const Coverage c = covered_by_union(*image, covers, Tolerance::relative * size);
+    const double gap = Tolerance::relative * size;
+    // a corner of the image in no cover cannot be covered: the cheap test first, the union only for what passes it
+    const auto in_cover = [&](const Vec2& p, const std::vector<Vec2>& c) {
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const Vec2 &a = c[i], &b = c[(i + 1) % c.size()];
+            if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) < -gap * glm::length(b - a)) return false;
+        }
+        return true;
+    };
+    for (const Vec2& corner : *image)
+        if (std::none_of(covers.begin(), covers.end(), [&](const std::vector<Vec2>& c) { return in_cover(corner, c); })) return 0;
+    const Coverage c = covered_by_union(*image, covers, gap);
     return c.covered ? c.used : 0;
 }
 
