@@ -56,7 +56,7 @@ struct PipelineResult {
     std::vector<StageReport> stages;  // one per stage in pipeline order, those not run marked so
     std::vector<std::uint8_t> kept;   // per polygon (of the scene, or of a floor plan's rooms): reached the last stage
     FrameDepth frame{Image(0, 0), {}, {}};
-    double hierarchy_milliseconds = 0;  // pre-processing: the hierarchy, and the solid occluders when asked for
+    double hierarchy_milliseconds = 0;  // pre-processing (prepare_scene): the hierarchy, the solids, a plan's PVS
 };
 
 PipelineResult run_pipeline(const Scene& scene, const PipelineOptions& options);
