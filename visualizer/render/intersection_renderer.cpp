@@ -5,6 +5,7 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 #include "volumes/kdop.h"
 
 namespace hsr::viz {
@@ -95,7 +96,7 @@ void draw_intersection_view(const IntersectionView& v, const algo::Scene& scene,
         const glm::vec4 colour = current ? palette::current_edge : glm::vec4(0.8f, 0.8f, 0.8f, 0.45f);
         (current ? out.bold : out.faint).line(f(ray.origin), f(end), colour);
         out.bold.point(f(ray.origin), colour);
-        labels.push_back({f(ray.origin), "ray " + std::to_string(r), colour});
+        labels.push_back({f(ray.origin), tr("intersection.ray_label", {{"ray", std::to_string(r)}}), colour});
     }
     if (v.hit_point) out.bold.point(f(*v.hit_point), palette::inside);
 }

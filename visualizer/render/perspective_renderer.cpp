@@ -5,6 +5,7 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/strings.h"
 
 namespace hsr::viz {
 
@@ -45,7 +46,7 @@ void draw_perspective_view(const PerspectiveView& v, const algo::Scene& scene, L
     const glm::vec3 eye = has_eye ? glm::vec3(*eye_place) : glm::vec3(0);
     if (has_eye) {
         out.bold.point(eye, palette::eye);
-        labels.push_back({eye, "eye", palette::eye});
+        labels.push_back({eye, tr("view.eye"), palette::eye});
     }
 
     const auto on_pair = [&](std::size_t i) { return v.pair && (v.pair->a == i || v.pair->b == i); };
