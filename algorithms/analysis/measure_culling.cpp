@@ -111,6 +111,7 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
         median_ms(o, [&] {
             frame_ms.clear(), lost = 0, drawn = 0;
             std::vector<std::uint8_t> seen;
+            algo::Scene at = city;  // the reference's scene, its camera moved along the path
             for (std::size_t k = 0; k < path.size(); ++k) {
                 const auto t = std::chrono::steady_clock::now();
                 algo::PipelineResult r = algo::run_frame(prepared, path[k], po, w.coherent ? seen : std::vector<std::uint8_t>{});
@@ -119,7 +120,6 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
                 drawn += r.stages.back().in;
                 if (w.stages.empty()) every[k] = std::move(r.frame);  // the reference: every primitive, from the same eye
                 else {
-                    algo::Scene at = city;
                     at.camera = path[k];
                     lost += lost_front_pixels(at, r.frame, every[k]);
                 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -138,7 +139,14 @@ std::vector<std::vector<std::size_t>> connected_objects(std::span<const std::vec
         while (parent[k] != k) k = parent[k] = parent[parent[k]];
         return k;
     };
-    std::map<std::array<double, 3>, std::size_t> first_with;  // a vertex → the first polygon that has it
+    struct PointHash {
+        std::size_t operator()(const std::array<double, 3>& p) const {
+            std::size_t h = 0;
+            for (const double x : p) h = h * 1000003u ^ std::hash<double>{}(x);
+            return h;
+        }
+    };
+    std::unordered_map<std::array<double, 3>, std::size_t, PointHash> first_with;  // a vertex → the first polygon that has it
     for (std::size_t k = 0; k < polygons.size(); ++k)
         for (const Vec3& v : polygons[k]) {
             const auto [at, fresh] = first_with.emplace(std::array<double, 3>{v.x, v.y, v.z}, k);

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
+#include <map>
 
 #include <glm/geometric.hpp>
+
+#include "culling/bounding_volume.h"
 
 
 namespace hsr::algo {
@@ -99,43 +101,21 @@ std::optional<std::vector<Vec3>> proxy_of(std::span<const Vec3> vertices, const 
 }
 
 // ── convex solids ───────────────────────────────────────────────────────────────────────────────────────────
-namespace {
-struct PointHash {
-    std::size_t operator()(const std::array<double, 3>& p) const {
-        std::size_t h = 0;
-        for (const double x : p) h = h * 1000003u ^ std::hash<double>{}(x);
-        return h;
-    }
-};
-}  // namespace
-
 std::vector<std::vector<std::uint32_t>> convex_solids(const Scene& scene) {
-    // the same vertex is the same point, bit for bit: a solid's faces are written with shared corners
-    std::unordered_map<std::array<double, 3>, std::uint32_t, PointHash> vertex_id;
-    std::vector<std::vector<std::uint32_t>> faces;
+    std::vector<std::vector<Vec3>> polygons;
     for (const ScenePolygon& p : scene.polygons) {
-        faces.emplace_back();
-        for (const auto& v : p.vertices) faces.back().push_back(vertex_id.emplace(std::array<double, 3>{v.x, v.y, v.z}, std::uint32_t(vertex_id.size())).first->second);
+        polygons.emplace_back();
+        for (const auto& v : p.vertices) polygons.back().emplace_back(v);
     }
-    // objects: polygons joined through shared vertices (union–find over the vertices)
-    std::vector<std::uint32_t> parent(vertex_id.size());
-    for (std::uint32_t k = 0; k < parent.size(); ++k) parent[k] = k;
-    const auto root = [&](std::uint32_t k) {
-        while (parent[k] != k) k = parent[k] = parent[parent[k]];
-        return k;
-    };
-    for (const auto& f : faces)
-        for (std::uint32_t v : f) parent[root(v)] = root(f.front());
-    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> objects;
-    for (std::uint32_t i = 0; i < faces.size(); ++i)
-        if (!faces[i].empty()) objects[root(faces[i].front())].push_back(i);
     std::vector<std::vector<std::uint32_t>> out;
-    for (auto& [r, object] : objects) {
+    for (const std::vector<std::size_t>& object : connected_objects(polygons)) {  // joined through shared vertices
         if (object.size() < 4) continue;
-        // closed: each directed edge once, and its reverse once
+        // closed: each directed edge once, and its reverse once (the same vertex is the same point, bit for bit)
+        std::map<std::array<double, 3>, std::uint32_t> vertex_id;
+        const auto id = [&](const Vec3& v) { return vertex_id.emplace(std::array<double, 3>{v.x, v.y, v.z}, std::uint32_t(vertex_id.size())).first->second; };
         std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-        for (std::uint32_t i : object)
-            for (std::size_t k = 0; k < faces[i].size(); ++k) edges.push_back({faces[i][k], faces[i][(k + 1) % faces[i].size()]});
+        for (std::size_t i : object)
+            for (std::size_t k = 0; k < polygons[i].size(); ++k) edges.push_back({id(polygons[i][k]), id(polygons[i][(k + 1) % polygons[i].size()])});
         std::sort(edges.begin(), edges.end());
         const bool closed = std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
                             std::all_of(edges.begin(), edges.end(), [&](const auto& e) {
@@ -144,18 +124,14 @@ std::vector<std::vector<std::uint32_t>> convex_solids(const Scene& scene) {
         if (!closed) continue;
         // convex: every vertex on or behind every face's plane (outward normals by the counter-clockwise winding)
         std::vector<Vec3> points;
-        for (std::uint32_t i : object)
-            for (const auto& v : scene.polygons[i].vertices) points.emplace_back(v);
+        for (std::size_t i : object) points.insert(points.end(), polygons[i].begin(), polygons[i].end());
         const Tolerance tol = Tolerance::for_points(points);
-        const bool convex = std::all_of(object.begin(), object.end(), [&](std::uint32_t i) {
-            std::vector<Vec3> face;
-            for (const auto& v : scene.polygons[i].vertices) face.emplace_back(v);
+        const bool convex = std::all_of(object.begin(), object.end(), [&](std::size_t i) {
             Plane p;
-            return plane_of(face, p) && std::all_of(points.begin(), points.end(), [&](const Vec3& q) { return p.distance(q) <= tol.epsilon; });
+            return plane_of(polygons[i], p) && std::all_of(points.begin(), points.end(), [&](const Vec3& q) { return p.distance(q) <= tol.epsilon; });
         });
-        if (convex) out.push_back(std::move(object));
+        if (convex) out.emplace_back(object.begin(), object.end());
     }
-    std::sort(out.begin(), out.end());  // in the scene's order, whatever the hash did
     return out;
 }
 
