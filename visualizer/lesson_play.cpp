@@ -350,7 +350,10 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
             std::printf("hsrviz: answered \"%s\": %s, the machine says \"%s\"\n", answer->c_str(), v->right ? "right" : "wrong", v->answer.c_str());
         playback.playing = false;
     }
-    if (a.next_chapter) classroom.next_chapter(p), playback.playing = false;
+    if (a.next_chapter) {
+        if (classroom.open_question(p) && classroom.script()->next_chapter(p.cursor())) tell("the open question was left unanswered (PageDown)", tr("notes.question_skipped"));
+        classroom.next_chapter(p), playback.playing = false;
+    }
     if (a.previous_chapter) classroom.previous_chapter(p), playback.playing = false;
     if (a.next_language) classroom.next_language(window_strings().languages());
     if (a.toggle_keys) show_keys = !show_keys;
@@ -400,18 +403,12 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
                 if (p.at_end()) playback.playing = false;
             }
         }
-        // a step forward stops where a chapter pauses, so that its question is asked before the events answer it
-        if (a.step || a.micro_step || playback.playing)
-            if (const auto stop = classroom.first_pause_crossed(p, cursor)) {
-                p.seek(*stop);
-                playback.playing = false;
-            }
+        // a step forward stops where a chapter pauses, so that its question is asked before the events answer it,
         // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
-        if (questions_hold && p.cursor() > cursor)
-            if (const auto hold = classroom.hold(cursor); hold && p.cursor() > *hold) {
-                p.seek(*hold);
-                playback.playing = false;
-            }
+        if (const auto stop = classroom.stop_forward(p, cursor, a.step || a.micro_step || playback.playing, questions_hold)) {
+            p.seek(*stop);
+            playback.playing = false;
+        }
         // nor, in practice, the event that decides the exercise before it is answered
         if (path == practice_scene)
             if (const auto hold = practice.hold(); hold && p.cursor() > *hold) {

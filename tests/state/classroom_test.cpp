@@ -243,3 +243,38 @@ TEST_CASE("a lesson's and its chapters' titles and summary may be given per lang
     CHECK_THROWS_WITH(load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml", "title = \"t\"\n" + scene + "[[chapters]]\nstep = 1\ntitle.xx = \"?\"\n"),
                       Catch::Contains("chapters[0].title.xx"));
 }
+
+TEST_CASE("every lesson stepped with the right arrow, each question answered as it opens, asks all its questions", "[lesson][classroom][order]") {
+    int lessons = 0;
+    for (const auto& e : std::filesystem::directory_iterator(HSR_SOURCE_DIR "/lessons")) {
+        if (e.path().extension() != ".toml") continue;
+        INFO(e.path().filename().string());
+        auto s = make_session(load_lesson(e.path().string()));
+        s->prefetch(prefetch_events);
+        s->seek(0);  // where the window opens a lesson
+        Classroom room;
+        room.attach(*s);
+        // what the window does on →, and on a number key while a question is open (its first choice, right or not)
+        int asked = 0;
+        std::size_t moves = 0;
+        while (!s->at_end() && moves++ < 100000) {
+            if (const Question* q = room.open_question(*s)) {
+                const auto chapter = room.chapter(*s);
+                REQUIRE(room.answer(*s, q->choices.empty() ? std::string("0") : q->choices.front()));
+                ++asked;
+                CHECK(room.chapter(*s) == chapter);  // the answer stays in the chapter that asked
+                room.close_revealed(*s);
+                continue;
+            }
+            const std::size_t before = s->cursor();
+            s->step();
+            if (const auto stop = room.stop_forward(*s, before, true, true)) s->seek(*stop);
+            room.close_revealed(*s);
+            REQUIRE(s->cursor() > before);  // never held where no question is open
+        }
+        CHECK(asked == room.questions());
+        CHECK(room.answered() == room.questions());
+        ++lessons;
+    }
+    CHECK(lessons >= 39);
+}

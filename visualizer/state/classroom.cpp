@@ -59,6 +59,15 @@ std::optional<std::size_t> Classroom::hold(std::size_t from) const {
     return first;
 }
 
+std::optional<std::size_t> Classroom::stop_forward(const Session& s, std::size_t before, bool stepping, bool questions_hold) const {
+    if (s.cursor() <= before) return std::nullopt;
+    std::optional<std::size_t> stop;
+    if (stepping) stop = first_pause_crossed(s, before);
+    if (questions_hold)
+        if (const auto h = hold(before); h && *h < s.cursor() && (!stop || *h < *stop)) stop = h;
+    return stop;
+}
+
 void Classroom::close_revealed(const Session& s) {
     if (!script_) return;
     for (std::size_t c = 0; c < script_->places().size(); ++c) {
@@ -75,16 +84,18 @@ std::optional<Verdict> Classroom::answer(Session& s, const std::string& given) {
     const Verdict v = judge(place, given);
     answers_[*c] = v;
     right_ += v.right;
-    s.seek(*place.answered);  // the next events decide: show the one that answered
+    // the next events decide: show the one that answered, but never move past the start of a later chapter (its
+    // words and its question come first; the verdict gives the deciding event's sentence meanwhile)
+    std::size_t to = *place.answered;
+    if (const auto next = script_->next_chapter(s.cursor())) to = std::min(to, *script_->places()[*next].starts - 1);
+    s.seek(std::max(to, s.cursor()));
     return v;
 }
 
 std::optional<Verdict> Classroom::verdict(const Session& s) const {
-    // the chapter showing, once its deciding event has been shown
+    // the chapter showing, once answered (or its deciding event shown first)
     const auto c = chapter(s);
     if (!c || !answers_.contains(*c)) return std::nullopt;
-    const auto& p = script_->places()[*c];
-    if (!p.held || *p.held >= s.cursor()) return std::nullopt;
     return answers_.at(*c);
 }
 

@@ -31,10 +31,15 @@ public:
     // answers it (or an earlier one that gives the answer away), so that the student answers before the machine
     // tells. nullopt: nothing holds.
     std::optional<std::size_t> hold(std::size_t from) const;
+    // After a move forward from `before` to the session's cursor, where it must stop instead (nullopt: nowhere):
+    // a step or play (`stepping`) at the first start of a chapter that pauses or asks; any move (End, the scrub bar
+    // too) just before the event that answers an open question, while `questions_hold`.
+    std::optional<std::size_t> stop_forward(const Session& session, std::size_t before, bool stepping, bool questions_hold) const;
     // After a move: a question whose deciding event has been shown before it was answered (a chapter skipped, a
     // reload at a later step) is closed; it scores nothing and its verdict says so.
     void close_revealed(const Session& session);
-    // Answers the open question with choice `index` (or text); the player steps to the answering event.
+    // Answers the open question with choice `index` (or text); the player steps to the answering event, or to the
+    // chapter's last step when a later chapter starts before it.
     std::optional<Verdict> answer(Session& session, const std::string& given);
     std::optional<Verdict> verdict(const Session& session) const;  // of the chapter showing, once answered or revealed
     // L: the next language the window can speak: the lesson's narration languages, then those with a window-word

@@ -42,6 +42,12 @@ LessonScript::LessonScript(const Session& s) {
                     break;
                 }
     }
+    // A question is asked in its own chapter: when the event that decides it lies beyond the start of the next
+    // chapter, the hold is the chapter's last step (the student answers before the class moves on, and the verdict
+    // gives the deciding event's sentence), never a step where another chapter shows.
+    for (ChapterPlace& p : places_)
+        if (p.held)
+            if (const auto next = next_chapter(*p.starts); next && *p.held >= *places_[*next].starts) p.held = *places_[*next].starts - 1;
 }
 
 std::optional<std::size_t> LessonScript::chapter_at(std::size_t step) const {
