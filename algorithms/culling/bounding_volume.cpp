@@ -57,67 +57,6 @@ Sphere sphere_of(std::span<const Vec3> points) {
     return s;
 }
 
-namespace {
-
-// Eigenvectors of a symmetric 3×3 matrix by cyclic Jacobi rotations (columns of v).
-void jacobi(double a[3][3], double v[3][3]) {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) v[i][j] = i == j;
-    for (int sweep = 0; sweep < 50; ++sweep) {
-        const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-        if (off < 1e-30) return;
-        for (int p = 0; p < 2; ++p)
-            for (int q = p + 1; q < 3; ++q) {
-                if (std::abs(a[p][q]) < 1e-300) continue;
-                const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
-                const double t = (theta >= 0 ? 1 : -1) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-                const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-                for (int k = 0; k < 3; ++k) {  // a = Jᵀ a J
-                    const double akp = a[k][p], akq = a[k][q];
-                    a[k][p] = c * akp - s * akq, a[k][q] = s * akp + c * akq;
-                }
-                for (int k = 0; k < 3; ++k) {
-                    const double apk = a[p][k], aqk = a[q][k];
-                    a[p][k] = c * apk - s * aqk, a[q][k] = s * apk + c * aqk;
-                }
-                for (int k = 0; k < 3; ++k) {
-                    const double vkp = v[k][p], vkq = v[k][q];
-                    v[k][p] = c * vkp - s * vkq, v[k][q] = s * vkp + c * vkq;
-                }
-            }
-    }
-}
-
-}  // namespace
-
-Obb obb_of(std::span<const Vec3> points) {
-    Obb box;
-    if (points.empty()) return box;
-    Vec3 mean(0);
-    for (const Vec3& p : points) mean += p / double(points.size());
-    double c[3][3] = {};
-    for (const Vec3& p : points) {
-        const Vec3 d = p - mean;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) c[i][j] += d[i] * d[j];
-    }
-    double v[3][3];
-    jacobi(c, v);
-    for (int k = 0; k < 3; ++k) box.axes[std::size_t(k)] = glm::normalize(Vec3(v[0][k], v[1][k], v[2][k]));
-    box.axes[2] = glm::normalize(glm::cross(box.axes[0], box.axes[1]));  // orthonormal and right-handed
-    box.axes[1] = glm::cross(box.axes[2], box.axes[0]);
-    Vec3 lo(1e300), hi(-1e300);
-    for (const Vec3& p : points)
-        for (int k = 0; k < 3; ++k) {
-            const double t = glm::dot(p, box.axes[std::size_t(k)]);
-            lo[k] = std::min(lo[k], t), hi[k] = std::max(hi[k], t);
-        }
-    box.half = (hi - lo) / 2.0;
-    const Vec3 mid = (hi + lo) / 2.0;
-    box.centre = box.axes[0] * mid.x + box.axes[1] * mid.y + box.axes[2] * mid.z;
-    return box;
-}
-
 double enclosed_volume(std::span<const std::vector<Vec3>> polygons) {
     double six = 0;
     for (const auto& p : polygons)

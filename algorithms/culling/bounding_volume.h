@@ -44,9 +44,14 @@ Aabb aabb_of(std::span<const Vec3> points);
 // Ritter's sphere (two passes: a first guess from distant points, grown to take in every point): within ~5–20 % of
 // the smallest.
 Sphere sphere_of(std::span<const Vec3> points);
-// Axes from the principal components of the points (eigenvectors of their covariance, by Jacobi rotations), then
-// the extents along them.
-Obb obb_of(std::span<const Vec3> points);
+// Axes from the principal components of the distinct points (eigenvectors of their covariance, by Jacobi
+// rotations), then the extents along them; given the object's face normals, and when they point in few directions
+// (at most 64: a box, a prism), a box with each as one axis and the smallest rectangle across it replaces that one
+// where it is smaller (a triangulated box, turned, then gets its own box: principal axes alone are arbitrary for a
+// cube and pulled aside by corners that many triangles share). In oriented_box.cpp.
+Obb obb_of(std::span<const Vec3> points, std::span<const Vec3> face_normals = {});
+// Each polygon's unit normal (Newell's), for obb_of; polygons without area give none.
+std::vector<Vec3> face_normals(std::span<const std::vector<Vec3>> polygons);
 
 // The volume a closed, consistently outward-wound triangle or polygon mesh encloses (the divergence theorem: the
 // sum of signed tetrahedra from the origin). 0 for an open surface is not guaranteed: call it only on closed meshes.

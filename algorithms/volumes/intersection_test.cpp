@@ -17,13 +17,17 @@ constexpr double grow = 1e-9;  // relative: a volume a hair larger than its poin
 
 double magnitude(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
-void subtree_points(const BoundingModel& m, std::uint32_t node, std::vector<Vec3>& out) {
+// The vertices below a node, and the normals of its polygons that have a plane (for the oriented box).
+void subtree_points(const BoundingModel& m, std::uint32_t node, std::vector<Vec3>& out, std::vector<Vec3>& normals) {
     const HierarchyNode& n = m.tree.nodes[node];
-    for (const std::uint32_t p : n.primitives) out.insert(out.end(), m.polygons[p].begin(), m.polygons[p].end());
-    for (const std::uint32_t c : n.children) subtree_points(m, c, out);
+    for (const std::uint32_t p : n.primitives) {
+        out.insert(out.end(), m.polygons[p].begin(), m.polygons[p].end());
+        if (m.hittable[p]) normals.push_back(m.planes[p].n);
+    }
+    for (const std::uint32_t c : n.children) subtree_points(m, c, out, normals);
 }
 
-NodeVolume volume_of(std::span<const Vec3> points, const BoundingOptions& o, bool root) {
+NodeVolume volume_of(std::span<const Vec3> points, std::span<const Vec3> normals, const BoundingOptions& o, bool root) {
     NodeVolume v;
     switch (o.volume) {
         case VolumeKind::aabb: {
@@ -39,7 +43,7 @@ NodeVolume volume_of(std::span<const Vec3> points, const BoundingOptions& o, boo
             v.volume = v.sphere.volume();
             break;
         case VolumeKind::obb:
-            v.obb = obb_of(points);
+            v.obb = obb_of(points, normals);
             v.obb.half += Vec3(grow * (magnitude(v.obb.centre) + magnitude(v.obb.half)));
             v.volume = v.obb.volume();
             break;
@@ -162,9 +166,9 @@ BoundingModel bounding_model(const Scene& scene, BoundingOptions options) {
     }
     m.tree = build_hierarchy(polygon_boxes(scene), {.kind = HierarchyKind::bvh, .max_primitives = options.max_primitives}).run_to_end();
     for (std::uint32_t node = 0; node < m.tree.nodes.size(); ++node) {
-        std::vector<Vec3> points;
-        subtree_points(m, node, points);
-        m.volumes.push_back(volume_of(points, options, node == 0));
+        std::vector<Vec3> points, normals;
+        subtree_points(m, node, points, normals);
+        m.volumes.push_back(volume_of(points, normals, options, node == 0));
     }
     return m;
 }

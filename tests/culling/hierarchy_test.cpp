@@ -92,6 +92,36 @@ TEST_CASE("bounding volumes enclose their points, and a long rotated rod shows t
     CHECK(a.volume() < s.volume());
 }
 
+// Each quad of a mesh as two triangles (as an OBJ exporter writes a box), turned by `angle` about `axis` (Rodrigues).
+std::vector<std::vector<Vec3>> triangulated_and_turned(const std::vector<std::vector<Vec3>>& quads, Vec3 axis, double angle) {
+    const Vec3 k = glm::normalize(axis);
+    const auto turn = [&](Vec3 v) { return v * std::cos(angle) + glm::cross(k, v) * std::sin(angle) + k * glm::dot(k, v) * (1 - std::cos(angle)); };
+    std::vector<std::vector<Vec3>> out;
+    for (const auto& q : quads) {
+        out.push_back({turn(q[0]), turn(q[1]), turn(q[2])});
+        out.push_back({turn(q[0]), turn(q[2]), turn(q[3])});
+    }
+    return out;
+}
+
+TEST_CASE("the oriented box of a triangulated, turned box is the box itself: no void space", "[culling][bounds][obb]") {
+    // a rod, a plate, a crate and a cube (whose principal axes are any three: covariance alone cannot find them)
+    for (const Vec3 half : {Vec3(4, 0.25, 0.25), Vec3(2, 1.5, 0.1), Vec3(1.5, 1, 0.7), Vec3(1, 1, 1)})
+        for (const auto& [axis, angle] : std::vector<std::pair<Vec3, double>>{{{0, 0, 1}, 0.6}, {{1, 2, 3}, 0.6}, {{-2, 1, 0.5}, 1.1}, {{0, 1, 0}, 0.0}}) {
+            const auto box = triangulated_and_turned(box_mesh(half, 0), axis, angle);
+            const std::vector<Vec3> pts = points_of(box);
+            const double volume = enclosed_volume(box);
+            INFO("half " << half.x << " " << half.y << " " << half.z << ", turned " << angle << " about " << axis.x << " " << axis.y << " " << axis.z);
+            REQUIRE(volume == Approx(8 * half.x * half.y * half.z));
+            const Obb o = obb_of(pts, face_normals(box));
+            for (const Vec3& p : pts)
+                for (int k = 0; k < 3; ++k) CHECK(std::abs(glm::dot(p - o.centre, o.axes[std::size_t(k)])) <= o.half[k] * (1 + 1e-9) + 1e-12);
+            CHECK(void_fraction(o.volume(), volume).value() < 0.01);
+            // from the points alone (principal axes of the distinct corners) a box with three different sides is found too
+            if (half.x != half.y && half.y != half.z) CHECK(void_fraction(obb_of(pts).volume(), volume).value() < 0.01);
+        }
+}
+
 TEST_CASE("a BVH holds every primitive in one leaf, each box holding what is below it", "[culling][bvh]") {
     const Scene s = random_triangles({.count = 500, .seed = 3, .size = 0.5});
     const Hierarchy h = build_hierarchy(polygon_boxes(s), {.kind = HierarchyKind::bvh, .max_primitives = 4}).run_to_end();

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/state_legend.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -112,13 +113,29 @@ void void_table(const CullingView& v) {
         ImGui::TableNextColumn();
         const auto& scene = v.world->scene.polygons;
         ImGui::Text("%d–%d", int(scene[object.front()].id), int(scene[object.back()].id));
-        for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points).volume()}) {
+        for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points, algo::face_normals(polys)).volume()}) {
             ImGui::TableNextColumn();
             if (const auto share = algo::void_fraction(bv, volume)) ImGui::Text("%.0f %%", 100 * *share);
             else ImGui::TextColored(dim_text, "%s", tr("culling.open").c_str());
         }
     }
     ImGui::EndTable();
+}
+
+// The colours of the boxes the view shows now, each with its word.
+void culling_legend(const CullingView& v) {
+    std::vector<StateColour> shown;
+    const auto add_if = [&](NodeMark m, const StateColour& c) {
+        if (std::find(v.nodes.begin(), v.nodes.end(), m) != v.nodes.end()) shown.push_back(c);
+    };
+    add_if(NodeMark::outside, culling_colours::outside);
+    add_if(NodeMark::inside, culling_colours::inside);
+    add_if(NodeMark::partial, culling_colours::partial);
+    add_if(NodeMark::too_small, culling_colours::too_small);
+    add_if(NodeMark::occluded, culling_colours::occluded);
+    add_if(NodeMark::visible, culling_colours::visible);
+    add_if(NodeMark::built, culling_colours::built);
+    state_legend(shown);
 }
 
 }  // namespace
@@ -140,6 +157,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
         if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
     }
     wrapped_text(header + " · " + tr("culling.view_key"), dim_text);
+    culling_legend(v);
     if (ImGui::BeginTabBar("culling tabs")) {
         if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem((tr("culling.void_tab") + "###void space").c_str())) {
             void_table(v);
