@@ -229,8 +229,12 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
     for (std::size_t k = 0; k < shown.size(); ++k) {
         if (!at[k].shown) continue;  // no free spot in a crowd of labels
         const Label& label = *shown[k];
-        const ImU32 color = ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, label.color.w));
-        d->AddText(ImVec2(at[k].left + 1, at[k].top + 1), IM_COL32(0, 0, 0, 200), label.text.c_str());
+        const ImU32 color = ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, 1));
+        // on a dark backing of its own, never on the colour of the face under it ("3f" orange on an orange face)
+        const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+        const float pad = canvas_px(2);
+        d->AddRectFilled(ImVec2(at[k].left - pad, at[k].top - pad / 2), ImVec2(at[k].left + size.x + pad, at[k].top + size.y + pad / 2),
+                         IM_COL32(14, 15, 18, 215), pad);
         d->AddText(ImVec2(at[k].left, at[k].top), color, label.text.c_str());
     }
 }

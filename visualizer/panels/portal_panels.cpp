@@ -13,6 +13,7 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/state_legend.h"
 #include "panels/wrapped_text.h"
 #include "state/elevation.h"
 #include "state/strings.h"
@@ -28,6 +29,7 @@ const ImU32 eye_colour = IM_COL32(240, 228, 66, 255);
 const ImU32 found_colour = IM_COL32(0, 200, 140, 255);
 const ImU32 blocked_colour = IM_COL32(213, 94, 0, 255);
 const ImU32 background = IM_COL32(26, 28, 33, 255);
+ImU32 cell_colour(const StateColour& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)); }
 
 // ── [SECTION] the floor plan ────────────────────────────────────────────────────────────────────────────────
 struct PlanFit {
@@ -88,9 +90,9 @@ void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
     const auto& m = v.world->model;
     const auto n = v.world->pvs.cells;
     draw_plan(d, f, m, [&](std::uint32_t c) {
-        if (v.source < 0) return IM_COL32(48, 51, 58, 255);
-        if (std::int32_t(c) == v.source) return IM_COL32(120, 110, 40, 255);
-        return v.matrix[std::size_t(v.source) * n + c] ? IM_COL32(30, 95, 75, 255) : IM_COL32(48, 51, 58, 255);
+        if (v.source < 0) return cell_colour(portal_cell_colours::out_of_pvs);
+        if (std::int32_t(c) == v.source) return cell_colour(portal_cell_colours::eye);
+        return cell_colour(v.matrix[std::size_t(v.source) * n + c] ? portal_cell_colours::in_pvs : portal_cell_colours::out_of_pvs);
     });
     for (std::uint32_t k : v.sequence) {
         const auto& p = m.portals[k];
@@ -107,9 +109,9 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     std::vector<std::uint8_t> in_pvs(m.cells.size(), 0);
     for (std::uint32_t c : v.pvs_row) in_pvs[c] = 1;
     draw_plan(d, f, m, [&](std::uint32_t c) {
-        if (std::int32_t(c) == v.cell) return IM_COL32(120, 110, 40, 255);
-        if (v.visited[c]) return IM_COL32(30, 95, 75, 255);
-        return in_pvs[c] ? IM_COL32(52, 60, 72, 255) : IM_COL32(36, 38, 43, 255);
+        if (std::int32_t(c) == v.cell) return cell_colour(portal_cell_colours::eye);
+        if (v.visited[c]) return cell_colour(portal_cell_colours::visited);
+        return cell_colour(in_pvs[c] ? portal_cell_colours::in_pvs : portal_cell_colours::out_of_pvs);
     });
     // walls drawn (in their cell's colour) or culled (dim); floors are not shown in the plan
     for (std::size_t k = 0; k < m.polygons.size(); ++k) {
@@ -164,13 +166,19 @@ PlanFit begin_plan_canvas(const algo::CellModel& m, float x, float y, float w, f
     ImGui::Begin("##floor plan", nullptr, fixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                               ImGuiWindowFlags_NoBringToFrontOnFocus);
     ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), background);
-    return fit(m, x, y, w, fit_h > 0 ? fit_h : h);
+    return fit(m, x, y, w, fit_h > 0 ? fit_h : h - legend_height());  // the legend under the plan
 }
 
-void end_plan_canvas(float x, float y, const char* caption) {
+// The caption, and the legend of the cells' colours under the plan.
+void end_plan_canvas(float x, float y, float plan_h, const char* caption, std::span<const StateColour> legend) {
     ImGui::GetWindowDrawList()->AddText(ImVec2(x + 16, y + 10), IM_COL32(160, 163, 170, 255), caption);
+    canvas_legend(ImGui::GetWindowDrawList(), x + 16, y + plan_h, legend);
     ImGui::End();
 }
+
+// The PVS lesson's cells: the source cell in the eye's colour, the cells of its PVS, the others.
+constexpr std::array pvs_legend{StateColour{"portals.cell_source", portal_cell_colours::eye.r, portal_cell_colours::eye.g, portal_cell_colours::eye.b},
+                                portal_cell_colours::in_pvs, portal_cell_colours::out_of_pvs};
 
 }  // namespace
 
@@ -253,11 +261,11 @@ void portal_plan_canvas(const PvsSession& s, float x, float y, float w, float h)
     const auto& m = s.view().world->model;
     const bool heights = openings_have_heights(m);
     const float plan_h = heights ? h * 0.55f : h;  // with heights: the elevation under the plan
-    const PlanFit f = begin_plan_canvas(m, x, y, w, h, plan_h);
+    const PlanFit f = begin_plan_canvas(m, x, y, w, h, plan_h - legend_height());
     ImDrawList* d = ImGui::GetWindowDrawList();
     pvs_plan(s, d, f);
     if (heights) elevation_canvas(s.view(), d, x, y + plan_h, w, h - plan_h);
-    end_plan_canvas(x, y, tr("portals.pvs_caption").c_str());
+    end_plan_canvas(x, y, plan_h, tr("portals.pvs_caption").c_str(), pvs_legend);
 }
 
 void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w, float h, UiActions& out) {
@@ -271,7 +279,7 @@ void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w,
         const Vec2 p = f.plan(mouse);
         out.move_eye = glm::dvec3(p.x, s.view().camera.eye.y, -p.y);
     }
-    end_plan_canvas(x, y, tr("portals.render_caption").c_str());
+    end_plan_canvas(x, y, h, tr("portals.render_caption").c_str(), portal_cell_colours::all);
 }
 
 // ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────

@@ -8,20 +8,23 @@
 
 #include "render/frustum.h"
 #include "render/palette.h"
+#include "state/state_colours.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
 
+glm::vec4 with_alpha(const StateColour& c, float alpha) { return {c.r, c.g, c.b, alpha}; }
+
 glm::vec4 mark_colour(NodeMark m) {
     switch (m) {
-        case NodeMark::outside: return {0.84f, 0.37f, 0.0f, 0.9f};
-        case NodeMark::inside: return {0.0f, 0.62f, 0.45f, 0.9f};
-        case NodeMark::partial: return {0.94f, 0.89f, 0.26f, 0.8f};
-        case NodeMark::too_small: return {0.55f, 0.56f, 0.6f, 0.8f};
-        case NodeMark::occluded: return {0.8f, 0.47f, 0.65f, 0.9f};
-        case NodeMark::visible: return {0.34f, 0.71f, 0.91f, 0.9f};
-        case NodeMark::built: return {0.75f, 0.77f, 0.8f, 0.6f};
+        case NodeMark::outside: return with_alpha(culling_colours::outside, 0.9f);
+        case NodeMark::inside: return with_alpha(culling_colours::inside, 0.9f);
+        case NodeMark::partial: return with_alpha(culling_colours::partial, 0.8f);
+        case NodeMark::too_small: return with_alpha(culling_colours::too_small, 0.9f);
+        case NodeMark::occluded: return with_alpha(culling_colours::occluded, 0.9f);
+        case NodeMark::visible: return with_alpha(culling_colours::visible, 0.9f);
+        case NodeMark::built: return with_alpha(culling_colours::built, 0.6f);
         case NodeMark::untouched: break;
     }
     return {0, 0, 0, 0};

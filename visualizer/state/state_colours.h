@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The colours that say what state a thing is in (a box outside the frustum, a cell visited), one table per view,
+// each colour with the key of the word its legend shows. They live here, with no GL or ImGui, so that a test can
+// check that every pair of a table stays apart for students with each kind of colour blindness
+// (tests/state/state_colours_test.cpp simulates them with Machado, Oliveira and Fernandes' 2009 matrices).
+// The culling marks are the Okabe–Ito palette's colours; the portal plan's cells are dark fills under light lines.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+namespace hsr::viz {
+
+struct StateColour {
+    std::string_view legend;  // a key of the window's strings: the word beside the swatch
+    float r, g, b;            // sRGB, 0–1
+};
+
+namespace culling_colours {  // the hierarchy's boxes, by what happened to them
+inline constexpr StateColour outside{"culling.mark_outside", 0.835f, 0.369f, 0.0f};     // vermillion
+inline constexpr StateColour inside{"culling.mark_inside", 0.0f, 0.620f, 0.451f};       // bluish green
+inline constexpr StateColour partial{"culling.mark_partial", 0.941f, 0.894f, 0.259f};   // yellow
+inline constexpr StateColour too_small{"culling.mark_too_small", 0.0f, 0.447f, 0.698f}; // blue
+inline constexpr StateColour occluded{"culling.mark_occluded", 0.800f, 0.475f, 0.655f}; // reddish purple
+inline constexpr StateColour visible{"culling.mark_visible", 0.337f, 0.706f, 0.914f};   // sky blue
+inline constexpr StateColour built{"culling.mark_built", 0.922f, 0.922f, 0.922f};       // white: built, not yet tested
+inline constexpr std::array all{outside, inside, partial, too_small, occluded, visible, built};
+}  // namespace culling_colours
+
+namespace portal_cell_colours {  // the floor plan's cells while portal_render runs (and the PVS's source cell)
+inline constexpr StateColour eye{"portals.cell_eye", 0.471f, 0.431f, 0.157f};          // dark yellow
+inline constexpr StateColour visited{"portals.cell_visited", 0.078f, 0.451f, 0.345f};  // dark green
+inline constexpr StateColour in_pvs{"portals.cell_in_pvs", 0.275f, 0.322f, 0.408f};    // grey-blue
+inline constexpr StateColour out_of_pvs{"portals.cell_out", 0.141f, 0.149f, 0.169f};   // nearly the background
+inline constexpr std::array all{eye, visited, in_pvs, out_of_pvs};
+}  // namespace portal_cell_colours
+
+}  // namespace hsr::viz
