@@ -431,7 +431,8 @@ int run_app(const AppOptions& o) {
             if (lp.export_pending && lp.session()) {
                 lp.export_pending = false;
                 std::vector<std::string> written;
-                lp.tell(export_lesson(*lp.session(), lp.path, lp.algorithm, width, height, written));
+                const auto edited = lp.with_family_screen([](const auto& s, const auto& screen) { return screen.edited_scene(s); });
+                lp.tell(export_lesson(*lp.session(), lp.path, lp.algorithm, edited, width, height, written));
                 for (const std::string& file : written) offer_download(file);
             }
             if (o.gif) {

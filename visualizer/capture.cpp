@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "state/output_folder.h"
+#include "state/trace.h"
 #include "state/trace_file.h"
 #include "state/png_io.h"
 #include "render/gl.h"
@@ -44,15 +45,24 @@ bool write_png(const std::string& path, int w, int h) {
     return write_png(path, w, h, 4, pixels.data(), true);
 }
 
-std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm, int width, int height,
-                          std::vector<std::string>& written) {
+std::string export_lesson(const Session& s, const std::string& path, const std::optional<std::string>& algorithm,
+                          const std::optional<algo::Scene>& edited, int width, int height, std::vector<std::string>& written) {
     const std::string dir = output_folder("hsrviz-export"), stem = std::filesystem::path(s.lesson().source).stem().string();
     if (!make_folder(dir)) return "could not make the folder " + dir;
     const std::string png = dir + "/" + stem + "-step-" + std::to_string(s.cursor()) + ".png";
     const std::string trace = dir + "/" + stem + ".jsonl", scene = dir + "/" + stem + "-scene.toml";
-    const bool ok = write_png(png, width, height) && run_trace({path, trace, algorithm}) == 0 &&
+    // after an edit, the scene and the trace of what the window shows: the edited scene run through the machine
+    const auto write_trace = [&] {
+        if (!edited) return run_trace({path, trace, algorithm}) == 0;
+        Lesson lesson = s.lesson();
+        lesson.scene = *edited;
+        std::ofstream out(trace);
+        trace_lesson(lesson, &out);
+        return static_cast<bool>(out);
+    };
+    const bool ok = write_png(png, width, height) && write_trace() &&
                     static_cast<bool>(std::ofstream(scene) << "# exported by hsrviz " HSR_VERSION " at step " << s.cursor() << "\n"
-                                                            << algo::scene_toml(s.lesson().scene));
+                                                            << algo::scene_toml(edited ? *edited : s.lesson().scene));
     if (ok) written = {png, trace, scene};
     return std::string(ok ? "exported " : "could not export all of ") + png + ", " + trace + " and " + scene;
 }

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
     cli.add_flag("--gif-half", app.gif_half, "GIF frames at half the window's size (smaller files; text is harder to read)");
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
-    cli.add_option("--algorithm", app.algorithm, "Play the scene with this algorithm (cohen_sutherland, liang_barsky, sutherland_hodgman)");
+    cli.add_option("--algorithm", app.algorithm, "Play the lesson with another algorithm of its family (families apart by ';'): " + hsr::viz::algorithm_ids_by_family());
     CLI::Option* size_option = cli.add_option("--size", size, "Window size WxH (default: as the last run left it, else 1280x800)")->check(CLI::Validator(
         [](std::string& s) { return hsr::viz::parse_size(s, 16384) ? "" : "expected WxH, each from 1 to 16384"; }, "WxH"));
     cli.add_flag("--play", app.autoplay, "Start playing at once");
@@ -54,9 +54,9 @@ int main(int argc, char** argv) {
     hsr::viz::RenderOptions render;
     CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
     render_cmd->add_option("scene", render.scene, "Scene file (world coordinates), or a generated scene: city:N, field:N, spheres:N (N triangles)")->required();
-    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, raycast, depth-sort");
+    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, scanline-classic, raycast, depth-sort");
     render_cmd->add_option("--format", render.format, "Depth format for zbuffer and scanline: int16, int24 (default), int32, float32, float32-reversed, linear24");
-    render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree");
+    render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree, bvh");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");
     render_cmd->add_option("--cull", render.cull, "zbuffer: culling stages first, from back-face,frustum,detail,occluders,portals,hiz");
     render_cmd->add_option("--occluders", render.occluders, "The occluders stage's shapes: planar (default), proxy, solid (Papaioannou's, with planar)");

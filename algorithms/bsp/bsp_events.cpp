@@ -49,9 +49,9 @@ constexpr Saying build_started{"bsp.build_started",
 constexpr Saying candidate{"bsp.candidate",
                            "node {node}: splitter {candidate} would leave {front} in front, {back} behind, split {spanning}: "
                            "score {score}"};
-constexpr Saying chosen{"bsp.chosen", "node {node} (depth {depth}): {splitter} splits"};
+constexpr Saying chosen{"bsp.chosen", "node {node} (depth {depth}): polygon {splitter} is its splitter"};
 constexpr Saying chosen_best{"bsp.chosen_best",
-                             "node {node} (depth {depth}): {splitter} splits, the best of {candidates} candidates (score {score})"};
+                             "node {node} (depth {depth}): polygon {splitter} is its splitter, the best of {candidates} candidates (score {score})"};
 constexpr Saying in_front{"bsp.in_front", "{polygon} is front of node {node}'s plane"};
 constexpr Saying behind{"bsp.behind", "{polygon} is back of node {node}'s plane"};
 constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar of node {node}'s plane"};

@@ -46,8 +46,8 @@ constexpr Saying cut{"depth_sort.cut", "Split #{polygon} by the plane of #{by} i
 constexpr Saying deferred{"depth_sort.deferred", "#{polygon} (polygon {id}) joins the output list, to be drawn in the display step."};
 constexpr Saying painted{"depth_sort.painted", "Draw #{polygon} (polygon {id})."};
 constexpr Saying finished{"depth_sort.finished",
-                          "Done: {drawn} drawn after {pairs} {pairs?pair|pairs}, {moves} {moves?move|moves} and {splits} "
-                          "{splits?split|splits}."};
+                          "Done: {drawn} {drawn?polygon|polygons} in depth order after {pairs} {pairs?pair|pairs}, {moves} "
+                          "{moves?move|moves} and {splits} {splits?split|splits}."};
 constexpr Saying front_drawn{"depth_sort.front_drawn",
                              "Draw #{polygon} (polygon {id}) front to back: {written} pixels written, {hidden} already "
                              "written by nearer polygons; {unwritten} pixels still unwritten."};

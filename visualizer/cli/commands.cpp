@@ -9,6 +9,7 @@
 #include <fstream>
 #include <new>
 
+#include "registry.h"
 #include "scene/input_file.h"
 #include "state/course.h"
 #include "state/lesson.h"
@@ -16,6 +17,17 @@
 #include "state/trace.h"
 
 namespace hsr::viz {
+
+std::string algorithm_ids_by_family() {
+    std::string out;
+    std::size_t family = std::variant_npos;
+    for (const algo::AlgorithmInfo& a : algo::algorithms()) {
+        if (!out.empty()) out += a.machine.index() == family ? ", " : "; ";
+        out += a.id;
+        family = a.machine.index();
+    }
+    return out;
+}
 
 int print_lesson_list() {
     int status = 0;

@@ -13,6 +13,10 @@ namespace hsr::viz {
 // --lesson-list: the shipped lessons, one line each (file, difficulty, algorithm, title); exit code.
 int print_lesson_list();
 
+// --algorithm's help: every algorithm id, those of one family together ("cohen_sutherland, liang_barsky, …; bsp_build,
+// bsp_traversal; …"), read from the registry so that a new algorithm is listed by itself.
+std::string algorithm_ids_by_family();
+
 // Checks lesson and scene files (state/lesson_check.h); with none, every shipped lesson and scene under `root`.
 // Prints one line per file (and one per problem); exit code 1 when any file has a problem.
 int run_check(std::vector<std::string> files, const std::string& root);

@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstdio>
@@ -12,6 +13,8 @@
 #include <stdexcept>
 
 #include <unistd.h>
+
+#include <glm/geometric.hpp>
 
 #include "scene/input_file.h"
 #include "analysis/painters.h"
@@ -190,6 +193,25 @@ void progress_on_stderr(const algo::WorkProgress& p) {
     std::fflush(stderr);
 }
 
+// Each polygon's colour shaded by its turn to a light at the eye (flat, one shade per polygon), so that a mesh of one
+// colour (a teapot, a bunny) shows its form instead of its silhouette: full colour facing the eye, 35 % edge-on.
+void shade_by_facing_the_eye(algo::Scene& scene) {
+    for (algo::ScenePolygon& p : scene.polygons) {
+        if (p.vertices.size() < 3) continue;
+        algo::Vec3 n(0), centre(0);  // Newell's normal
+        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+            const algo::Vec3 a(p.vertices[i]), b(p.vertices[(i + 1) % p.vertices.size()]);  // world: w = 1
+            n += glm::cross(a, b);
+            centre += a / double(p.vertices.size());
+        }
+        const algo::Vec3 to_eye = scene.camera.projection == algo::Projection::orthographic ? scene.camera.eye - scene.camera.target : scene.camera.eye - centre;
+        const double facing = std::abs(glm::dot(n, to_eye)) / (glm::length(n) * glm::length(to_eye));
+        if (!std::isfinite(facing)) continue;  // no area, or the eye on it: as given
+        const double shade = 0.35 + 0.65 * facing;
+        p.color = {std::uint8_t(std::lround(p.color.r * shade)), std::uint8_t(std::lround(p.color.g * shade)), std::uint8_t(std::lround(p.color.b * shade))};
+    }
+}
+
 algo::Scene generated_or_loaded(const std::string& name) {
     if (auto generated = algo::generated_scene(name)) return std::move(*generated);
     return algo::load_scene(name);
@@ -223,6 +245,7 @@ int run_render(const RenderOptions& o) {
             scene.camera.eye = *e;
         }
         scene.camera.aspect = double(w) / double(h);
+        shade_by_facing_the_eye(scene);
         if (o.ids)
             for (const auto& p : scene.polygons)
                 if (p.id < 1 || p.id > 65535)

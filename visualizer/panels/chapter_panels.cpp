@@ -30,7 +30,7 @@ void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* n
             showed += (k ? " · " : " ") + in_language(lesson.chapters[k].titles, room.language(), lesson.languages);
         wrapped_text(showed, dim_text);
     }
-    if (next) wrapped_text(tr("chapters.next", {{"title", next->title}}), dim_text);
+    if (next) wrapped_text(tr("chapters.next", {{"title", in_language(next->titles, room.window_language(), next->languages)}}), dim_text);
     if (next && ImGui::Button((tr("chapters.next_lesson") + "###next lesson").c_str())) out.next_lesson = 1;
     if (next) ImGui::SameLine();
     if (ImGui::Button((tr("chapters.all_lessons") + "###all lessons").c_str())) out.toggle_menu = true;

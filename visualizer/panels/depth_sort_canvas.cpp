@@ -40,7 +40,7 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
     anim.x.resize(v.polygons.size(), NAN);
     const std::size_t n = v.drawn.size() + v.list.size();
     const float gap = 26, chip = std::clamp((w - gap) / float(std::max<std::size_t>(n, 1)) - 4, 8.0f, 46.0f);
-    const std::string heading = tr("depth_sort.heading", {{"moves", std::to_string(v.moves)}, {"splits", std::to_string(v.splits)}});
+    const std::string heading = tr(v.front_to_back ? "depth_sort.heading_front" : "depth_sort.heading", {{"moves", std::to_string(v.moves)}, {"splits", std::to_string(v.splits)}});
     d->AddText(at, dim_colour, heading.c_str());
     const float list_x0 = at.x + float(v.drawn.size()) * (chip + 4) + (v.drawn.empty() ? 0 : gap);
     d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour,

@@ -19,6 +19,7 @@ void keys_panel(const PanelLayout& l) {
         {"Home  End", "keys.ends"},
         {"PageDown  PageUp", "keys.chapter"},
         {"N  Shift+N", "keys.lesson"},
+        {"M", "keys.menu"},
         {"1 … 9", "keys.answer"},
         {"L", "keys.language"},
         {"P", "keys.presets"},

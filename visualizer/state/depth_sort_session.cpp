@@ -22,7 +22,7 @@ const Pseudocode<DepthSortEvent> sort_lines = {
     {"    else swap roles, retry 3 and 4:", {micro<TestTried>()}},
     {"      Q must go first: move Q to the head", {step<PolygonMoved>()}},
     {"      Q moved before (a cycle), or no order:", {step<CycleDetected>()}},
-    {"        split one by the plane of the other", {step<PolygonCut>(), step<SortBoundReached>()}},
+    {"        split R by the plane of Q (else Q by R's)", {step<PolygonCut>(), step<SortBoundReached>()}},
     {"  no Q left: draw R (back to front)", {step<PolygonPainted>(), step<DepthSortFinished>()}},
     {"  or display front to back: the nearest first,", {}},
     {"    each on the pixels no nearer one has written", {step<FrontPolygonDrawn>(), step<FrontDisplayFinished>()}},

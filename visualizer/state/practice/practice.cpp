@@ -75,7 +75,7 @@ Exercise exercise(const Topic& topic, std::uint64_t series, std::uint64_t index,
         seed = Dice(seed).next();
     }
     throw std::runtime_error("practice " + std::string(topic.id) + ": no exercise after " + std::to_string(redraws) +
-                             " draws (series " + std::to_string(series) + ", exercise " + std::to_string(index) + ")");
+                             " draws (series " + std::to_string(series) + ", exercise " + std::to_string(index + 1) + ")");
 }
 
 namespace {
@@ -155,7 +155,7 @@ nlohmann::ordered_json to_json(const Exercise& e) {
     nlohmann::ordered_json j;
     j["topic"] = e.topic;
     j["series"] = e.series;
-    j["exercise"] = e.index;
+    j["exercise"] = e.index + 1;  // numbered from 1, as the window and the saved files number them
     j["level"] = int(e.level);
     j["question"] = e.question;
     if (!e.choices.empty()) j["choices"] = e.choices;
