@@ -16,11 +16,24 @@
 
 namespace hsr::viz {
 
+namespace {
+
+// The lesson's last chapter shows, or its last step: the result comes first in the column.
+bool at_last_chapter(const Lessonplay& lp) {
+    const Session* s = lp.session();
+    if (!s) return false;
+    if (s->complete() && s->cursor() >= s->known()) return true;
+    const auto c = lp.classroom.chapter(*s);
+    return c && *c + 1 == s->lesson().chapters.size();
+}
+
+}  // namespace
+
 PanelLayout arrange_frame(Lessonplay& lp, float width, float height) {
     lp.side = clamp_side(lp.side, width);
     // the column and the timeline grow with the type (the column's width is remembered unscaled)
     PanelLayout layout{width, height, clamp_side(lp.side * lp.scale, width), 96 * lp.scale};
-    lp.column.arrange(layout.height - layout.bottom, lp.path);
+    lp.column.arrange(layout.height - layout.bottom, lp.path, at_last_chapter(lp));
     layout.fit = &lp.column;
     return layout;
 }

@@ -25,7 +25,11 @@ case "$case" in
     for lesson in "$src"/lessons/*.toml; do
       name=$(basename "$lesson" .toml)
       for mode in "--size 1280x800" "--projector --size 1920x1080" "--scale 1.6 --size 1280x800"; do
-        for keys in Right,Right,Right End; do
+        # a few steps in; End (held by the first question); and at 1280×800 the lesson's end, each question answered
+        # as it opens
+        ends=""
+        if [ "$mode" = "--size 1280x800" ]; then ends=End,1,End,1,End,1,End,1,End,1,End,1,End,1,End,1,End; fi
+        for keys in Right,Right,Right End $ends; do
           # shellcheck disable=SC2086
           "$hsrviz" "$lesson" $mode --keys "$keys" --screenshot l.png --frames 5 > out.txt
           if grep "layout:" out.txt; then echo "in $name with $mode after $keys"; exit 1; fi

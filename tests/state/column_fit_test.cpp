@@ -130,3 +130,25 @@ TEST_CASE("the window's notes show for a few seconds, the newest three, a repeat
     CHECK(now.back().text == "d");
     CHECK(t.showing(20).empty());
 }
+
+TEST_CASE("at the lesson's end what it built comes first: the state box in full, before the other boxes' needs", "[column]") {
+    // a PVS matrix of 220 px, with a question, the lesson's text, the pseudocode and the narration that do not fit
+    const auto during = ColumnFit::share(asks({160, 160}, {150, 300}, {220, 220}, {80, 200}, {200, 200}), 700);
+    CHECK(during[2] < 220);  // during the lesson the needs are shared: the matrix scrolls
+    const auto end = ColumnFit::share(asks({160, 160}, {150, 300}, {220, 220}, {80, 200}, {200, 200}), 700, true);
+    CHECK(end[4] == 200);
+    CHECK(end[0] == 160);
+    CHECK(end[2] == 220);  // the whole matrix
+    CHECK(end[1] > 0);
+    CHECK(end[3] > 0);
+    CHECK(sum(end) == Approx(700));
+    // a result taller than the column gets 70 % of what the question and the lesson leave
+    const auto huge = ColumnFit::share(asks({160, 160}, {150, 300}, {2000, 2000}, {80, 200}, {200, 200}), 700, true);
+    CHECK(huge[2] == Approx(0.7f * (700 - 200 - 160)));
+}
+
+TEST_CASE("at the lesson's end the narration's last sentence comes next, the pseudocode keeps what is left", "[column]") {
+    const auto end = ColumnFit::share(asks({160, 160}, {150, 300}, {220, 220}, {80, 200}, {200, 200}), 700, true);
+    CHECK(end[3] >= 80);  // the narration's current sentence
+    CHECK(end[1] == Approx(700 - 200 - 160 - 220 - end[3] + 0).margin(1e-3) );
+}

@@ -16,20 +16,14 @@ namespace {
 const ImVec4 chapter_colour(0.94f, 0.89f, 0.26f, 1);
 const ImVec4 question_title(0.94f, 0.89f, 0.26f, 1);
 
-// The lesson's end: the score, what it showed (its chapters), and the next lesson to open.
-void end_card(const Lesson& lesson, const Classroom& room, const CourseLesson* next, UiActions& out) {
+// The lesson's end: the score and the next lesson to open (kept short: the column gives the room to what it built).
+void end_card(const Classroom& room, const CourseLesson* next, UiActions& out) {
     if (room.questions() > 0)
         wrapped_text(tr("chapters.end_score", {{"right", std::to_string(room.right())},
                                                {"answered", std::to_string(room.answered())},
                                                {"questions", std::to_string(room.questions())}}));
     else
         wrapped_text(tr("chapters.no_questions"));
-    if (!lesson.chapters.empty()) {
-        std::string showed = tr("chapters.showed");
-        for (std::size_t k = 0; k < lesson.chapters.size(); ++k)
-            showed += (k ? " · " : " ") + in_language(lesson.chapters[k].titles, room.language(), lesson.languages);
-        wrapped_text(showed, dim_text);
-    }
     if (next) wrapped_text(tr("chapters.next", {{"title", in_language(next->titles, room.window_language(), next->languages)}}), dim_text);
     if (next && ImGui::Button((tr("chapters.next_lesson") + "###next lesson").c_str())) out.next_lesson = 1;
     if (next) ImGui::SameLine();
@@ -110,7 +104,7 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
             because = s.spoken(*room.script()->places()[*c].answered - 1);
         wrapped_text(tr("chapters.machine", {{"answer", window_strings().word(verdict->answer)}, {"because", because}}));
     }
-    if (finished) end_card(lesson, room, next, out);
+    if (finished) end_card(room, next, out);
     end_column_box(l, Box::question);
 }
 

@@ -32,6 +32,11 @@ void audit_current_window() {
     if (below > 1 && !w->ScrollbarY) note("cut at the bottom", below);
 }
 
+bool& result_scrolls() {
+    static bool scrolls = false;
+    return scrolls;
+}
+
 void note_broken_word() { note("breaks a word too wide for its line, width", ImGui::GetContentRegionAvail().x); }
 
 }  // namespace hsr::viz

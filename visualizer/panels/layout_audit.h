@@ -15,5 +15,8 @@ std::vector<std::string>& layout_problems();
 void audit_current_window();
 // A word of the current window broken inside because no line could hold it.
 void note_broken_word();
+// Whether the frame's state box (what the lesson builds: the tree, the matrix, the tables) scrolls: at the end of a
+// lesson that is a problem too (its result must be in full view), which the window says after --screenshot.
+bool& result_scrolls();
 
 }  // namespace hsr::viz

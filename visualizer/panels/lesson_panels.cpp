@@ -68,7 +68,7 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
     const float row_height = ImGui::GetTextLineHeightWithSpacing();
     const ImGuiStyle& style = ImGui::GetStyle();
     const float room = ImGui::GetWindowHeight() - ImGui::GetCursorStartPos().y - style.WindowPadding.y + style.ItemSpacing.y;
-    const int fit = std::max(1, int(room / row_height));
+    const int fit = std::max(0, int(room / row_height));  // none in a box squeezed to its title: never half a row
     const bool marks = fit >= 3;  // room for a row saying what is above or below, besides the running line
     int first = 0, last = int(rows.size());
     if (last > fit) {

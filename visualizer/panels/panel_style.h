@@ -67,6 +67,7 @@ inline float column_box_height_so_far() {
 // `full`: how tall it would be with all it has to show (when it left out what did not fit whole), else as drawn.
 inline void end_column_box(const PanelLayout& l, Box b, float need = -1, float full_height = -1) {
     audit_current_window();
+    if (b == Box::state && ImGui::GetCurrentWindow()->ScrollbarY) result_scrolls() = true;
     if (l.fit) {
         float full = std::max(full_height, column_box_height_so_far());
         if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;

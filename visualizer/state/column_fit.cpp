@@ -25,7 +25,7 @@ std::array<float, N> fair(const std::array<float, N>& want, float room) {
 
 }  // namespace
 
-std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count>& asks, float height) {
+std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count>& asks, float height, bool result_first) {
     std::array<float, box_count> h{};
     const auto q = std::size_t(Box::question);
     h[q] = std::min(asks[q].full, height / 2);
@@ -38,9 +38,21 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
     h[lesson] = std::min(need[lesson], room / 2);
     room -= h[lesson];
     need[lesson] = 0;
+    // at the lesson's end, what it built (the state box: the tree, the matrix, the tables) in full, up to 70 % of
+    // what is left, then the narration's last sentence: the class reads the result, the pseudocode keeps what is left
+    const auto state = std::size_t(Box::state), narration = std::size_t(Box::narration);
+    if (result_first) {
+        h[state] = std::min(asks[state].full, room * 0.7f);
+        room -= h[state];
+        need[state] = 0;
+        h[narration] = std::min(need[narration], room);
+        room -= h[narration];
+        need[narration] = 0;
+    }
     auto first = fair(need, room);
     first[lesson] = h[lesson];
     room += h[lesson];
+    if (result_first) first[state] = h[state], first[narration] = h[narration], room += h[state] + h[narration];
     for (std::size_t i = 0; i < need.size(); ++i) {
         h[i] = first[i];
         room -= first[i];
@@ -56,7 +68,7 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
     return h;
 }
 
-void ColumnFit::arrange(float height, const std::string& lesson) {
+void ColumnFit::arrange(float height, const std::string& lesson, bool result_first) {
     if (lesson != lesson_) {
         lesson_ = lesson;
         // the shares the column had before it was fitted (1280×800: 150, 262, 170, 122): until the boxes are drawn
@@ -68,7 +80,7 @@ void ColumnFit::arrange(float height, const std::string& lesson) {
     for (std::size_t i = 0; i < box_count; ++i)
         if (!drawn_[i]) asks_[i] = {}, measured_[i] = false;  // not drawn last frame: no room kept for it
     drawn_ = {};
-    const auto h = share(asks_, height);
+    const auto h = share(asks_, height, result_first);
     float y = 0;
     moved_ = false;
     for (std::size_t i = 0; i < box_count; ++i) {

@@ -31,8 +31,9 @@ struct BoxAsk {
 class ColumnFit {
 public:
     // Arranges the column of `height` pixels for this frame, from what the boxes asked for when last drawn. `lesson`
-    // names what plays: another lesson starts from the default shares again.
-    void arrange(float height, const std::string& lesson);
+    // names what plays: another lesson starts from the default shares again. `result_first`: the lesson's last
+    // chapter, or its end: what it built comes before the pseudocode and the narration.
+    void arrange(float height, const std::string& lesson, bool result_first = false);
     BoxSlot slot(Box b) const { return slots_[std::size_t(b)]; }
     // Whether this frame's arrangement differs from the last one's (a screenshot waits until it does not: ImGui
     // shows a box's scrollbar a frame after its content outgrew it).
@@ -42,8 +43,9 @@ public:
 
     // The arithmetic of arrange, for tests: the question first (up to half the column), the lesson's need (up to
     // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
-    // remains equally); what is left over goes to the state box, else the narration.
-    static std::array<float, box_count> share(const std::array<BoxAsk, box_count>& asks, float height);
+    // remains equally); what is left over goes to the state box, else the narration. With `result_first`, the state
+    // box's full height (up to 70 % of what the question and the lesson leave) comes before the other boxes' needs.
+    static std::array<float, box_count> share(const std::array<BoxAsk, box_count>& asks, float height, bool result_first = false);
 
 private:
     std::string lesson_;
