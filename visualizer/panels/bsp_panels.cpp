@@ -49,18 +49,19 @@ void tree_controls(const BspSession& s, UiActions& out) {
     if (ImGui::SmallButton((tr("bsp.shuffle") + "###shuffle").c_str())) out.bsp_shuffle = true;
 }
 
-}  // namespace
-
-void bsp_state_panel(const BspSession& s, const PanelLayout& l, UiActions& out) {
-    begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
-    const BspView& v = s.view();
-    wrapped_text(tree_summary(s), dim_text);
-    tree_controls(s, out);
-    ImGui::TextColored(front_branch, "%s", tr("bsp.left").c_str());
-    ImGui::SameLine();
-    ImGui::TextColored(dim_text, "%s", tr("bsp.normal_side").c_str());
-    ImGui::SameLine();
-    ImGui::TextColored(back_branch, "%s", tr("bsp.right").c_str());
+// The tree as nodes and edges, in the room left in the current window (from the cursor), with the legend of its
+// branches above it; the window's cursor ends under it.
+void draw_tree(const BspView& v) {
+    // the branches' legend, as many of its three parts to a line as fit
+    const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    const std::pair<ImVec4, std::string> legend[] = {{front_branch, tr("bsp.left")}, {dim_text, tr("bsp.normal_side")}, {back_branch, tr("bsp.right")}};
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (k > 0) {
+            ImGui::SameLine();
+            if (ImGui::GetCursorScreenPos().x + ImGui::CalcTextSize(legend[k].second.c_str()).x > right_edge) ImGui::NewLine();
+        }
+        ImGui::TextColored(legend[k].first, "%s", legend[k].second.c_str());
+    }
 
     // Layout: x by in-order position, y by depth.
     std::vector<float> x(v.nodes.size(), 0.f);
@@ -116,7 +117,28 @@ void bsp_state_panel(const BspSession& s, const PanelLayout& l, UiActions& out) 
         }
     }
     ImGui::Dummy(ImVec2(avail.x, row * float(deepest) + 2 * r + (sides_below ? f : 0) + 6));
+}
+
+}  // namespace
+
+void bsp_state_panel(const BspSession& s, const PanelLayout& l, UiActions& out) {
+    begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
+    wrapped_text(tree_summary(s), dim_text);
+    tree_controls(s, out);
+    // the tree itself is in the view, beside the scene (bsp_tree_canvas)
     end_column_box(l, Box::state);
+}
+
+void bsp_tree_canvas(const BspSession& s, float view_w, float view_h) {
+    const BspView& v = s.view();
+    // the view's right part (a 2D plan's: above the first-person strip); the scene is framed left of it
+    // (Screen<BspSession>::frame)
+    const float x = view_w * (1 - tree_share), w = view_w * tree_share - 8, h = view_h - (v.two_d ? strip_height(view_h) : 0) - 16;
+    place(x, 8, w, h);
+    ImGui::Begin((tr("bsp.tree") + "###bsp tree in the view").c_str(), nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    draw_tree(v);
+    audit_current_window();
+    ImGui::End();
 }
 
 float strip_height(float view_h) { return std::clamp(0.2f * view_h, 80.0f, 260.0f); }

@@ -18,6 +18,7 @@ public:
     void draw_scene(const BspSession& s, SceneFrame& f) const;
     void draw_panels(const BspSession& s, PanelFrame& f) const {
         bsp_painted_canvas(s, f.view_w, f.view_h, drives(s, f.second_view));
+        bsp_tree_canvas(s, f.view_w, f.view_h);
         bsp_state_panel(s, f.layout, f.actions);
     }
     // V in a 2D plan: drive mode, the arrows walk and turn the eye
