@@ -225,9 +225,9 @@ TEST_CASE("a lesson's and its chapters' titles and summary may be given per lang
     CHECK(shipped.title == "Depth sort: three bars in a cycle");  // the first language's, for the command line
     CHECK(in_language(shipped.titles, "de", shipped.languages) == "Tiefensortierung: drei Balken im Zyklus");
     REQUIRE_FALSE(shipped.chapters.empty());
-    CHECK(shipped.chapters[0].title == "Q must go first");
-    CHECK(in_language(shipped.chapters[0].titles, "de", shipped.languages) == "Q muss zuerst");
-    CHECK(in_language(shipped.chapters[0].titles, "fr", shipped.languages) == "Q must go first");  // else the first language
+    CHECK(shipped.chapters[0].title == "R = #0 against Q = #1");
+    CHECK(in_language(shipped.chapters[0].titles, "de", shipped.languages) == "R = #0 gegen Q = #1");
+    CHECK(in_language(shipped.chapters[0].titles, "fr", shipped.languages) == "R = #0 against Q = #1");  // else the first language
 
     const std::string scene = "scene = \"" HSR_SOURCE_DIR "/assets/scenes/cs_segments.toml\"\nalgorithm = \"cohen_sutherland\"\n";
     const Lesson both = load_lesson_text(HSR_SOURCE_DIR "/lessons/t.toml",

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -13,19 +14,10 @@ namespace hsr::viz {
 namespace {
 const ImVec4 wrong(1.0f, 0.35f, 0.45f, 1);  // a face culled that the eye sees: the test was wrong for it
 int scrolled_to = -1;                        // the row the table last scrolled to
-}  // namespace
 
-void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, (tr("backface.title") + "###state").c_str());
-    const BackfaceView& v = s.view();
-    const Strings& words = window_strings();
-    wrapped_text(tr("backface.counts", {{"kept", std::to_string(v.kept)}, {"culled", std::to_string(v.culled)},
-                                        {"left", std::to_string(int(v.faces.size()) - v.kept - v.culled)}, {"test", words.say(algo::term(v.test))}}),
-                 dim_text);
+// Every face: its id, the test's value, what the ray cast saw of it, and the verdict.
+void faces_table(const BackfaceView& v) {
     const bool cast = !v.faces.empty() && v.faces.front().seen.has_value();
-    if (cast && (v.kept_hidden > 0 || v.culled_seen > 0))
-        wrapped_text(tr("backface.against_ray_cast", {{"hidden", std::to_string(v.kept_hidden)}, {"seen", std::to_string(v.culled_seen)}}),
-                     v.culled_seen > 0 ? wrong : dim_text);
     const std::string face = tr("backface.face"), verdict = tr("backface.verdict"), seen = tr("backface.seen");
     const std::string quantity = v.test == algo::BackfaceTest::view_vector      ? "v·n"
                                  : v.test == algo::BackfaceTest::plane_equation ? "N·eye + D"
@@ -62,7 +54,7 @@ void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
                 continue;
             }
             const bool kept = *f.facing == algo::Facing::front;
-            std::string says = words.say(algo::term(*f.facing));
+            std::string says = tr(kept ? "backface.kept" : "backface.culled");  // the column's title says what is judged
             if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
             if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
             // wrapped in its cell: "front-facing: kept · hidden anyway" is wider than the column in a narrow box
@@ -72,7 +64,31 @@ void backface_state_panel(const BackfaceSession& s, const PanelLayout& l) {
         }
         ImGui::EndTable();
     }
+}
+
+}  // namespace
+
+
+void backface_state_panel(const BackfaceSession& s, bool table_in_view, const PanelLayout& l) {
+    begin_column_box(l, Box::state, (tr("backface.title") + "###state").c_str());
+    const BackfaceView& v = s.view();
+    const Strings& words = window_strings();
+    wrapped_text(tr("backface.counts", {{"kept", std::to_string(v.kept)}, {"culled", std::to_string(v.culled)},
+                                        {"left", std::to_string(int(v.faces.size()) - v.kept - v.culled)}, {"test", words.say(algo::term(v.test))}}),
+                 dim_text);
+    const bool cast = !v.faces.empty() && v.faces.front().seen.has_value();
+    if (cast && (v.kept_hidden > 0 || v.culled_seen > 0))
+        wrapped_text(tr("backface.against_ray_cast", {{"hidden", std::to_string(v.kept_hidden)}, {"seen", std::to_string(v.culled_seen)}}),
+                     v.culled_seen > 0 ? wrong : dim_text);
+    if (!table_in_view) faces_table(v);
     end_column_box(l, Box::state);
 }
+
+void backface_faces_box(const BackfaceSession& s, float view_w, float view_h) {
+    begin_view_side_box(tr("backface.title") + "###faces in the view", view_w, view_h, 0, faces_box_share);
+    faces_table(s.view());
+    end_view_side_box();
+}
+
 
 }  // namespace hsr::viz

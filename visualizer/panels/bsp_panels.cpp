@@ -10,6 +10,7 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/view_side_box.h"
 #include "state/bsp_painting.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
@@ -54,6 +55,7 @@ void tree_controls(const BspSession& s, UiActions& out) {
 void draw_tree(const BspView& v) {
     // the branches' legend, as many of its three parts to a line as fit
     const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    ImGui::PushTextWrapPos(0);  // a part wider than the box wraps
     const std::pair<ImVec4, std::string> legend[] = {{front_branch, tr("bsp.left")}, {dim_text, tr("bsp.normal_side")}, {back_branch, tr("bsp.right")}};
     for (std::size_t k = 0; k < 3; ++k) {
         if (k > 0) {
@@ -62,6 +64,7 @@ void draw_tree(const BspView& v) {
         }
         ImGui::TextColored(legend[k].first, "%s", legend[k].second.c_str());
     }
+    ImGui::PopTextWrapPos();
 
     // Layout: x by in-order position, y by depth.
     std::vector<float> x(v.nodes.size(), 0.f);
@@ -121,24 +124,20 @@ void draw_tree(const BspView& v) {
 
 }  // namespace
 
-void bsp_state_panel(const BspSession& s, const PanelLayout& l, UiActions& out) {
+void bsp_state_panel(const BspSession& s, bool tree_in_view, const PanelLayout& l, UiActions& out) {
     begin_column_box(l, Box::state, (tr("bsp.tree") + "###bsp tree").c_str());
     wrapped_text(tree_summary(s), dim_text);
     tree_controls(s, out);
-    // the tree itself is in the view, beside the scene (bsp_tree_canvas)
+    if (!tree_in_view) draw_tree(s.view());  // else it is in the view, beside the scene (bsp_tree_canvas)
     end_column_box(l, Box::state);
 }
 
 void bsp_tree_canvas(const BspSession& s, float view_w, float view_h) {
     const BspView& v = s.view();
-    // the view's right part (a 2D plan's: above the first-person strip); the scene is framed left of it
-    // (Screen<BspSession>::frame)
-    const float x = view_w * (1 - tree_share), w = view_w * tree_share - 8, h = view_h - (v.two_d ? strip_height(view_h) : 0) - 16;
-    place(x, 8, w, h);
-    ImGui::Begin((tr("bsp.tree") + "###bsp tree in the view").c_str(), nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    // in a 2D plan above the first-person strip
+    begin_view_side_box(tr("bsp.tree") + "###bsp tree in the view", view_w, view_h, v.two_d ? strip_height(view_h) : 0);
     draw_tree(v);
-    audit_current_window();
-    ImGui::End();
+    end_view_side_box();
 }
 
 float strip_height(float view_h) { return std::clamp(0.2f * view_h, 80.0f, 260.0f); }

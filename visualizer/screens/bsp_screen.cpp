@@ -51,23 +51,14 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
     const glm::dvec3 from = s.lesson().scene.camera.eye - glm::dvec3(centre);
     if (s.view().two_d) {
         camera.yaw = 0, camera.pitch = 0;  // face the plane z = 0
-        // the plan sits above the first-person strip (framed as if it reached a third further down) and left of the
-        // tree (bsp_tree_canvas: framed as if it reached as far again to the right, for a view about 1.1 times as
-        // wide as it is tall)
+        // the plan sits above the first-person strip: framed as if it reached a third further down
         centre.y -= 0.3f * radius, radius *= 1.3f;
-        radius *= 1.3f;
-        centre.x += 0.994f * 1.1f * tree_share * radius;
-    } else {
-        if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
-            const glm::dvec3 d = glm::normalize(from);
-            camera.yaw = float(std::atan2(d.x, d.z));
-            camera.pitch = float(std::clamp(std::asin(d.y) + 0.25, -1.4, 1.4));
-        }
-        // left of the tree: the target moved to the camera's right, as for the plan
-        radius *= 1.2f;
-        centre += glm::vec3(std::cos(camera.yaw), 0, -std::sin(camera.yaw)) * (0.994f * 1.1f * tree_share * radius);
+    } else if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
+        const glm::dvec3 d = glm::normalize(from);
+        camera.yaw = float(std::atan2(d.x, d.z));
+        camera.pitch = float(std::clamp(std::asin(d.y) + 0.25, -1.4, 1.4));
     }
-    frame_bounds(camera, centre, radius);
+    frame_left_of_side_box(camera, centre, radius);  // the tree is in the view's right part (bsp_tree_canvas)
 }
 
 void Screen<BspSession>::draw_scene(const BspSession& s, SceneFrame& f) const {

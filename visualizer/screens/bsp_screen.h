@@ -18,8 +18,9 @@ public:
     void draw_scene(const BspSession& s, SceneFrame& f) const;
     void draw_panels(const BspSession& s, PanelFrame& f) const {
         bsp_painted_canvas(s, f.view_w, f.view_h, drives(s, f.second_view));
-        bsp_tree_canvas(s, f.view_w, f.view_h);
-        bsp_state_panel(s, f.layout, f.actions);
+        const bool tree_in_view = side_box_fits(f.view_w);
+        if (tree_in_view) bsp_tree_canvas(s, f.view_w, f.view_h);
+        bsp_state_panel(s, tree_in_view, f.layout, f.actions);
     }
     // V in a 2D plan: drive mode, the arrows walk and turn the eye
     bool drives(const BspSession& s, bool second_view) const { return second_view && s.view().two_d; }

@@ -27,4 +27,11 @@ void frame_bounds(OrbitCamera& camera, glm::vec3 centre, float radius) {
     camera.distance = radius * 2.4f;
 }
 
+void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share) {
+    radius /= 1 - share;  // the scene keeps the width left of the box
+    // half the view's height at the target is 2.4 · tan(22.5°) ≈ 0.994 radii; its half-width 1.1 times that
+    const glm::vec3 right(std::cos(camera.yaw), 0, -std::sin(camera.yaw));
+    frame_bounds(camera, centre + right * (0.994f * 1.1f * share * radius), radius);
+}
+
 }  // namespace hsr::viz

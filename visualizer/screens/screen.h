@@ -18,6 +18,7 @@
 
 #include "panels/lesson_panels.h"
 #include "panels/ui_actions.h"
+#include "panels/view_side_box.h"
 #include "render/label.h"
 #include "render/line_batch.h"
 #include "render/orbit_camera.h"
@@ -110,5 +111,9 @@ struct ScreenDefaults {
 
 // Where a lesson's scene sits, for the orbit camera to frame it.
 void frame_bounds(OrbitCamera& camera, glm::vec3 centre, float radius);
+// The same, left of a box in the view's right part (panels/view_side_box.h: the lesson's result, a tree or a table):
+// the target moves to the camera's right and the scene is framed a little smaller (for a view about 1.1 times as
+// wide as it is tall).
+void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share = side_box_share);
 
 }  // namespace hsr::viz

@@ -28,7 +28,7 @@ std::array<float, N> fair(const std::array<float, N>& want, float room) {
 std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count>& asks, float height, bool result_first) {
     std::array<float, box_count> h{};
     const auto q = std::size_t(Box::question);
-    h[q] = std::min(asks[q].full, height / 2);
+    h[q] = std::min(asks[q].full, height * 0.6f);  // a practice exercise with five long choices needs more than half
     float room = height - h[q];
 
     // then what the lesson box must show (the chapter's text is the lesson; up to half of what is left)

@@ -41,7 +41,7 @@ public:
     // What the box's content needed this frame (title bar and padding included).
     void asked(Box b, BoxAsk ask);
 
-    // The arithmetic of arrange, for tests: the question first (up to half the column), the lesson's need (up to
+    // The arithmetic of arrange, for tests: the question first (up to 60 % of the column), the lesson's need (up to
     // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
     // remains equally); what is left over goes to the state box, else the narration. With `result_first`, the state
     // box's full height (up to 70 % of what the question and the lesson leave) comes before the other boxes' needs.
