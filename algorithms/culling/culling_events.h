@@ -32,12 +32,13 @@ struct HierarchyBuilt {
 };
 using HierarchyEvent = std::variant<HierarchyNodeBuilt, HierarchyBuilt>;
 
-// The lecture's IntersectionTest of a node's box with the view frustum, and detail culling.
+// The visibility test of a node's box against the planes of the view frustum, and detail culling.
 enum class NodeOutcome : std::uint8_t {
-    outside,    // wholly outside a plane: rejected with everything below it
-    inside,     // wholly inside every plane still to test: accepted with everything below it, no more tests
-    partial,    // crosses a plane: its primitives are kept, its children tested
-    too_small,  // its projected size is below the detail threshold: left out with everything below it
+    outside,       // wholly outside a plane: rejected with everything below it
+    inside,        // wholly inside every plane still to test: accepted with everything below it, no more tests
+    partial,       // crosses a plane: its primitives are kept, its children tested
+    too_small,     // its projected size is below the detail threshold: left out with everything below it
+    large_enough,  // detail culling alone (no frustum): not below the threshold, its primitives kept, its children tested
 };
 struct NodeCulled {
     static constexpr std::string_view kind = "NodeCulled";
@@ -48,10 +49,13 @@ struct NodeCulled {
     std::int8_t plane;           // outside: the plane that rejected it; else −1
     double pixels;               // its projected size (detail culling on), else 0
     std::uint32_t primitives;    // in its subtree
+    std::uint32_t own_primitives = 0;   // partial: the primitives it holds itself (not its children), reaching this stage
+    std::uint32_t primitive_tests = 0;  // partial: plane tests of those primitives' boxes against the planes still to test
     bool operator==(const NodeCulled&) const = default;
 };
 struct HierarchyCullFinished {
     static constexpr std::string_view kind = "HierarchyCullFinished";
+    // plane_tests: every one, the nodes' (planes_tested) and their own primitives' boxes' (primitive_tests)
     std::uint32_t nodes_tested, plane_tests, kept, outside, too_small;  // kept / left out: primitives
     bool operator==(const HierarchyCullFinished&) const = default;
 };

@@ -168,20 +168,24 @@ Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* h, Came
         }
     };
     const auto candidate = [&](std::uint32_t p) { return o.candidates.empty() || o.candidates[p] != 0; };
-    const auto candidates_below = [&](std::uint32_t top) {
-        std::uint32_t count = 0;
-        each_below(top, [&](std::uint32_t p) { count += candidate(p); });
-        return count;
-    };
+    // per node: the primitives in its subtree that reached this stage (a child's index is above its parent's)
+    std::vector<std::uint32_t> below(h->nodes.size(), 0);
+    for (std::size_t n = h->nodes.size(); n-- > 0;) {
+        for (std::uint32_t p : h->nodes[n].primitives) below[n] += candidate(p);
+        if (const std::int32_t parent = h->nodes[n].parent; parent >= 0) below[std::size_t(parent)] += below[n];
+    }
+    const auto candidates_below = [&](std::uint32_t top) { return below[top]; };
     std::vector<std::pair<std::uint32_t, std::uint8_t>> stack;  // node, the planes still to test (clip flags)
     if (!h->nodes.empty()) stack.push_back({0, std::uint8_t(o.frustum ? 0x3f : 0)});
     while (!stack.empty()) {
         const auto [n, mask_in] = stack.back();
         stack.pop_back();
         const HierarchyNode& node = h->nodes[n];
+        // a subtree whose primitives the stages before all left out holds nothing to cull: not visited
+        if (!o.candidates.empty() && candidates_below(n) == 0) continue;
         ++out.nodes_tested;
         NodeCulled e{n, NodeOutcome::partial, 0, mask_in, -1, 0, node.subtree_primitives};
-        // IntersectionTest against each plane the parent was not wholly inside
+        // the visibility test: the node's box against each plane the parent was not wholly inside
         for (int k = 0; k < 6 && e.plane < 0; ++k) {
             if (!(e.mask_after & (1 << k))) continue;
             ++e.planes_tested, ++out.plane_tests;
@@ -202,18 +206,22 @@ Steps<HierarchyCullEvent, HierarchyCull> cull_hierarchy(const Hierarchy* h, Came
             continue;
         }
         if (o.frustum && e.mask_after == 0) e.outcome = NodeOutcome::inside;
-        co_yield e;
+        if (!o.frustum) e.outcome = NodeOutcome::large_enough;
         if (e.outcome == NodeOutcome::inside && o.detail_pixels <= 0) {  // accepted with its subtree, no more tests
+            co_yield e;
             each_below(n, [&](std::uint32_t p) { out.kept[p] = candidate(p); });
             continue;
         }
-        // the node's own primitives: each box against the planes still to test
+        // the node's own primitives: each box against the planes still to test (told with the node)
         for (std::uint32_t p : node.primitives) {
             if (!candidate(p)) continue;  // left out before this stage
-            const bool in = box_passes(h->boxes[p], frustum, e.mask_after, &out.plane_tests);
+            const bool in = box_passes(h->boxes[p], frustum, e.mask_after, &e.primitive_tests);
+            ++e.own_primitives;
             out.kept[p] = in;
             out.outside += !in;
         }
+        out.plane_tests += e.primitive_tests;
+        co_yield e;
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, e.mask_after});
     }
     std::uint32_t kept = 0;

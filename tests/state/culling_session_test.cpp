@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Culling lessons: each view folded to the end holds what its machine returns; seeking equals folding.
+#include <cmath>
+
 #include "catch.h"
 #include "state/families.h"
 
@@ -150,4 +152,121 @@ TEST_CASE("an occluder lesson's occluder and fusion keys are checked, with the f
     const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/38_culling_fusion.toml");
     CHECK(occlusion_options(lesson).kind == OccluderKind::solid);
     CHECK(occlusion_options(lesson).fusion);
+}
+
+TEST_CASE("the frustum lesson has one count of plane tests: the header's is the machine's at every step", "[state][culling]") {
+    // Lesson 22 showed "217 plane tests" in the culling box and "Done: … 373 plane tests" in the narration at the
+    // same step: the box counted the nodes' tests, the machine also those of the primitives' own boxes.
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/22_culling_frustum.toml");
+    auto run = HierarchyCullSession::machine(lesson);
+    CullingView v = run.initial;
+    std::uint32_t said = 0, told = 0;
+    bool own_tested = false;
+    for (const HierarchyCullEvent& e : run.machine) {
+        reduce(v, e);
+        if (const auto* c = std::get_if<NodeCulled>(&e)) {
+            told += c->planes_tested + c->primitive_tests;
+            own_tested = own_tested || c->primitive_tests > 0;
+            if (c->primitive_tests > 0) CHECK_THAT(describe(e), Catch::Contains(std::to_string(c->primitive_tests) + " more"));
+        }
+        if (const auto* f = std::get_if<HierarchyCullFinished>(&e)) said = f->plane_tests;
+        REQUIRE(v.plane_tests == told);
+    }
+    CHECK(own_tested);  // the lesson's scene does test primitives' boxes
+    CHECK(said == v.plane_tests);
+    CHECK(run.machine.result().plane_tests == v.plane_tests);
+}
+
+TEST_CASE("the bounds lesson's header counts follow the build", "[state][culling]") {
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/21_culling_bounds.toml");
+    BoundsSession s(lesson);
+    const CullingView& v = s.view();
+    CHECK(v.built == 0);
+    std::uint32_t before = 0;
+    while (!s.at_end()) {
+        s.micro_step();
+        CHECK(v.built >= before);
+        CHECK(v.leaves <= v.built);
+        before = v.built;
+    }
+    CHECK(v.built == v.world->hierarchy.nodes.size());
+    std::uint32_t leaves = 0;
+    for (const auto& n : v.world->hierarchy.nodes) leaves += n.children.empty();
+    CHECK(v.leaves == leaves);
+}
+
+TEST_CASE("detail culling alone speaks of sizes, not of plane tests, and visits only what reached it", "[state][culling]") {
+    // Lesson 23 said "Node 8 (664 primitives): partly inside after 0 plane tests", and walked the whole octree,
+    // boxes the frustum stage had emptied included (1887 steps).
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/23_culling_detail.toml");
+    auto run = HierarchyCullSession::machine(lesson);
+    CullingView v = run.initial;
+    for (const HierarchyCullEvent& e : run.machine) {
+        reduce(v, e);
+        if (const auto* c = std::get_if<NodeCulled>(&e)) {
+            INFO(describe(e));
+            CHECK(c->planes_tested == 0);
+            CHECK((c->outcome == NodeOutcome::too_small || c->outcome == NodeOutcome::large_enough));
+            CHECK_THAT(describe(e), !Catch::Contains("plane test"));
+            if (std::isfinite(c->pixels)) CHECK_THAT(describe(e), Catch::Contains(" pixels, "));
+            else CHECK_THAT(describe(e), Catch::Contains("reaches the eye's plane"));  // a sphere round the eye: no size
+            bool holds = false;  // a primitive below it reached the detail stage
+            std::vector<std::uint32_t> stack{c->node};
+            while (!stack.empty()) {
+                const std::uint32_t n = stack.back();
+                stack.pop_back();
+                for (std::uint32_t p : v.world->hierarchy.nodes[n].primitives) holds = holds || v.world->candidates[p];
+                for (std::uint32_t k : v.world->hierarchy.nodes[n].children) stack.push_back(k);
+            }
+            CHECK(holds);
+        }
+    }
+    CHECK(std::find(v.nodes.begin(), v.nodes.end(), NodeMark::partial) == v.nodes.end());
+}
+
+TEST_CASE("the culling view draws the node under test, its way down and its next children, and a readable end", "[state][culling]") {
+    for (const char* file : {"21_culling_bounds.toml", "22_culling_frustum.toml", "23_culling_detail.toml", "24_culling_occluders.toml"}) {
+        INFO(file);
+        const Lesson lesson = load_lesson(std::string(HSR_SOURCE_DIR "/lessons/") + file);
+        const FamilySession session = make_session(lesson);
+        const CullingView& v = culling_lesson_of(session).culling_view();
+        // before the first step: the root, named
+        if (v.current < 0) {
+            const auto first = shown_boxes(v);
+            REQUIRE(first.size() == 1);
+            CHECK(first[0].node == 0);
+            CHECK(first[0].labelled);
+        }
+        session->seek_end();
+        const std::size_t n = session->cursor();
+        for (std::size_t k = 1; k < n; k += 5) {
+            session->seek(k);
+            if (v.current < 0) continue;
+            INFO("step " << k);
+            const auto boxes = shown_boxes(v);
+            const auto current = std::count_if(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.weight == ShownBox::Weight::current; });
+            CHECK(current == 1);
+            const auto labels = std::count_if(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.labelled; });
+            CHECK(labels <= 3);  // the node under test and the next two: no pile of labels
+            for (const ShownBox& b : boxes) {
+                if (b.weight == ShownBox::Weight::current) CHECK(std::int32_t(b.node) == v.current);
+                if (b.weight == ShownBox::Weight::next) CHECK(b.mark == NodeMark::untouched);
+                if (b.weight == ShownBox::Weight::path) {  // an ancestor of the node under test
+                    bool above = false;
+                    for (std::int32_t a = v.world->hierarchy.nodes[std::size_t(v.current)].parent; a >= 0; a = v.world->hierarchy.nodes[std::size_t(a)].parent)
+                        above = above || std::uint32_t(a) == b.node;
+                    CHECK(above);
+                }
+            }
+        }
+        session->seek_end();
+        const auto end = shown_boxes(v);
+        const auto touched = std::count_if(v.nodes.begin(), v.nodes.end(), [](NodeMark m) { return m != NodeMark::untouched; });
+        CHECK(end.size() < std::size_t(touched));  // a frontier, not every box
+        for (const ShownBox& b : end) {
+            CHECK(b.mark != NodeMark::outside);
+            CHECK_FALSE(b.labelled);
+            CHECK(b.weight == ShownBox::Weight::settled);
+        }
+    }
 }

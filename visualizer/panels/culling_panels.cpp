@@ -124,17 +124,22 @@ void void_table(const CullingView& v) {
 
 // The colours of the boxes the view shows now, each with its word.
 void culling_legend(const CullingView& v) {
+    const std::vector<ShownBox> boxes = shown_boxes(v);
     std::vector<StateColour> shown;
     const auto add_if = [&](NodeMark m, const StateColour& c) {
-        if (std::find(v.nodes.begin(), v.nodes.end(), m) != v.nodes.end()) shown.push_back(c);
+        if (std::any_of(boxes.begin(), boxes.end(), [&](const ShownBox& b) { return b.mark == m; })) shown.push_back(c);
     };
     add_if(NodeMark::outside, culling_colours::outside);
     add_if(NodeMark::inside, culling_colours::inside);
     add_if(NodeMark::partial, culling_colours::partial);
+    add_if(NodeMark::large_enough, culling_colours::large_enough);
     add_if(NodeMark::too_small, culling_colours::too_small);
     add_if(NodeMark::occluded, culling_colours::occluded);
     add_if(NodeMark::visible, culling_colours::visible);
     add_if(NodeMark::built, culling_colours::built);
+    // the children still to test are drawn white too; the bounds lesson's built nodes have that word already
+    if (!std::any_of(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.mark == NodeMark::built; }))
+        add_if(NodeMark::untouched, culling_colours::built);
     state_legend(shown);
 }
 
@@ -145,8 +150,11 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
     const CullingView& v = s.culling_view();
     const auto n = [](auto value) { return std::to_string(value); };
     // one clause per fact, joined by " · " (each a whole sentence in its language)
-    std::string header = tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
-                            {{"machine", machine_name(s.culling_machine())}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}});
+    std::string header = s.culling_machine() == algo::CullingMachine::bounds
+                             ? tr("culling.built_so_far", {{"machine", machine_name(s.culling_machine())}, {"built", n(v.built)},
+                                                           {"nodes", n(v.world->hierarchy.nodes.size())}, {"leaves", n(v.leaves)}})
+                             : tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
+                                  {{"machine", machine_name(s.culling_machine())}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}});
     if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + tr("culling.plane_tests", {{"tests", n(v.plane_tests)}});
     if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + tr("culling.texels", {{"texels", n(v.texels)}});
     if (s.culling_machine() == algo::CullingMachine::occluders) {

@@ -22,6 +22,7 @@ glm::vec4 mark_colour(NodeMark m) {
         case NodeMark::inside: return with_alpha(culling_colours::inside, 0.9f);
         case NodeMark::partial: return with_alpha(culling_colours::partial, 0.8f);
         case NodeMark::too_small: return with_alpha(culling_colours::too_small, 0.9f);
+        case NodeMark::large_enough: return with_alpha(culling_colours::large_enough, 0.8f);
         case NodeMark::occluded: return with_alpha(culling_colours::occluded, 0.9f);
         case NodeMark::visible: return with_alpha(culling_colours::visible, 0.9f);
         case NodeMark::built: return with_alpha(culling_colours::built, 0.6f);
@@ -66,25 +67,29 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
                 out.faint.line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
                                c * glm::vec4(1, 1, 1, m == PrimitiveMark::left_out || m == PrimitiveMark::earlier ? 0.12f : 0.35f));
     }
-    // the hierarchy's boxes, by what happened to them: the node under test bold, the nodes on its way down from the
-    // root in full colour, what is settled dimmed; a node decided whole (rejected, accepted, too small, occluded)
-    // stands for its subtree, so its descendants are not drawn (they would bury the picture in wireframe)
-    std::vector<bool> on_path(h.nodes.size(), false);
-    for (std::int32_t n = v.current; n >= 0; n = h.nodes[std::size_t(n)].parent) on_path[std::size_t(n)] = true;
-    const auto decided_whole = [&](std::size_t n) {
-        const NodeMark m = v.nodes[n];
-        return m == NodeMark::outside || m == NodeMark::inside || m == NodeMark::too_small || m == NodeMark::occluded;
-    };
-    for (std::size_t n = 0; n < h.nodes.size(); ++n) {
-        if (v.nodes[n] == NodeMark::untouched || std::int32_t(n) == v.current) continue;
-        bool under_decided = false;
-        for (std::int32_t a = h.nodes[n].parent; a >= 0 && !under_decided; a = h.nodes[std::size_t(a)].parent)
-            under_decided = decided_whole(std::size_t(a));
-        if (under_decided) continue;
-        const glm::vec4 c = mark_colour(v.nodes[n]);
-        box_lines(out.faint, h.nodes[n].box, on_path[n] ? c : c * glm::vec4(1, 1, 1, 0.3f));
+    // the hierarchy's boxes, by what happened to them (state/culling_session.h, shown_boxes): the node under test
+    // bold, its way down from the root in full colour, what is settled beside that way faint, the children still to
+    // test white; the boxes the narration names labelled with their number
+    const std::vector<ShownBox> boxes = shown_boxes(v);
+    for (const ShownBox& b : boxes) {
+        const algo::Aabb& box = h.nodes[b.node].box;
+        const glm::vec4 c = b.mark == NodeMark::untouched ? with_alpha(culling_colours::built, 0.55f) : mark_colour(b.mark);
+        switch (b.weight) {
+            case ShownBox::Weight::current: box_lines(out.bold, box, c); break;
+            case ShownBox::Weight::path: box_lines(out.faint, box, c); break;
+            case ShownBox::Weight::next: box_lines(out.faint, box, c); break;
+            case ShownBox::Weight::settled: box_lines(out.faint, box, c * glm::vec4(1, 1, 1, v.done ? 0.45f : 0.3f)); break;
+        }
     }
-    if (v.current >= 0) box_lines(out.bold, h.nodes[std::size_t(v.current)].box, mark_colour(v.nodes[std::size_t(v.current)]));
+    for (const bool current : {false, true})  // the node under test last: its label is placed first
+        for (const ShownBox& b : boxes)
+            if (b.labelled && (b.weight == ShownBox::Weight::current) == current) {
+                const glm::vec4 c = b.mark == NodeMark::untouched ? with_alpha(culling_colours::built, 1) : mark_colour(b.mark);
+                // at the middle of its top face: nested boxes round the eye share their centres, not their tops
+                const algo::Aabb& box = h.nodes[b.node].box;
+                const glm::vec3 top(box.centre().x, box.hi.y, box.centre().z);
+                labels.push_back({top, tr(b.node == 0 ? "culling.label_root" : "culling.label_node", {{"n", std::to_string(b.node)}}), c});
+            }
     // occluders and the rays of their occlusion frusta
     // (a proxy is the polygon square to the view that stands for a polygon or a solid; a solid's is drawn with its
     // silhouette rays, which bound what it hides)

@@ -48,6 +48,7 @@ OcclusionOptions occlusion_options(const Lesson& lesson) {
 
 std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     auto w = std::make_shared<CullingWorld>();
+    w->machine = machine_of<CullingMachine>(lesson);
     w->scene = lesson.scene;
     w->scene.camera.aspect = double(lesson.grid.width) / double(lesson.grid.height);
     const HierarchyKind kind = machine_of<CullingMachine>(lesson) == CullingMachine::bounds ? HierarchyKind::bvh : HierarchyKind::octree;
@@ -97,7 +98,10 @@ std::size_t approx_bytes(const CullingView& v) {
 
 void reduce(CullingView& v, const HierarchyEvent& event) {
     std::visit(overloaded{
-                   [&](const HierarchyNodeBuilt& e) { v.nodes[e.node] = NodeMark::built, v.current = std::int32_t(e.node); },
+                   [&](const HierarchyNodeBuilt& e) {
+                       v.nodes[e.node] = NodeMark::built, v.current = std::int32_t(e.node);
+                       ++v.built, v.leaves += e.leaf != LeafReason::not_a_leaf;
+                   },
                    [&](const HierarchyBuilt&) { v.done = true, v.current = -1; },
                },
                event);
@@ -106,13 +110,16 @@ void reduce(CullingView& v, const HierarchyEvent& event) {
 void reduce(CullingView& v, const HierarchyCullEvent& event) {
     std::visit(overloaded{
                    [&](const NodeCulled& e) {
-                       v.current = std::int32_t(e.node), v.plane_tests += e.planes_tested;
+                       v.current = std::int32_t(e.node), v.plane_tests += e.planes_tested + e.primitive_tests;
                        switch (e.outcome) {
                            case NodeOutcome::outside: mark_subtree(v, e.node, NodeMark::outside, PrimitiveMark::left_out); break;
                            case NodeOutcome::too_small: mark_subtree(v, e.node, NodeMark::too_small, PrimitiveMark::left_out); break;
                            case NodeOutcome::inside:
-                           case NodeOutcome::partial: {
-                               v.nodes[e.node] = e.outcome == NodeOutcome::inside ? NodeMark::inside : NodeMark::partial;
+                           case NodeOutcome::partial:
+                           case NodeOutcome::large_enough: {
+                               v.nodes[e.node] = e.outcome == NodeOutcome::inside    ? NodeMark::inside
+                                                 : e.outcome == NodeOutcome::partial ? NodeMark::partial
+                                                                                     : NodeMark::large_enough;
                                const auto& node = v.world->hierarchy.nodes[e.node];
                                // its own primitives: kept unless their boxes fail a plane still to test
                                for (std::uint32_t p : node.primitives)
@@ -179,6 +186,62 @@ void reduce(CullingView& v, const HizEvent& event) {
                    [&](const HizFinished&) { v.done = true, v.current = -1; },
                },
                event);
+}
+
+std::vector<ShownBox> shown_boxes(const CullingView& v) {
+    const Hierarchy& h = v.world->hierarchy;
+    std::vector<ShownBox> out;
+    if (h.nodes.empty()) return out;
+    const auto touched = [&](std::size_t n) { return v.nodes[n] != NodeMark::untouched; };
+    const auto decided_whole = [&](std::size_t n) {  // it stands for its subtree
+        const NodeMark m = v.nodes[n];
+        const bool passed_whole = m == NodeMark::visible && v.world->machine == CullingMachine::occluders;  // Hi-Z tests its children
+        return m == NodeMark::outside || m == NodeMark::inside || m == NodeMark::too_small || m == NodeMark::occluded || passed_whole;
+    };
+    if (v.done) {  // where the traversal stopped, but not the frustum's rejections
+        for (std::size_t n = 0; n < h.nodes.size(); ++n) {
+            if (!touched(n) || v.nodes[n] == NodeMark::outside) continue;
+            bool under_decided = false;
+            for (std::int32_t a = h.nodes[n].parent; a >= 0 && !under_decided; a = h.nodes[std::size_t(a)].parent)
+                under_decided = decided_whole(std::size_t(a));
+            const bool a_child_visited = std::any_of(h.nodes[n].children.begin(), h.nodes[n].children.end(),
+                                                     [&](std::uint32_t c) { return touched(c); });
+            if (!under_decided && (decided_whole(n) || !a_child_visited)) out.push_back({std::uint32_t(n), v.nodes[n], ShownBox::Weight::settled, false});
+        }
+        return out;
+    }
+    if (v.current < 0) {  // before the first step: the root, still to test
+        out.push_back({0, v.nodes[0], ShownBox::Weight::next, true});
+        return out;
+    }
+    const auto current = std::uint32_t(v.current);
+    std::vector<std::uint32_t> path;  // the root first, down to the current node's parent
+    for (std::int32_t a = h.nodes[current].parent; a >= 0; a = h.nodes[std::size_t(a)].parent) path.insert(path.begin(), std::uint32_t(a));
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        out.push_back({path[k], v.nodes[path[k]], ShownBox::Weight::path, false});
+        const std::uint32_t below = k + 1 < path.size() ? path[k + 1] : current;
+        for (std::uint32_t c : h.nodes[path[k]].children)  // settled beside the way down
+            if (c != below && touched(c)) out.push_back({c, v.nodes[c], ShownBox::Weight::settled, false});
+    }
+    // the children still to test (a node decided whole has none; a subtree the stages before emptied is not
+    // visited), the first two named
+    const auto holds_a_candidate = [&](std::uint32_t top) {
+        std::vector<std::uint32_t> stack{top};
+        while (!stack.empty()) {
+            const std::uint32_t n = stack.back();
+            stack.pop_back();
+            for (std::uint32_t p : h.nodes[n].primitives)
+                if (v.primitives[p] != PrimitiveMark::earlier) return true;
+            stack.insert(stack.end(), h.nodes[n].children.begin(), h.nodes[n].children.end());
+        }
+        return false;
+    };
+    std::size_t named = 0;
+    if (!decided_whole(current))
+        for (std::uint32_t c : h.nodes[current].children)
+            if (!touched(c) && holds_a_candidate(c)) out.push_back({c, NodeMark::untouched, ShownBox::Weight::next, named++ < 2});
+    out.push_back({current, v.nodes[current], ShownBox::Weight::current, true});
+    return out;
 }
 
 // ── [SECTION] each machine's pseudocode, lines and steps ────────────────────────────────────────────────────

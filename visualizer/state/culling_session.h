@@ -17,6 +17,7 @@
 namespace hsr::viz {
 
 struct CullingWorld {
+    algo::CullingMachine machine = algo::CullingMachine::frustum;  // the lesson's
     algo::Scene scene;
     algo::Hierarchy hierarchy;                 // complete (a bounds lesson folds its build event by event)
     std::vector<algo::StageReport> pipeline;   // the whole pipeline on this scene, once
@@ -30,7 +31,7 @@ struct CullingWorld {
     std::vector<std::uint8_t> candidates;
 };
 
-enum class NodeMark : std::uint8_t { untouched, built, outside, inside, partial, too_small, occluded, visible };
+enum class NodeMark : std::uint8_t { untouched, built, outside, inside, partial, too_small, large_enough, occluded, visible };
 enum class PrimitiveMark : std::uint8_t { untouched, kept, left_out, earlier };  // earlier: left out by a stage before
 
 struct CullingView {
@@ -45,7 +46,9 @@ struct CullingView {
     std::vector<ShownOccluder> occluders;       // chosen, best first
     std::vector<std::uint32_t> rendered;        // Hi-Z: primitives rendered, in order (the pyramid is rebuilt from them)
     std::int32_t current = -1;                  // the node last touched
-    std::uint32_t kept = 0, left_out = 0, earlier = 0, plane_tests = 0, texels = 0;
+    std::uint32_t kept = 0, left_out = 0, earlier = 0, texels = 0;
+    std::uint32_t plane_tests = 0;              // every plane test so far: nodes' boxes and their own primitives' boxes
+    std::uint32_t built = 0, leaves = 0;        // the bounds lesson: nodes built so far, and how many of them are leaves
     std::uint32_t fused = 0;                    // occluders: primitives culled by fusion (no single occluder hid them)
     bool done = false;
 };
@@ -54,6 +57,20 @@ void reduce(CullingView& view, const algo::HierarchyEvent& event);
 void reduce(CullingView& view, const algo::HierarchyCullEvent& event);
 void reduce(CullingView& view, const algo::OcclusionEvent& event);
 void reduce(CullingView& view, const algo::HizEvent& event);
+
+// The hierarchy's boxes the view draws now, so that a class can read it: the node under test (bold), the nodes on
+// its way down from the root, the nodes settled beside that way (faint; what lies below them is not drawn), and the
+// children still to test (white). Before the first step, the root still to test; at the end, where the traversal
+// stopped (the nodes with no child visited), but not the boxes rejected by the frustum: the frustum's lines and the
+// faint primitives show what it left out. `labelled`: the boxes the narration names ("node 13").
+struct ShownBox {
+    enum class Weight : std::uint8_t { current, path, next, settled };
+    std::uint32_t node;
+    NodeMark mark;
+    Weight weight;
+    bool labelled;
+};
+std::vector<ShownBox> shown_boxes(const CullingView& view);
 
 // Hi-Z: the depth buffer of the primitives rendered so far (the Z-pyramid is built from it).
 std::vector<std::uint32_t> rendered_depth(const CullingView& view);

@@ -19,7 +19,7 @@ inline void to_json(nlohmann::json& j, HizOutcome o) {
 }
 HSR_TO_JSON(HierarchyNodeBuilt, node, parent, depth, primitives, box, leaf)
 HSR_TO_JSON(HierarchyBuilt, nodes, leaves, depth)
-HSR_TO_JSON(NodeCulled, node, outcome, planes_tested, mask_after, plane, pixels, primitives)
+HSR_TO_JSON(NodeCulled, node, outcome, planes_tested, mask_after, plane, pixels, primitives, own_primitives, primitive_tests)
 HSR_TO_JSON(HierarchyCullFinished, nodes_tested, plane_tests, kept, outside, too_small)
 inline void to_json(nlohmann::json& j, OccluderKind k) { j = std::string(to_string(k)); }
 HSR_TO_JSON(OccluderChosen, polygon, rank, area, shape, faces)

@@ -25,6 +25,9 @@ inline constexpr StateColour occluded{"culling.mark_occluded", 0.800f, 0.475f, 0
 inline constexpr StateColour visible{"culling.mark_visible", 0.337f, 0.706f, 0.914f};   // sky blue
 inline constexpr StateColour built{"culling.mark_built", 0.922f, 0.922f, 0.922f};       // white: built, not yet tested
 inline constexpr std::array all{outside, inside, partial, too_small, occluded, visible, built};
+// detail culling alone: a node not below the threshold, its children tested. Yellow as `partial`, whose place it
+// takes (a lesson without the frustum test has no node partly inside), so it is not one more colour to tell apart.
+inline constexpr StateColour large_enough{"culling.mark_large_enough", partial.r, partial.g, partial.b};
 }  // namespace culling_colours
 
 namespace portal_cell_colours {  // the floor plan's cells while portal_render runs (and the PVS's source cell)
