@@ -73,10 +73,12 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
     const std::vector<ShownBox> boxes = shown_boxes(v);
     for (const ShownBox& b : boxes) {
         const algo::Aabb& box = h.nodes[b.node].box;
-        const glm::vec4 c = b.mark == NodeMark::untouched ? with_alpha(culling_colours::built, 0.55f) : mark_colour(b.mark);
+        const glm::vec4 c = b.mark == NodeMark::untouched ? with_alpha(culling_colours::built, 0.85f) : mark_colour(b.mark);
+        // a build's boxes are all white ("built"): its way down fainter than the children the split made
+        const float path_alpha = b.mark == NodeMark::built ? 0.4f : 1.0f;
         switch (b.weight) {
             case ShownBox::Weight::current: box_lines(out.bold, box, c); break;
-            case ShownBox::Weight::path: box_lines(out.faint, box, c); break;
+            case ShownBox::Weight::path: box_lines(out.faint, box, c * glm::vec4(1, 1, 1, path_alpha)); break;
             case ShownBox::Weight::next: box_lines(out.faint, box, c); break;
             case ShownBox::Weight::settled: box_lines(out.faint, box, c * glm::vec4(1, 1, 1, v.done ? 0.45f : 0.3f)); break;
         }
@@ -85,10 +87,10 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
         for (const ShownBox& b : boxes)
             if (b.labelled && (b.weight == ShownBox::Weight::current) == current) {
                 const glm::vec4 c = b.mark == NodeMark::untouched ? with_alpha(culling_colours::built, 1) : mark_colour(b.mark);
-                // at the middle of its top face: nested boxes round the eye share their centres, not their tops
+                // an octree's cells round the eye share their centres, not their tops: the middle of the top face
                 const algo::Aabb& box = h.nodes[b.node].box;
-                const glm::vec3 top(box.centre().x, box.hi.y, box.centre().z);
-                labels.push_back({top, tr(b.node == 0 ? "culling.label_root" : "culling.label_node", {{"n", std::to_string(b.node)}}), c});
+                const glm::vec3 at = h.kind == algo::HierarchyKind::octree ? glm::vec3(box.centre().x, box.hi.y, box.centre().z) : glm::vec3(box.centre());
+                labels.push_back({at, tr(b.node == 0 ? "culling.label_root" : "culling.label_node", {{"n", std::to_string(b.node)}}), c});
             }
     // occluders and the rays of their occlusion frusta
     // (a proxy is the polygon square to the view that stands for a polygon or a solid; a solid's is drawn with its
