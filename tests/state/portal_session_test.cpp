@@ -75,3 +75,36 @@ TEST_CASE("dragging the eye into another cell reruns portal_render from there", 
     CHECK(s.view().camera.eye.x == 5.0);
     CHECK(s.view().camera.eye.z == -5.0);
 }
+
+TEST_CASE("lesson 20's views name the polygons its questions ask about, and draw the exact frustum beside the box", "[state][portals]") {
+    // The teacher's report: lesson 20 asked about polygon 915 and crate 903, neither labelled in the picture, and
+    // showed only the bounding-box frustum it is about.
+    PortalRenderSession s(load_lesson(HSR_SOURCE_DIR "/lessons/20_portals_bounding_box.toml"));
+    const PortalView& v = s.view();
+    const auto id_of = [&](std::uint32_t k) { return v.world->model.polygons[k].id; };
+    const auto names = [&](std::int32_t id) {
+        const auto n = named_polygons(v);
+        return std::any_of(n.begin(), n.end(), [&](std::uint32_t k) { return id_of(k) == id; });
+    };
+    bool asked_915 = false, shown_903 = false, wider = false;
+    while (!s.at_end()) {
+        s.micro_step();
+        CHECK(named_polygons(v).size() <= 2);  // the last decided and the next: no pile of labels
+        if (v.cell == 1 && v.polygon < 0) asked_915 = asked_915 || names(915);  // R entered, its first wall next
+        if (v.polygon >= 0 && id_of(std::uint32_t(v.polygon)) == 903) shown_903 = shown_903 || names(903);
+        for (const auto& n : v.passed) wider = wider || wider_than_exact(n, v.camera);
+    }
+    CHECK(asked_915);
+    CHECK(shown_903);
+    CHECK(wider);  // the window's box frustum is wider than the exact one: both are drawn
+    CHECK(named_polygons(v).empty());  // at the end
+}
+
+TEST_CASE("an exact portal frustum is not drawn twice", "[state][portals]") {
+    PortalRenderSession s(lesson("20_portals_bounding_box.toml", "portal_render"));
+    s.seek_end();
+    const PortalView& v = s.view();
+    s.seek(16);  // in R, through the window
+    REQUIRE_FALSE(v.passed.empty());
+    for (const auto& n : v.passed) CHECK_FALSE(wider_than_exact(n, v.camera));
+}

@@ -153,6 +153,16 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     }
     d->AddCircleFilled(f(eye), canvas_px(7), eye_colour);
     d->AddLine(f(eye), f(eye + look * (24 / f.scale)), eye_colour, canvas_px(3));
+    // the polygons the narration and the questions name, by their ids, on a dark backing beside their place
+    float below = 0;
+    for (std::uint32_t k : named_polygons(v)) {
+        const std::string text = tr("portals.label_polygon", {{"id", std::to_string(m.polygons[k].id)}});
+        const ImVec2 at = f(algo::plan_point(algo::centroid(m.polygons[k].vertices))), size = ImGui::CalcTextSize(text.c_str());
+        const float pad = canvas_px(3), x = at.x + canvas_px(8), y = at.y - size.y / 2 + below;
+        d->AddRectFilled(ImVec2(x - pad, y - pad / 2), ImVec2(x + size.x + pad, y + size.y + pad / 2), IM_COL32(14, 15, 18, 215), pad);
+        d->AddText(ImVec2(x, y), IM_COL32(242, 242, 242, 255), text.c_str());
+        below += size.y + 2 * pad;  // two named walls side by side do not cover each other
+    }
 }
 
 }  // namespace

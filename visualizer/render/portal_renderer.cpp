@@ -43,12 +43,26 @@ void draw_portal_view(const PortalView& v, LineBatches& out, std::vector<Label>&
     const glm::vec3 eye(v.camera.eye);
     out.bold.point(eye, palette::eye);
     labels.push_back({eye, tr("view.eye"), palette::eye});
-    // the narrowed frusta (exact or bounding box): rays from the eye through the corners of each one's cross-section,
-    // as far as the opening it was narrowed to and a little beyond
-    for (const auto& n : v.passed) {
+    // the narrowed frusta: rays from the eye through the corners of each one's cross-section, as far as the opening it
+    // was narrowed to and a little beyond; with bounding-box frusta the exact one (through the opening's visible
+    // part) beside it, thin, so that what the box adds shows
+    for (std::size_t i = 0; i < v.passed.size(); ++i) {
+        const auto& n = v.passed[i];
         const float reach = 1.5f * float(glm::length(algo::centroid(n.visible_part) - v.camera.eye));
-        for (const auto& q : n.section) out.bold.line(eye, eye + glm::normalize(glm::vec3(q) - eye) * reach, palette::inside);
+        for (const auto& q : n.section) out.bold.line(eye, eye + glm::normalize(glm::vec3(q) - eye) * reach, palette::plane_edge);
+        if (!wider_than_exact(n, v.camera)) continue;
+        const std::vector<algo::Vec3> exact = exact_section(n, v.camera);
+        for (const auto& q : exact) out.faint.line(eye, eye + glm::normalize(glm::vec3(q) - eye) * reach, palette::inside);
+        outline(out.bold, n.visible_part, palette::inside);
+        if (i + 1 == v.passed.size() && !n.section.empty() && !exact.empty()) {  // named once, at the far end of a ray
+            labels.push_back({eye + glm::normalize(glm::vec3(n.section[0]) - eye) * reach, tr("portals.label_box_frustum"), palette::plane_edge});
+            labels.push_back({eye + glm::normalize(glm::vec3(exact[0]) - eye) * reach, tr("portals.label_exact_frustum"), palette::inside});
+        }
     }
+    // the polygons the narration and the questions name, by their ids
+    for (std::uint32_t k : named_polygons(v))
+        labels.push_back({glm::vec3(algo::centroid(m.polygons[k].vertices)), tr("portals.label_polygon", {{"id", std::to_string(m.polygons[k].id)}}),
+                          palette::working});
     if (v.cell >= 0) {
         const auto& c = m.cells[std::size_t(v.cell)];
         algo::Vec2 mean(0);

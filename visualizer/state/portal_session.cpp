@@ -100,7 +100,7 @@ void reduce(PortalView& v, const PortalEvent& event) {
                        v.path.resize(e.depth), v.passed.resize(std::min<std::size_t>(v.passed.size(), e.depth));
                        v.path.push_back(e.cell);
                        v.cell = std::int32_t(e.cell), v.frustum = e.frustum, v.visited[e.cell] = 1, ++v.visits;
-                       v.portal = -1;
+                       v.portal = -1, v.polygon = -1;
                    },
                    [&](const PortalTested& e) {
                        v.portal = std::int32_t(e.portal), v.verdict = e.verdict;
@@ -117,18 +117,49 @@ void reduce(PortalView& v, const PortalEvent& event) {
                        v.passed.push_back({e.portal, e.visible_part, frustum_section(e.narrowed, v.camera, 1.0)});
                    },
                    [&](const CellPolygonCulled& e) {
+                       v.polygon = std::int32_t(e.polygon);
                        if (v.fate[e.polygon] == PolygonFate::drawn) return;  // drawn through another portal already
                        v.fate[e.polygon] = e.reason == CullReason::back_face ? PolygonFate::back_face : PolygonFate::frustum;
                        ++(e.reason == CullReason::back_face ? v.culled_back_face : v.culled_frustum);
                    },
                    [&](const CellPolygonDrawn& e) {
+                       v.polygon = std::int32_t(e.polygon);
                        if (v.fate[e.polygon] != PolygonFate::drawn) ++v.drawn;
                        v.fate[e.polygon] = PolygonFate::drawn;
                    },
                    [&](const PortalBoundReached&) { v.bounded = true; },
-                   [&](const PortalRenderFinished&) { v.done = true, v.cell = -1, v.portal = -1; },
+                   [&](const PortalRenderFinished&) { v.done = true, v.cell = -1, v.portal = -1, v.polygon = -1; },
                },
                event);
+}
+
+std::vector<std::uint32_t> named_polygons(const PortalView& v) {
+    std::vector<std::uint32_t> out;
+    if (v.cell < 0) return out;
+    if (v.polygon >= 0) out.push_back(std::uint32_t(v.polygon));
+    for (std::uint32_t p : v.world->model.cells[std::size_t(v.cell)].polygons)
+        if (v.fate[p] == PolygonFate::untouched) {  // the cell tests its polygons in this order
+            out.push_back(p);
+            break;
+        }
+    return out;
+}
+
+std::vector<Vec3> exact_section(const PortalView::Narrowing& n, const Camera& camera) {
+    const Vec3 ahead = glm::normalize(camera.target - camera.eye);
+    std::vector<Vec3> out;
+    for (const Vec3& q : n.visible_part)
+        if (const double d = glm::dot(q - camera.eye, ahead); d > 1e-12) out.push_back(camera.eye + (q - camera.eye) / d);
+    return out;
+}
+
+bool wider_than_exact(const PortalView::Narrowing& n, const Camera& camera) {
+    // each corner of the section 1 unit ahead, against the visible part's corners seen from the eye at that distance
+    const std::vector<Vec3> exact = exact_section(n, camera);
+    if (exact.size() != n.section.size()) return true;
+    for (const Vec3& q : n.section)
+        if (std::none_of(exact.begin(), exact.end(), [&](const Vec3& r) { return glm::length(q - r) < 1e-6; })) return true;
+    return false;
 }
 
 std::size_t approx_bytes(const PortalView& v) {

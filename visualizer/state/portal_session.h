@@ -55,12 +55,21 @@ struct PortalView {
     std::vector<Narrowing> passed;             // on the way to the cell being visited (a stack)
     std::vector<std::uint32_t> path;           // the cells on the way (a stack)
     std::int32_t portal = -1;                  // last tested
+    std::int32_t polygon = -1;                 // last drawn or culled in the cell being visited
     algo::PortalVerdict verdict = algo::PortalVerdict::passed;
     std::uint32_t drawn = 0, culled_back_face = 0, culled_frustum = 0, visits = 0, portals_passed = 0;
     bool done = false, bounded = false;
 };
 void reduce(PortalView& view, const algo::PortalEvent& event);
 std::size_t approx_bytes(const PortalView& view);
+// The polygons the views label with their ids ("polygon 915"): the one last drawn or culled in the cell being
+// visited and the next one it will test, as a lesson's narration and questions name them.
+std::vector<std::uint32_t> named_polygons(const PortalView& view);
+// Does the frustum narrowed through this opening take in more than the opening's visible part (a bounding box on
+// the screen), so that the views draw both?
+bool wider_than_exact(const PortalView::Narrowing& n, const algo::Camera& camera);
+// The exact narrowed frustum's cross-section 1 unit ahead of the eye: the visible part seen from the eye.
+std::vector<algo::Vec3> exact_section(const PortalView::Narrowing& n, const algo::Camera& camera);
 
 class PvsSession : public PlayerSession<algo::PvsEvent, algo::Pvs, PvsView> {
 public:
