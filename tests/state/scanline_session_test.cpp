@@ -69,3 +69,13 @@ TEST_CASE("a depth-sort lesson's painting so far grows with the polygons drawn",
     fewer.drawn.pop_back();
     CHECK(painted_so_far(fewer, size).ids != all.ids);
 }
+
+TEST_CASE("the edge table's rows show once the machine has built it, not before (its size is lesson 31's first answer)", "[state][scanline]") {
+    ScanLineSession s(load_lesson(HSR_SOURCE_DIR "/lessons/31_scan_line_classic.toml"));
+    s.seek(0);
+    CHECK_FALSE(s.view().table_built);
+    s.micro_step();
+    CHECK(s.view().table_built);  // the first event builds it
+    s.seek(0);
+    CHECK_FALSE(s.view().table_built);  // and stepping back takes it away
+}

@@ -2,12 +2,14 @@
 #include "panels/scanline_panels.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -83,13 +85,16 @@ void classic_tables(const ScanLineSession& s, UiActions& out) {
             ImGui::TableNextColumn();
             ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(rgb(poly.color)), "#%zu", p);
             ImGui::TableNextColumn();
-            ImGui::TextWrapped("z = %.4g %+.4g·x %+.4g·y", poly.plane.c0 + 0.0, poly.plane.per_x + 0.0, poly.plane.per_y + 0.0);  // + 0: no "−0"
+            char plane[160];  // + 0: no "−0"; wrapped at spaces only, never inside a number
+            std::snprintf(plane, sizeof plane, "z = %.4g %+.4g·x %+.4g·y", poly.plane.c0 + 0.0, poly.plane.per_x + 0.0, poly.plane.per_y + 0.0);
+            wrapped_text(plane);
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(v.in[p] ? in.c_str() : "");
         }
         ImGui::EndTable();
     }
     ImGui::TextUnformatted(tr("scanline.edge_table").c_str());
+    if (!v.table_built) return wrapped_text(tr("scanline.table_pending"), dim_text);  // else it answers "how many edges?"
     const std::string et[] = {tr("scanline.edge"), "x", "y_max", "Δx", tr("scanline.polygon"), tr("scanline.side")};
     if (ImGui::BeginTable("classic edges", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         const float widths[] = {std::max(width(et[0]), width("000")), width("-00.00"), std::max(width(et[2]), width("00")),
@@ -122,14 +127,12 @@ void classic_tables(const ScanLineSession& s, UiActions& out) {
 
 }  // namespace
 
-void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActions& out) {
+namespace {
+
+// The tables of the box they are in (the column's state box, or the box in the view).
+void tables(const ScanLineSession& s, UiActions& out) {
     const ScanView& v = s.view();
-    begin_column_box(l, Box::state, (tr(v.classic ? "scanline.tables" : "scanline.edge_table") + "###edge table").c_str());
-    if (v.classic) {
-        classic_tables(s, out);
-        end_column_box(l, Box::state);
-        return;
-    }
+    if (v.classic) return classic_tables(s, out);
     wrapped_text(tr("scanline.summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);
@@ -139,6 +142,7 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActi
     const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
     const float widths[] = {std::max(width(headers[0]), width("000")), std::max(width(headers[1]), width("#000")),
                             std::max(width(headers[2]), width("00–00")), std::max({width(headers[3]), width(left), width(right)})};
+    if (!v.table_built) return wrapped_text(tr("scanline.table_pending"), dim_text);  // else it answers "how many edges?"
     if (ImGui::BeginTable("edges", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         for (int c = 0; c < 4; ++c) ImGui::TableSetupColumn(headers[c].c_str(), ImGuiTableColumnFlags_WidthFixed, widths[c]);
         ImGui::TableSetupColumn(headers[4].c_str());
@@ -161,7 +165,22 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActi
         }
         ImGui::EndTable();
     }
+}
+
+std::string tables_title(const ScanView& v) { return tr(v.classic ? "scanline.tables" : "scanline.edge_table") + "###edge table"; }
+
+}  // namespace
+
+void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActions& out) {
+    begin_column_box(l, Box::state, tables_title(s.view()).c_str());
+    tables(s, out);
     end_column_box(l, Box::state);
+}
+
+void scanline_tables_box(const ScanLineSession& s, float view_w, float view_h, UiActions& out) {
+    begin_view_side_box(tables_title(s.view()), view_w, view_h, 0, scanline_tables_share);
+    tables(s, out);
+    end_view_side_box();
 }
 
 }  // namespace hsr::viz

@@ -13,5 +13,9 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
 // The hybrid's edge table with the in/out flags; the classic's edge table in the notes' fields (x, y_max, Δx) and its
 // polygon table (plane equation, in/out), with the switch for the extra intersections where polygons pierce.
 void scanline_state_panel(const ScanLineSession& s, const PanelLayout& layout, UiActions& out);
+// The same tables in the view's right part (panels/view_side_box.h), the image left of them, where they show whole at
+// every step (in the column they had a row and a half at 1280×800).
+inline constexpr float scanline_tables_share = 0.48f;
+void scanline_tables_box(const ScanLineSession& s, float view_w, float view_h, UiActions& out);
 
 }  // namespace hsr::viz

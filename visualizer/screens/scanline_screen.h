@@ -19,8 +19,13 @@ public:
                                           {"format", window_strings().name(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
-        scanline_canvas(s, 0, 0, f.view_w, f.view_h);
-        scanline_state_panel(s, f.layout, f.actions);
+        if (side_box_fits(f.view_w, scanline_tables_share)) {  // the tables beside the image, in the view
+            scanline_canvas(s, 0, 0, f.view_w * (1 - scanline_tables_share), f.view_h);
+            scanline_tables_box(s, f.view_w, f.view_h, f.actions);
+        } else {
+            scanline_canvas(s, 0, 0, f.view_w, f.view_h);
+            scanline_state_panel(s, f.layout, f.actions);
+        }
     }
     bool apply(ScanLineSession& s, const UiActions& a) {
         if (!a.find_piercings) return false;

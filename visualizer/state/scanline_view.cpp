@@ -21,7 +21,7 @@ ScanView initial_view(std::shared_ptr<const std::vector<ScreenPolygon>> polygons
 
 void reduce(ScanView& v, const ScanLineEvent& event) {
     std::visit(overloaded{
-                   [&](const EdgeTableBuilt&) {},
+                   [&](const EdgeTableBuilt&) { v.table_built = true; },
                    [&](const ScanLineStarted& e) {
                        v.line = e.y;
                        v.crossings.clear();

@@ -39,6 +39,7 @@ struct ScanView {
     std::vector<DepthMark> marks;        // classic: this line's depth comparisons and piercings
     std::uint64_t compared = 0, piercings = 0;  // classic: so far
     std::uint64_t spans = 0;
+    bool table_built = false;            // the edge table has been built (its rows are shown from then on)
     bool done = false, bounded = false;
 };
 
