@@ -270,3 +270,21 @@ TEST_CASE("the culling view draws the node under test, its way down and its next
         }
     }
 }
+
+TEST_CASE("an occluder lesson labels the primitive its question asks about before it is tested", "[state][culling]") {
+    // Lesson 24 asked about "#7" that the picture did not label.
+    const Lesson lesson = load_lesson(HSR_SOURCE_DIR "/lessons/24_culling_occluders.toml");
+    OccluderSession s(lesson);
+    const CullingView& v = s.view();
+    bool named_before = false;
+    while (!s.at_end()) {
+        CHECK(named_primitives(v).size() <= 2);  // the last tested and the next
+        if (v.primitives[7] == PrimitiveMark::untouched) {
+            const auto n = named_primitives(v);
+            named_before = named_before || std::find(n.begin(), n.end(), 7u) != n.end();
+        }
+        s.micro_step();
+    }
+    CHECK(named_before);
+    CHECK(named_primitives(v).empty());
+}

@@ -92,6 +92,12 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
                 const glm::vec3 at = h.kind == algo::HierarchyKind::octree ? glm::vec3(box.centre().x, box.hi.y, box.centre().z) : glm::vec3(box.centre());
                 labels.push_back({at, tr(b.node == 0 ? "culling.label_root" : "culling.label_node", {{"n", std::to_string(b.node)}}), c});
             }
+    // the primitives the narration and the questions name, by their numbers
+    for (std::uint32_t p : named_primitives(v)) {
+        glm::dvec4 sum(0);  // the mean of its corners (homogeneous, w = 1)
+        for (const auto& q : scene.polygons[p].vertices) sum += q;
+        labels.push_back({glm::vec3(sum / double(scene.polygons[p].vertices.size())), "#" + std::to_string(p), palette::working});
+    }
     // occluders and the rays of their occlusion frusta
     // (a proxy is the polygon square to the view that stands for a polygon or a solid; a solid's is drawn with its
     // silhouette rays, which bound what it hides)

@@ -148,17 +148,18 @@ void reduce(CullingView& v, const OcclusionEvent& event) {
                    [&](const OcclusionTested& e) {
                        const std::uint32_t left_out_before = v.left_out;
                        if (e.node >= 0) {
-                           v.current = e.node;
+                           v.current = e.node, v.primitive = -1;
                            if (e.outcome == OcclusionOutcome::occluded) mark_subtree(v, std::uint32_t(e.node), NodeMark::occluded, PrimitiveMark::left_out);
                            else v.nodes[std::size_t(e.node)] = e.outcome == OcclusionOutcome::partly ? NodeMark::partial : NodeMark::visible;
                        } else {
+                           v.primitive = e.primitive;
                            v.primitives[std::size_t(e.primitive)] = e.outcome == OcclusionOutcome::occluded ? PrimitiveMark::left_out : PrimitiveMark::kept;
                        }
                        count(v);
                        if (e.fused) v.fused += v.left_out - left_out_before;  // what fusion culled, no single occluder
                    },
                    [&](const OcclusionFinished&) {
-                       v.done = true, v.current = -1;
+                       v.done = true, v.current = -1, v.primitive = -1;
                        for (auto& p : v.primitives)
                            if (p == PrimitiveMark::untouched) p = PrimitiveMark::kept;
                        count(v);
@@ -241,6 +242,19 @@ std::vector<ShownBox> shown_boxes(const CullingView& v) {
         for (std::uint32_t c : h.nodes[current].children)
             if (!touched(c) && holds_a_candidate(c)) out.push_back({c, NodeMark::untouched, ShownBox::Weight::next, named++ < 2});
     out.push_back({current, v.nodes[current], ShownBox::Weight::current, true});
+    return out;
+}
+
+std::vector<std::uint32_t> named_primitives(const CullingView& v) {
+    std::vector<std::uint32_t> out;
+    if (v.done || v.current < 0 || v.world->machine != CullingMachine::occluders) return out;
+    if (v.primitive >= 0) out.push_back(std::uint32_t(v.primitive));
+    if (v.nodes[std::size_t(v.current)] != NodeMark::partial) return out;  // only a node partly inside tests its own
+    for (std::uint32_t p : v.world->hierarchy.nodes[std::size_t(v.current)].primitives)
+        if (v.primitives[p] == PrimitiveMark::untouched) {
+            out.push_back(p);
+            break;
+        }
     return out;
 }
 

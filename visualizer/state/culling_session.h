@@ -46,6 +46,7 @@ struct CullingView {
     std::vector<ShownOccluder> occluders;       // chosen, best first
     std::vector<std::uint32_t> rendered;        // Hi-Z: primitives rendered, in order (the pyramid is rebuilt from them)
     std::int32_t current = -1;                  // the node last touched
+    std::int32_t primitive = -1;                // occluders: the primitive last tested on its own
     std::uint32_t kept = 0, left_out = 0, earlier = 0, texels = 0;
     std::uint32_t plane_tests = 0;              // every plane test so far: nodes' boxes and their own primitives' boxes
     std::uint32_t built = 0, leaves = 0;        // the bounds lesson: nodes built so far, and how many of them are leaves
@@ -71,6 +72,9 @@ struct ShownBox {
     bool labelled;
 };
 std::vector<ShownBox> shown_boxes(const CullingView& view);
+// The primitives the view labels with their numbers ("#7", as the sentences number them): an occluder lesson's
+// primitive last tested on its own and the next one its node tests.
+std::vector<std::uint32_t> named_primitives(const CullingView& view);
 
 // Hi-Z: the depth buffer of the primitives rendered so far (the Z-pyramid is built from it).
 std::vector<std::uint32_t> rendered_depth(const CullingView& view);
