@@ -10,6 +10,7 @@
 #include "core/events.h"
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -152,24 +153,11 @@ void forms_canvas(const FormsSession& s, float x, float y, float w, float h) {
     ImGui::End();
 }
 
-void forms_state_panel(const FormsSession& s, const PanelLayout& l) {
-    begin_column_box(l, Box::state, (tr("forms.title") + "###state").c_str());
-    const FormsView& v = s.view();
+namespace {
+
+// Every segment: its image on the image line and how much of it is visible; with the legend and R's hint.
+void segments_table(const FormsView& v) {
     const FormsInput& in = *v.input;
-    const std::uint64_t P = std::uint64_t(std::count_if(in.images.begin(), in.images.end(), [](const auto& i) { return i.has_value(); }));
-    if (v.finished) wrapped_text(tr("forms.phase_done"));
-    else if (v.image_space && v.pixel) wrapped_text(tr("forms.phase_image", {{"pixel", n(*v.pixel)}}));
-    else if (v.primitive) wrapped_text(tr("forms.phase_object", {{"id", n(std::uint64_t(in.ids[*v.primitive]))}}));
-    if (v.finished)  // the totals against the formulas once both forms are done (a lesson asks for them before)
-        wrapped_text(tr("forms.counts", {{"comparisons", n(v.comparisons)}, {"tests", n(v.tests)}, {"P", n(P)}, {"p", n(in.pixels)}}));
-    else
-        wrapped_text(tr("forms.counts_so_far", {{"comparisons", n(v.comparisons)}, {"tests", n(v.tests)}}));
-    const float need = column_box_height_so_far();  // the phase and the counts; the table may scroll
-    if (v.primitive && !v.hidden.empty()) {
-        std::string parts;
-        for (const glm::dvec2 h : v.hidden) parts += (parts.empty() ? "[" : ", [") + f(h.x) + ", " + f(h.y) + ")";
-        wrapped_text(tr("forms.hidden_so_far", {{"parts", parts}}));
-    }
     if (ImGui::BeginTable("segments", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
         const std::string segment = tr("forms.segment"), image = tr("forms.image"), visible = tr("forms.visible");
         ImGui::TableSetupColumn(segment.c_str(), ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize(segment.c_str()).x);
@@ -195,7 +183,36 @@ void forms_state_panel(const FormsSession& s, const PanelLayout& l) {
     }
     wrapped_text(tr("forms.legend"), dim_text);
     wrapped_text(tr("forms.report_hint"), dim_text);
+}
+
+}  // namespace
+
+void forms_state_panel(const FormsSession& s, bool table_in_view, const PanelLayout& l) {
+    begin_column_box(l, Box::state, (tr("forms.title") + "###state").c_str());
+    const FormsView& v = s.view();
+    const FormsInput& in = *v.input;
+    const std::uint64_t P = std::uint64_t(std::count_if(in.images.begin(), in.images.end(), [](const auto& i) { return i.has_value(); }));
+    if (v.finished) wrapped_text(tr("forms.phase_done"));
+    else if (v.image_space && v.pixel) wrapped_text(tr("forms.phase_image", {{"pixel", n(*v.pixel)}}));
+    else if (v.primitive) wrapped_text(tr("forms.phase_object", {{"id", n(std::uint64_t(in.ids[*v.primitive]))}}));
+    if (v.finished)  // the totals against the formulas once both forms are done (a lesson asks for them before)
+        wrapped_text(tr("forms.counts", {{"comparisons", n(v.comparisons)}, {"tests", n(v.tests)}, {"P", n(P)}, {"p", n(in.pixels)}}));
+    else
+        wrapped_text(tr("forms.counts_so_far", {{"comparisons", n(v.comparisons)}, {"tests", n(v.tests)}}));
+    const float need = column_box_height_so_far();  // the phase and the counts; the table may scroll
+    if (v.primitive && !v.hidden.empty()) {
+        std::string parts;
+        for (const glm::dvec2 h : v.hidden) parts += (parts.empty() ? "[" : ", [") + f(h.x) + ", " + f(h.y) + ")";
+        wrapped_text(tr("forms.hidden_so_far", {{"parts", parts}}));
+    }
+    if (!table_in_view) segments_table(v);
     end_column_box(l, Box::state, need);
+}
+
+void forms_table_box(const FormsSession& s, float view_w, float view_h) {
+    begin_view_side_box(tr("forms.title") + "###segments in the view", view_w, view_h, 0, forms_table_share);
+    segments_table(s.view());
+    end_view_side_box();
 }
 
 }  // namespace hsr::viz

@@ -9,6 +9,10 @@
 namespace hsr::viz {
 
 void forms_canvas(const FormsSession& s, float x, float y, float w, float h);
-void forms_state_panel(const FormsSession& s, const PanelLayout& layout);
+// The phase and the counts, and the segments' table unless it is in the view (`table_in_view`: forms_table_box).
+void forms_state_panel(const FormsSession& s, bool table_in_view, const PanelLayout& layout);
+// The segments' table (each one's image and visible share) in the view's right part (panels/view_side_box.h).
+inline constexpr float forms_table_share = 0.34f;
+void forms_table_box(const FormsSession& s, float view_w, float view_h);
 
 }  // namespace hsr::viz

@@ -14,9 +14,9 @@ namespace hsr::viz {
 
 inline constexpr float side_box_share = 0.36f;  // of the view's width, unless a box asks for another share
 
-// Whether such a box is wide enough for its content at this type size (16 lines' height across); a view too narrow
+// Whether such a box is wide enough for its content at this type size (14 lines' height across); a view too narrow
 // (large type on a small window) keeps the content in the column's state box instead.
-inline bool side_box_fits(float view_w, float share = side_box_share) { return view_w * share >= 16 * ImGui::GetFontSize(); }
+inline bool side_box_fits(float view_w, float share = side_box_share) { return view_w * share >= 14 * ImGui::GetFontSize(); }
 
 // Begins the box (end it with end_view_side_box), `below` points above the view's foot kept free.
 inline void begin_view_side_box(const std::string& title, float view_w, float view_h, float below = 0, float share = side_box_share) {

@@ -17,8 +17,10 @@ public:
         f.detail = tr("forms.caption", {{"pixels", std::to_string(s.view().input->pixels)}});
     }
     void draw_panels(const FormsSession& s, PanelFrame& f) const {
-        forms_canvas(s, 0, 0, f.view_w, f.view_h);
-        forms_state_panel(s, f.layout);
+        const bool table_in_view = side_box_fits(f.view_w, forms_table_share);
+        forms_canvas(s, 0, 0, table_in_view ? f.view_w * (1 - forms_table_share) : f.view_w, f.view_h);
+        if (table_in_view) forms_table_box(s, f.view_w, f.view_h);
+        forms_state_panel(s, table_in_view, f.layout);
     }
     bool two_d(const FormsSession&) const { return true; }
 };
