@@ -4,7 +4,7 @@
 // within a cell is below a certain limit"), built step by step, and culled top-down:
 //
 //   Cull(node, planes):                      planes: those node's parent was not wholly inside (the clip flags)
-//     for each plane in planes:              the lecture's IntersectionTest
+//     for each plane in planes:              the box against the plane (its nearest and farthest corners)
 //       if node's box is wholly outside it:  reject node and its subtree
 //       if wholly inside it:                 drop the plane for the subtree
 //     if no plane is left:                   accept node and its subtree without further tests

@@ -57,10 +57,8 @@ void faces_table(const BackfaceView& v) {
             std::string says = tr(kept ? "backface.kept" : "backface.culled");  // the column's title says what is judged
             if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
             if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
-            // wrapped in its cell: "front-facing: kept · hidden anyway" is wider than the column in a narrow box
-            ImGui::PushStyleColor(ImGuiCol_Text, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
-            ImGui::TextWrapped("%s", says.c_str());
-            ImGui::PopStyleColor();
+            // wrapped in its cell at spaces only ("behalten · trotzdem verdeckt" is wider than the column)
+            wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
         }
         ImGui::EndTable();
     }

@@ -170,7 +170,7 @@ void segments_table(const FormsView& v) {
             ImGui::TableNextColumn();
             ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(rgb(in.colors[i])), "%d", in.ids[i]);
             ImGui::TableNextColumn();
-            if (in.images[i]) ImGui::TextWrapped("[%.3g, %.3g)", in.images[i]->from + 0.0, in.images[i]->to + 0.0);
+            if (in.images[i]) wrapped_text("[" + f(in.images[i]->from) + ", " + f(in.images[i]->to) + ")");  // at spaces only
             else ImGui::TextUnformatted(tr("forms.not_in_view").c_str());
             ImGui::TableNextColumn();
             if (v.visible[i] && in.images[i]) {

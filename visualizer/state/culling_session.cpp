@@ -271,7 +271,7 @@ const Pseudocode<HierarchyEvent> bounds_lines = {
 };
 const Pseudocode<HierarchyCullEvent> frustum_lines = {
     {"Cull(node, planes):            planes: those the parent was not inside", {}},
-    {"  for each plane: IntersectionTest(node.box, plane)", {}},
+    {"  for each plane: test node.box against the plane", {}},
     {"    wholly outside: reject node and its subtree", {step<NodeCulled>([](const NodeCulled& e) { return e.outcome == NodeOutcome::outside; })}},
     {"    wholly inside: drop the plane for the subtree", {}},
     {"  no plane left: accept node and its subtree", {step<NodeCulled>([](const NodeCulled& e) { return e.outcome == NodeOutcome::inside; })}},
