@@ -233,9 +233,11 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
         // on a dark backing of its own, never on the colour of the face under it ("3f" orange on an orange face)
         const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
         const float pad = canvas_px(2);
-        d->AddRectFilled(ImVec2(at[k].left - pad, at[k].top - pad / 2), ImVec2(at[k].left + size.x + pad, at[k].top + size.y + pad / 2),
+        // kept inside the view: a label at its right edge would run under the panel column ("p2 000010" cut)
+        const float left = std::clamp(at[k].left, x + pad, std::max(x + pad, x + w - size.x - pad));
+        d->AddRectFilled(ImVec2(left - pad, at[k].top - pad / 2), ImVec2(left + size.x + pad, at[k].top + size.y + pad / 2),
                          IM_COL32(14, 15, 18, 215), pad);
-        d->AddText(ImVec2(at[k].left, at[k].top), color, label.text.c_str());
+        d->AddText(ImVec2(left, at[k].top), color, label.text.c_str());
     }
 }
 
