@@ -136,10 +136,15 @@ void culling_legend(const CullingView& v) {
     add_if(NodeMark::too_small, culling_colours::too_small);
     add_if(NodeMark::occluded, culling_colours::occluded);
     add_if(NodeMark::visible, culling_colours::visible);
-    add_if(NodeMark::built, culling_colours::built);
-    // the children still to test are drawn white too; the bounds lesson's built nodes have that word already
-    if (!std::any_of(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.mark == NodeMark::built; }))
-        add_if(NodeMark::untouched, culling_colours::built);
+    if (v.world->machine == algo::CullingMachine::bounds) {  // a build's white boxes: built, or split off and still to build
+        const StateColour built{"culling.mark_built_node", culling_colours::built.r, culling_colours::built.g, culling_colours::built.b};
+        add_if(NodeMark::built, built);
+        if (std::any_of(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.mark == NodeMark::untouched; }) &&
+            std::none_of(boxes.begin(), boxes.end(), [](const ShownBox& b) { return b.mark == NodeMark::built; }))
+            shown.push_back({"culling.mark_to_build", built.r, built.g, built.b});
+    } else {
+        add_if(NodeMark::untouched, culling_colours::built);  // the children still to test
+    }
     state_legend(shown);
 }
 
