@@ -121,11 +121,8 @@ Obb box_on_face(Vec3 normal, std::span<const Vec3> distinct) {
 
 std::vector<Vec3> face_normals(std::span<const std::vector<Vec3>> polygons) {
     std::vector<Vec3> out;
-    for (const auto& poly : polygons) {
-        Vec3 n(0);  // Newell's normal: any polygon, any winding
-        for (std::size_t i = 0; i < poly.size(); ++i) n += glm::cross(poly[i], poly[(i + 1) % poly.size()]);
-        if (glm::length(n) > 0) out.push_back(glm::normalize(n));
-    }
+    for (const auto& poly : polygons)
+        if (Plane plane; poly.size() >= 3 && plane_of(poly, plane)) out.push_back(plane.n);  // Newell's, any winding
     return out;
 }
 

@@ -16,6 +16,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/plane.h"
 #include "scene/input_file.h"
 #include "analysis/painters.h"
 #include "cli/ids_png.h"
@@ -197,15 +198,12 @@ void progress_on_stderr(const algo::WorkProgress& p) {
 // colour (a teapot, a bunny) shows its form instead of its silhouette: full colour facing the eye, 35 % edge-on.
 void shade_by_facing_the_eye(algo::Scene& scene) {
     for (algo::ScenePolygon& p : scene.polygons) {
-        if (p.vertices.size() < 3) continue;
-        algo::Vec3 n(0), centre(0);  // Newell's normal
-        for (std::size_t i = 0; i < p.vertices.size(); ++i) {
-            const algo::Vec3 a(p.vertices[i]), b(p.vertices[(i + 1) % p.vertices.size()]);  // world: w = 1
-            n += glm::cross(a, b);
-            centre += a / double(p.vertices.size());
-        }
-        const algo::Vec3 to_eye = scene.camera.projection == algo::Projection::orthographic ? scene.camera.eye - scene.camera.target : scene.camera.eye - centre;
-        const double facing = std::abs(glm::dot(n, to_eye)) / (glm::length(n) * glm::length(to_eye));
+        const std::vector<algo::Vec3> corners(p.vertices.begin(), p.vertices.end());  // world: w = 1
+        algo::Plane plane;
+        if (corners.size() < 3 || !algo::plane_of(corners, plane)) continue;
+        const algo::Vec3 to_eye = scene.camera.projection == algo::Projection::orthographic ? scene.camera.eye - scene.camera.target
+                                                                                           : scene.camera.eye - algo::centroid(corners);
+        const double facing = std::abs(glm::dot(plane.n, to_eye)) / glm::length(to_eye);
         if (!std::isfinite(facing)) continue;  // no area, or the eye on it: as given
         const double shade = 0.35 + 0.65 * facing;
         p.color = {std::uint8_t(std::lround(p.color.r * shade)), std::uint8_t(std::lround(p.color.g * shade)), std::uint8_t(std::lround(p.color.b * shade))};

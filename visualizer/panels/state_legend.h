@@ -13,6 +13,12 @@
 
 namespace hsr::viz {
 
+// A square of the colour, outlined so that a dark one shows on the dark background.
+inline void swatch(ImDrawList* d, ImVec2 at, float side, const StateColour& c) {
+    d->AddRectFilled(at, ImVec2(at.x + side, at.y + side), ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)));
+    d->AddRect(at, ImVec2(at.x + side, at.y + side), IM_COL32(200, 203, 210, 255));
+}
+
 inline void state_legend(std::span<const StateColour> entries) {
     const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     const float side = ImGui::GetTextLineHeight() * 0.8f;
@@ -24,10 +30,7 @@ inline void state_legend(std::span<const StateColour> entries) {
             if (ImGui::GetCursorScreenPos().x + width > right_edge) ImGui::NewLine();
         }
         const ImVec2 at = ImGui::GetCursorScreenPos();
-        const float top = at.y + (ImGui::GetTextLineHeight() - side) / 2;
-        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, top), ImVec2(at.x + side, top + side),
-                                                  ImGui::GetColorU32(ImVec4(entries[i].r, entries[i].g, entries[i].b, 1)));
-        ImGui::GetWindowDrawList()->AddRect(ImVec2(at.x, top), ImVec2(at.x + side, top + side), IM_COL32(200, 203, 210, 255));
+        swatch(ImGui::GetWindowDrawList(), ImVec2(at.x, at.y + (ImGui::GetTextLineHeight() - side) / 2), side, entries[i]);
         ImGui::Dummy(ImVec2(side, ImGui::GetTextLineHeight()));
         ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
         ImGui::TextUnformatted(word.c_str());
@@ -41,9 +44,7 @@ inline void canvas_legend(ImDrawList* d, float x, float bottom, std::span<const 
     const float top = bottom - legend_height() + (legend_height() - line) / 2;
     for (const StateColour& e : entries) {
         const std::string word = tr(std::string(e.legend));
-        const float box_top = top + (line - side) / 2;
-        d->AddRectFilled(ImVec2(x, box_top), ImVec2(x + side, box_top + side), ImGui::GetColorU32(ImVec4(e.r, e.g, e.b, 1)));
-        d->AddRect(ImVec2(x, box_top), ImVec2(x + side, box_top + side), IM_COL32(200, 203, 210, 255));
+        swatch(d, ImVec2(x, top + (line - side) / 2), side, e);
         d->AddText(ImVec2(x + side + 6, top), IM_COL32(200, 203, 210, 255), word.c_str());
         x += side + 6 + ImGui::CalcTextSize(word.c_str()).x + 2 * line;
     }
