@@ -21,7 +21,8 @@ case "$case" in
       "$png_check" "$name.png" 1280 800
     done ;;
   layout)  # every lesson at 1280×800 and on a projector at 1920×1080: no panel of the column cut without a
-            # scrollbar, no word broken inside (the window prints each as "hsrviz: layout: …")
+            # scrollbar, no word broken inside (the window prints each as "hsrviz: layout: …"); and at 1280×800 the
+            # lesson's result (its state box) in full view at its end ("hsrviz: result scrolls: …")
     for lesson in "$src"/lessons/*.toml; do
       name=$(basename "$lesson" .toml)
       for mode in "--size 1280x800" "--projector --size 1920x1080" "--scale 1.6 --size 1280x800"; do
@@ -33,6 +34,7 @@ case "$case" in
           # shellcheck disable=SC2086
           "$hsrviz" "$lesson" $mode --keys "$keys" --screenshot l.png --frames 5 > out.txt
           if grep "layout:" out.txt; then echo "in $name with $mode after $keys"; exit 1; fi
+          if [ "$keys" = "$ends" ] && grep "result scrolls:" out.txt; then echo "in $name with $mode at its end"; exit 1; fi
         done
       done
     done

@@ -140,18 +140,31 @@ TEST_CASE("at the lesson's end what it built comes first: the state box in full,
     CHECK(end[0] == 160);
     CHECK(end[2] == 190);  // the whole matrix
     CHECK(end[3] >= 80);   // then the narration's last sentence
-    CHECK(end[1] >= 50);   // the pseudocode keeps a third of its need
+    CHECK(end[1] >= 0);    // the pseudocode gets what is left
     CHECK(sum(end) == Approx(700));
-    // a result taller than the column gets 70 % of what the question, the lesson and that third leave
+    // a result taller than the column gets what the question, the lesson and the narration's need leave
     const auto huge = ColumnFit::share(asks({160, 160}, {150, 300}, {2000, 2000}, {80, 200}, {200, 200}), 700, true);
-    CHECK(huge[2] == Approx(0.7f * (700 - 200 - 160 - 50)));
+    CHECK(huge[2] == Approx(700 - 200 - 160 - 80));
+    CHECK(huge[1] == 0);  // the pseudocode is not drawn (its panel draws no box in a slot without one row)
+    // but at least 70 % of it, when the narration's need is long
+    const auto talk = ColumnFit::share(asks({160, 160}, {150, 300}, {2000, 2000}, {200, 400}, {200, 200}), 700, true);
+    CHECK(talk[2] == Approx(0.7f * (700 - 200 - 160)));
     CHECK(huge[3] >= 80);
 }
 
-TEST_CASE("at the lesson's end the pseudocode keeps a third of its need: a box of no height is one ImGui sizes to its content", "[column]") {
+TEST_CASE("at the lesson's end the pseudocode gives way: its box keeps what it asked for while it is not drawn", "[column]") {
     // lesson 31's end at 1280x800: a long chapter text, tall tables, a narration of three lines
     const auto end = ColumnFit::share(asks({251, 251}, {132, 284}, {429, 429}, {121, 184}, {106, 106}), 704, true);
-    CHECK(end[1] >= 132.0f / 3);
-    CHECK(end[3] > 0);
+    CHECK(end[2] == Approx(0.7f * (704 - 106 - 251)));  // 70 % of what the question and the lesson leave
+    CHECK(end[3] == Approx(0.3f * (704 - 106 - 251)));  // the rest to the narration, none to the pseudocode
     CHECK(sum(end) == Approx(704));
+    // a box not drawn at the end (ColumnFit::keep) has its ask back when the class steps back into the lesson
+    ColumnFit fit;
+    fit.arrange(700, "a.toml");
+    for (Box b : {Box::lesson, Box::pseudocode, Box::state, Box::narration}) fit.asked(b, {100, 150});
+    fit.arrange(700, "a.toml", true);
+    fit.keep(Box::pseudocode);
+    for (Box b : {Box::lesson, Box::state, Box::narration}) fit.asked(b, {100, 150});
+    fit.arrange(700, "a.toml");
+    CHECK(fit.slot(Box::pseudocode).h >= 150);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <imgui.h>
 
@@ -95,6 +96,17 @@ void coverage_square(ImDrawList* d, ImVec2 p, float size, const algo::PorterDuff
     fill(p.x, yb, xa, p.y + size, a_only);
     fill(xa, p.y, p.x + size, yb, b_only);
     d->AddRect(p, ImVec2(p.x + size, p.y + size), IM_COL32(230, 230, 230, 160));
+}
+
+// An operator's F_A and F_B as Porter and Duff's table gives them (the step's line shows the current operator's).
+std::pair<std::string, std::string> factors_in_words(algo::PorterDuff op) {
+    static constexpr const char* factors[][2] = {{"0", "0"},         {"1", "0"},         {"0", "1"},
+                                                 {"1", "1 − α_A"},   {"α_B", "0"},       {"1 − α_B", "0"},
+                                                 {"α_B", "1 − α_A"}, {"1 − α_B", "1 − α_A"}, {"1", "1"}};
+    const auto ops = algo::porter_duff_operators();
+    for (std::size_t k = 0; k < ops.size() && k < std::size(factors); ++k)
+        if (ops[k] == op) return {factors[k][0], factors[k][1]};
+    return {"?", "?"};
 }
 
 }  // namespace
@@ -199,7 +211,8 @@ void composite_state_panel(const CompositeSession& s, const PanelLayout& l) {
                            wrapped_text("F · (M · B) = " + c(e.naive_right));
                        },
                        [&](const algo::PorterDuffApplied& e) {
-                           wrapped_text(algo::expression(e.op) + " = F_A·A + F_B·B", dim_text);
+                           const auto [fa, fb] = factors_in_words(e.op);
+                           wrapped_text(algo::expression(e.op) + " = F_A·A + F_B·B,  F_A = " + fa + ",  F_B = " + fb, dim_text);
                            wrapped_text("= " + f(e.fa) + "·" + c(e.a) + " + " + f(e.fb) + "·" + c(e.b));
                            wrapped_text("= " + c(e.result));
                        },
@@ -210,30 +223,6 @@ void composite_state_panel(const CompositeSession& s, const PanelLayout& l) {
                    *v.last);
     else
         wrapped_text(tr("composite.rule"), dim_text);
-    // The operators' table: F_A and F_B as the paper gives them
-    if (ImGui::BeginTable("porter duff", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn(tr("composite.operator").c_str());
-        ImGui::TableSetupColumn("F_A");
-        ImGui::TableSetupColumn("F_B");
-        ImGui::TableHeadersRow();
-        static constexpr const char* factors[][2] = {{"0", "0"},         {"1", "0"},         {"0", "1"},
-                                                     {"1", "1 − α_A"},   {"α_B", "0"},       {"1 − α_B", "0"},
-                                                     {"α_B", "1 − α_A"}, {"1 − α_B", "1 − α_A"}, {"1", "1"}};
-        const auto ops = algo::porter_duff_operators();
-        for (std::size_t k = 0; k < ops.size(); ++k) {
-            ImGui::TableNextRow();
-            const bool current = v.last && std::holds_alternative<algo::PorterDuffApplied>(*v.last) &&
-                                 std::get<algo::PorterDuffApplied>(*v.last).op == ops[k];
-            if (current) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(algo::expression(ops[k]).c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(factors[k][0]);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(factors[k][1]);
-        }
-        ImGui::EndTable();
-    }
     end_column_box(l, Box::state);
 }
 

@@ -42,7 +42,12 @@ std::string machine_name(algo::CullingMachine m) {
     return "?";
 }
 
+// One row per stage that ran; the stages the lesson's pipeline did not need are named on one line under the table
+// (a row of dashes for each kept the lesson's result below the column's fold).
 void pipeline_table(const CullingView& v) {
+    std::string not_needed;
+    for (const algo::StageReport& r : v.world->pipeline)
+        if (!r.ran) not_needed += (not_needed.empty() ? "" : ", ") + stage_name(r.stage);
     if (!ImGui::BeginTable("pipeline", 5, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_RowBg)) return;
     // each column as wide as its widest word or number (any language, any type size)
     const float pad = 2 * ImGui::GetStyle().CellPadding.x;
@@ -60,17 +65,11 @@ void pipeline_table(const CullingView& v) {
     ImGui::TableSetupColumn(ms.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({ms, "000.00"}));
     ImGui::TableSetupColumn("");
     ImGui::TableHeadersRow();
-    const std::string not_needed = tr("culling.not_needed");
     for (const algo::StageReport& r : v.world->pipeline) {
+        if (!r.ran) continue;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(stage_name(r.stage).c_str());
-        if (!r.ran) {  // a dash in each number's column, the reason where the bar would be
-            for (int k = 0; k < 3; ++k) ImGui::TableNextColumn(), ImGui::TextColored(dim_text, "–");
-            ImGui::TableNextColumn();
-            ImGui::TextColored(dim_text, "%s", not_needed.c_str());
-            continue;
-        }
         ImGui::TableNextColumn();
         ImGui::Text("%u", r.in);
         ImGui::TableNextColumn();
@@ -81,6 +80,7 @@ void pipeline_table(const CullingView& v) {
         ImGui::ProgressBar(r.in ? float(r.left_out) / float(r.in) : 0.0f, ImVec2(-1, 0), "");
     }
     ImGui::EndTable();
+    if (!not_needed.empty()) wrapped_text(tr("culling.not_needed_stages", {{"stages", not_needed}}), dim_text);
 }
 
 // Per object (polygons joined through shared vertices): the share of each bounding volume the object does not fill;
@@ -169,10 +169,15 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
         header += " · " + tr("culling.occluders_shape", {{"shape", shape}});
         if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
     }
-    wrapped_text(header + " · " + tr("culling.view_key"), dim_text);
+    wrapped_text(header, dim_text);
     culling_legend(v);
+    if (s.culling_machine() != algo::CullingMachine::bounds) {  // one table: no tab bar above it
+        pipeline_table(v);
+        end_column_box(l, Box::state);
+        return;
+    }
     if (ImGui::BeginTabBar("culling tabs")) {
-        if (s.culling_machine() == algo::CullingMachine::bounds && ImGui::BeginTabItem((tr("culling.void_tab") + "###void space").c_str())) {
+        if (ImGui::BeginTabItem((tr("culling.void_tab") + "###void space").c_str())) {
             void_table(v);
             ImGui::EndTabItem();
         }

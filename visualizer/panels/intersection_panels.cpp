@@ -32,16 +32,18 @@ void intersection_state_panel(const IntersectionSession& s, const PanelLayout& l
     const algo::BoundingModel& m = v.input->model;
     wrapped_text(tr("intersection.volume", {{"volume", volume_title(m.options)}, {"nodes", n(m.tree.nodes.size())},
                                             {"bottom", n(m.options.max_primitives)}}));
-    if (v.ray) {
+    if (v.ray && !v.calls.empty()) {  // the calls on the stack now (none once the ray is answered)
         std::string path;
         for (const std::uint32_t node : v.calls) path += (path.empty() ? "" : " → ") + n(node);
-        wrapped_text(tr("intersection.calls", {{"ray", n(*v.ray)}, {"path", path.empty() ? "—" : path}}));
+        wrapped_text(tr("intersection.calls", {{"ray", n(*v.ray)}, {"path", path}}));
     }
     wrapped_text(tr("intersection.counts", {{"volumes", n(v.volume_tests)}, {"primitives", n(v.primitive_tests)}, {"alarms", n(v.false_alarms)}}));
     const float need = column_box_height_so_far();
+    std::string answers;  // one line for the rays answered so far, a whole clause each
     for (std::size_t r = 0; r < v.answers.size(); ++r)
-        if (v.answers[r]) wrapped_text(tr(*v.answers[r] ? "intersection.ray_hit" : "intersection.ray_miss", {{"ray", n(r)}}));
-    wrapped_text(tr("intersection.legend"), dim_text);
+        if (v.answers[r]) answers += (answers.empty() ? "" : " · ") + tr(*v.answers[r] ? "intersection.ray_hit" : "intersection.ray_miss", {{"ray", n(r)}});
+    if (!answers.empty()) wrapped_text(answers);
+    else wrapped_text(tr("intersection.legend"), dim_text);  // the rule, until the chapters have shown it at work
     end_column_box(l, Box::state, need);
 }
 

@@ -44,6 +44,13 @@ void lesson_panel(const Session& s, const std::string& detail, const PanelLayout
 }
 
 void pseudocode_panel(const Session& s, const PanelLayout& l) {
+    // a slot too low for its title and one row (the lesson's end gives the room to its result): no box at all, rather
+    // than a title over nothing (and a box of no height is one ImGui would size to its content)
+    const float one_row = ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y + ImGui::GetTextLineHeightWithSpacing();
+    if (l.fit && l.slot(Box::pseudocode).h < one_row) {
+        l.fit->keep(Box::pseudocode);
+        return;
+    }
     begin_column_box(l, Box::pseudocode, tr("box.pseudocode").c_str(), fixed | ImGuiWindowFlags_NoScrollbar);
     if (ImFont* mono = monospace_font()) ImGui::PushFont(mono);
     // A line wider than the box wraps at a space onto rows indented under it, so nothing is cut on the right.

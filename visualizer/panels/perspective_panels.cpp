@@ -9,6 +9,7 @@
 
 #include "core/events.h"
 #include "panels/panel_style.h"
+#include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -57,9 +58,14 @@ void point_table(const PerspectiveView& v) {
     ImGui::EndTable();
 }
 
+void rule_and_legend(const PerspectiveView& v) {
+    wrapped_text(tr(v.input->maps.perspective ? "transform.rule" : "transform.rule_orthographic"), dim_text);
+    wrapped_text(tr("transform.legend"), dim_text);
+}
+
 }  // namespace
 
-void perspective_state_panel(const PerspectiveSession& s, const PanelLayout& l) {
+void perspective_state_panel(const PerspectiveSession& s, bool table_in_view, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("transform.title") + "###state").c_str());
     const PerspectiveView& v = s.view();
     const bool perspective = v.input->maps.perspective;
@@ -84,10 +90,18 @@ void perspective_state_panel(const PerspectiveSession& s, const PanelLayout& l) 
     const std::uint64_t kept = std::uint64_t(std::count_if(v.transformed.begin(), v.transformed.end(), [](const auto& t) { return t.has_value(); }));
     wrapped_text(tr("transform.counts", {{"pairs", n(v.comparisons)}, {"occluding", n(v.occluding.size())},
                                          {"before", n(perspective ? 4 * v.comparisons : 0)}, {"after", n(3 * kept)}}));
-    point_table(v);
-    wrapped_text(tr(perspective ? "transform.rule" : "transform.rule_orthographic"), dim_text);
-    wrapped_text(tr("transform.legend"), dim_text);
+    if (!table_in_view) {  // else both are in the view, the rule under the table
+        point_table(v);
+        rule_and_legend(v);
+    }
     end_column_box(l, Box::state);
+}
+
+void perspective_points_box(const PerspectiveSession& s, float view_w, float view_h) {
+    begin_view_foot_box(tr("transform.points_title") + "###points in the view", view_w, view_h, points_box_share);
+    point_table(s.view());
+    rule_and_legend(s.view());
+    end_view_side_box();
 }
 
 }  // namespace hsr::viz

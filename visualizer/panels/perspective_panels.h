@@ -8,6 +8,12 @@
 
 namespace hsr::viz {
 
-void perspective_state_panel(const PerspectiveSession& s, const PanelLayout& layout);
+// The state box; the points' table is in it unless `table_in_view` (then perspective_points_box draws it in the view).
+void perspective_state_panel(const PerspectiveSession& s, bool table_in_view, const PanelLayout& layout);
+
+// The points' table across the view's foot (eye space, w and the transformed x′, y′, z′), where a class reads it
+// whole; `points_box_share` of the view's height.
+inline constexpr float points_box_share = 0.36f;
+void perspective_points_box(const PerspectiveSession& s, float view_w, float view_h);
 
 }  // namespace hsr::viz

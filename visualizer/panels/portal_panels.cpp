@@ -295,7 +295,8 @@ void portal_plan_canvas(const PortalRenderSession& s, float x, float y, float w,
 // ── [SECTION] the state panels ──────────────────────────────────────────────────────────────────────────────
 namespace {
 
-void pvs_matrix(const algo::CellModel& m, const std::vector<std::uint8_t>& matrix, std::int32_t row) {
+// The PVS matrix with `row` highlighted; only that row when `only_row` (portal_render reads the eye cell's row alone).
+void pvs_matrix(const algo::CellModel& m, const std::vector<std::uint8_t>& matrix, std::int32_t row, bool only_row = false) {
     const std::size_t n = m.cells.size();
     if (n > 16) {
         std::size_t set = 0;
@@ -308,6 +309,7 @@ void pvs_matrix(const algo::CellModel& m, const std::vector<std::uint8_t>& matri
     for (const auto& c : m.cells) ImGui::TableSetupColumn(c.name.c_str());
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < n; ++i) {
+        if (only_row && std::int32_t(i) != row) continue;
         ImGui::TableNextRow();
         if (std::int32_t(i) == row) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(highlight_bg));
         ImGui::TableNextColumn();
@@ -365,8 +367,9 @@ void portal_state_panel(const PortalRenderSession& s, bool three_d, const PanelL
     wrapped_text(tr("portals.counts", {{"drawn", n(v.drawn)}, {"back_face", n(v.culled_back_face)}, {"frustum", n(v.culled_frustum)},
                                        {"visits", n(v.visits)}, {"portals", n(v.portals_passed)}}));
     if (ImGui::BeginTabBar("portal tabs")) {
-        if (ImGui::BeginTabItem((tr("portals.matrix_tab") + "###matrix").c_str())) {
-            pvs_matrix(m, v.world->pvs.matrix, v.eye_cell);
+        const std::string matrix_tab = v.eye_cell >= 0 ? tr("portals.row_tab", {{"cell", m.cells[std::size_t(v.eye_cell)].name}}) : tr("portals.matrix_tab");
+        if (ImGui::BeginTabItem((matrix_tab + "###matrix").c_str())) {
+            pvs_matrix(m, v.world->pvs.matrix, v.eye_cell, v.eye_cell >= 0);
             ImGui::EndTabItem();
         }
         if (ImGui::BeginTabItem((tr("portals.tree_tab") + "###tree").c_str())) {

@@ -25,6 +25,15 @@ inline void begin_view_side_box(const std::string& title, float view_w, float vi
     ImGui::Begin(title.c_str(), nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
 }
 
+// A box across the view's foot for a wide table (the points of the perspective transform), `share` of the view's
+// height; the screen frames its scene above it (frame_above_foot_box in screens/screen.h). End it with end_view_side_box.
+inline bool foot_box_fits(float view_w) { return view_w >= 28 * ImGui::GetFontSize(); }
+inline void begin_view_foot_box(const std::string& title, float view_w, float view_h, float share) {
+    const float h = view_h * share;
+    place(8, view_h - h, view_w - 16, h - 8);
+    ImGui::Begin(title.c_str(), nullptr, fixed | ImGuiWindowFlags_NoBringToFrontOnFocus);
+}
+
 inline void end_view_side_box() {
     audit_current_window();
     ImGui::End();

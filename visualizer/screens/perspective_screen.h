@@ -15,13 +15,17 @@ class Screen<PerspectiveSession> : public ScreenDefaults {
 public:
     void frame(const PerspectiveSession&, OrbitCamera& camera) {  // the unit cube the picture lives in, from the side
         camera.yaw = 0.9f, camera.pitch = 0.3f;
-        frame_bounds(camera, glm::vec3(0, 0, 0.3f), 1.9f);
+        frame_above_foot_box(camera, glm::vec3(0, 0, 0.3f), 1.9f, points_box_share);  // the points' table is below
     }
     void draw_scene(const PerspectiveSession& s, SceneFrame& f) const {
         draw_perspective_view(s.view(), s.lesson().scene, f.batches, f.labels);
         f.detail = tr("transform.caption");
     }
-    void draw_panels(const PerspectiveSession& s, PanelFrame& f) const { perspective_state_panel(s, f.layout); }
+    void draw_panels(const PerspectiveSession& s, PanelFrame& f) const {
+        const bool table_in_view = foot_box_fits(f.view_w);
+        if (table_in_view) perspective_points_box(s, f.view_w, f.view_h);
+        perspective_state_panel(s, table_in_view, f.layout);
+    }
 };
 
 }  // namespace hsr::viz

@@ -34,4 +34,11 @@ void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius,
     frame_bounds(camera, centre + right * (0.994f * 1.1f * share * radius), radius);
 }
 
+void frame_above_foot_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share) {
+    radius /= 1 - share;  // the scene keeps the height above the box
+    // the camera's up on the screen, in the world: moving the target down along it lifts the scene in the picture
+    const glm::vec3 up(-std::sin(camera.pitch) * std::sin(camera.yaw), std::cos(camera.pitch), -std::sin(camera.pitch) * std::cos(camera.yaw));
+    frame_bounds(camera, centre - up * (0.994f * share * radius), radius);
+}
+
 }  // namespace hsr::viz

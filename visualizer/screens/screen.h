@@ -115,5 +115,7 @@ void frame_bounds(OrbitCamera& camera, glm::vec3 centre, float radius);
 // the target moves to the camera's right and the scene is framed a little smaller (for a view about 1.1 times as
 // wide as it is tall).
 void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share = side_box_share);
+// The same, above a box across the view's foot taking `share` of its height (begin_view_foot_box).
+void frame_above_foot_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share);
 
 }  // namespace hsr::viz

@@ -38,20 +38,17 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
     h[lesson] = std::min(need[lesson], room / 2);
     room -= h[lesson];
     need[lesson] = 0;
-    // at the lesson's end, what it built (the state box: the tree, the matrix, the tables) in full, up to 70 % of
-    // what is left, then the narration's last sentence: the class reads the result, the pseudocode keeps what is left,
-    // at least a third of its need (its title and a row: a box of no height would be one ImGui sizes to its content)
+    // at the lesson's end, what it built (the state box: the tree, the matrix, the tables) in full, up to all that is
+    // left but the narration's last sentence (at least 70 % of it), then that sentence: the class reads the result;
+    // the pseudocode keeps what is left (none: the panel is not drawn, see ColumnFit::keep)
     const auto state = std::size_t(Box::state), narration = std::size_t(Box::narration);
     if (result_first) {
-        const float kept = std::min(need[std::size_t(Box::pseudocode)] / 3, room);
-        room -= kept;
-        h[state] = std::min(asks[state].full, room * 0.7f);
+        h[state] = std::min(asks[state].full, std::max(room * 0.7f, room - need[narration]));
         room -= h[state];
         need[state] = 0;
         h[narration] = std::min(need[narration], room);
         room -= h[narration];
         need[narration] = 0;
-        room += kept;
     }
     auto first = fair(need, room);
     first[lesson] = h[lesson];
@@ -93,6 +90,8 @@ void ColumnFit::arrange(float height, const std::string& lesson, bool result_fir
         y += h[i];
     }
 }
+
+void ColumnFit::keep(Box b) { drawn_[std::size_t(b)] = true; }
 
 void ColumnFit::asked(Box b, BoxAsk ask) {
     BoxAsk& a = asks_[std::size_t(b)];

@@ -40,11 +40,15 @@ public:
     bool moved() const { return moved_; }
     // What the box's content needed this frame (title bar and padding included).
     void asked(Box b, BoxAsk ask);
+    // A box left undrawn this frame because its slot holds not one row (the pseudocode at a lesson's end) keeps what
+    // it asked for before: it comes back as it was on the next step back.
+    void keep(Box b);
 
     // The arithmetic of arrange, for tests: the question first (up to 60 % of the column), the lesson's need (up to
     // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
     // remains equally); what is left over goes to the state box, else the narration. With `result_first`, the state
-    // box's full height (up to 70 % of what the question and the lesson leave) comes before the other boxes' needs.
+    // box's full height (up to what the question, the lesson and the narration's need leave, at least 70 % of it)
+    // and then the narration's need come before the pseudocode's comes before the other boxes' needs.
     static std::array<float, box_count> share(const std::array<BoxAsk, box_count>& asks, float height, bool result_first = false);
 
 private:
