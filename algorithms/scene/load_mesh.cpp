@@ -11,6 +11,7 @@
 #include "core/plane.h"
 #include "scene/input_file.h"
 #include "scene/load_scene.h"
+#include "scene/obj_faces.h"
 
 namespace hsr::algo {
 namespace {
@@ -52,6 +53,24 @@ std::string bad_vertex_line(const std::string& text) {
     return "";
 }
 
+// "" when tinyobjloader's faces are the file's face lines, each of the size counted there (tinyobjloader keeps a face's
+// size modulo 256, and all its indices); else why not.
+std::string faces_disagree(const tinyobj::ObjReader& obj, const std::vector<ObjFace>& faces) {
+    std::size_t face = 0;
+    for (const tinyobj::shape_t& shape : obj.GetShapes()) {
+        std::size_t indices = 0;
+        for (const unsigned char size : shape.mesh.num_face_vertices) {
+            if (face == faces.size() || faces[face].vertices % 256 != size)
+                return "face " + std::to_string(face + 1) + (face < faces.size() ? " (line " + std::to_string(faces[face].line) + ")" : "") +
+                       " is not read as its line has it (a face is 'f' and its vertices, separated by spaces)";
+            indices += faces[face++].vertices;
+        }
+        if (indices != shape.mesh.indices.size()) return "its faces do not hold the vertices their lines name";
+    }
+    if (face != faces.size()) return "line " + std::to_string(faces[face].line) + ": a face line that was not read as a face";
+    return "";
+}
+
 }  // namespace
 
 void read_meshes(const TomlReader& r, Scene& scene) {
@@ -90,18 +109,20 @@ void read_meshes(const TomlReader& r, Scene& scene) {
             color = {std::uint8_t(rgb >> 16), std::uint8_t(rgb >> 8), std::uint8_t(rgb)};
         }
         const auto& v = obj.GetAttrib().vertices;
+        const std::vector<ObjFace> faces = obj_faces(text);
+        if (const std::string why = faces_disagree(obj, faces); !why.empty())
+            r.fail(t->get("file"), join(f, "file"), "cannot read " + path.filename().string() + ": " + why);
         const std::size_t before = scene.polygons.size();
+        std::size_t face = 0;
         for (const tinyobj::shape_t& shape : obj.GetShapes()) {
             std::size_t at = 0;
-            for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+            for (std::size_t k = 0; k < shape.mesh.num_face_vertices.size(); ++k, ++face) {
                 ScenePolygon p{SceneId(id), color, {}};
                 p.line = int(t->source().begin.line);
                 if (id < 1 || id > 65535) r.fail(t->get("id"), join(f, "id"), "the mesh's faces need ids from 1 to 65535");
                 ++id;
-                const std::string face_name = path.filename().string() + ": face " + std::to_string(face + 1);
-                if (shape.mesh.num_face_vertices[face] < 3)
-                    r.fail(t->get("file"), join(f, "file"), face_name + " has fewer than 3 vertices");
-                for (std::size_t k = 0; k < shape.mesh.num_face_vertices[face]; ++k) {
+                const std::string face_name = path.filename().string() + ": line " + std::to_string(faces[face].line) + ": face " + std::to_string(face + 1);
+                for (std::size_t n = 0; n < faces[face].vertices; ++n) {
                     // tinyobjloader passes indices past the vertex list through: check each before reading
                     const int index = shape.mesh.indices[at++].vertex_index;
                     if (index < 0 || 3 * std::size_t(index) + 2 >= v.size())

@@ -13,8 +13,8 @@ namespace hsr::algo {
 // Appends the polygons of every [[meshes]] entry to the scene. A mesh's path is relative to the scene file, ends in
 // .obj and stays inside the scene's folder (a scene handed around cannot read ../../etc/passwd) unless
 // HSRVIZ_MESHES_ANYWHERE=1 is set. Every vertex coordinate must be a finite number and every face index must name
-// a vertex of the file.
-void read_meshes(const TomlReader& r, Scene& scene);
+// a vertex of the file. A face may have any number of vertices (tinyobjloader's own count stops at 255; see
+// scene/obj_faces.h); an error names the file's line.
 void read_meshes(const TomlReader& r, Scene& scene);
 
 }  // namespace hsr::algo
