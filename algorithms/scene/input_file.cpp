@@ -13,9 +13,11 @@
 namespace hsr::algo {
 namespace {
 
+// A file's size as a person reads it: "70 KB", "65 MB" (a settings file's 64 KB was "0 MB").
 std::string megabytes(std::size_t bytes) {
     char s[32];
-    std::snprintf(s, sizeof s, "%.0f MB", double(bytes) / double(1 << 20));
+    if (bytes < (std::size_t(1) << 20)) std::snprintf(s, sizeof s, "%zu KB", (bytes + 1023) >> 10);
+    else std::snprintf(s, sizeof s, "%.0f MB", double(bytes) / double(1 << 20));
     return s;
 }
 

@@ -4,26 +4,36 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <new>
+#include <stdexcept>
 
 #include "analysis/measurement.h"
 #include "cli/commands.h"
 #include "state/output_folder.h"
 #include "analysis/report_files.h"
+#include "scene/input_file.h"
 #include "state/lesson.h"
 
 namespace hsr::viz {
 namespace {
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream f(path, std::ios::binary);
-    f << text << std::flush;  // a full disk shows at the flush
-    if (!f) throw std::runtime_error("cannot write " + path.string());
+// "" when the scenes the report measures are there, else why not (HSRVIZ_DATA naming the wrong folder, say).
+std::string missing_data() {
+    std::error_code ec;
+    for (const char* folder : {"/assets/scenes", "/assets/scenes/extreme"})
+        if (!std::filesystem::is_directory(data_dir() + folder, ec))
+            return "cannot read the shipped scenes in " + algo::printable(data_dir() + folder) +
+                   ": no such folder (set HSRVIZ_DATA to the folder holding lessons/ and assets/)";
+    return "";
 }
 
-}  // namespace
-
-int run_report(const ReportOptions& o) {
-    if (!make_folder(o.out)) return 1;  // before minutes of measuring, not after
+int measure_and_write(const ReportOptions& o) {
+    // before minutes of measuring, not after
+    if (const std::string why = missing_data(); !why.empty()) throw std::runtime_error(why);
+    if (!make_folder(o.out)) return 1;
+    for (const char* file : {"report.md", "report.csv"})
+        if (const std::string why = why_not_writable((std::filesystem::path(o.out) / file).string()); !why.empty())
+            throw std::runtime_error(algo::printable(why) + "; nothing measured");
     const analysis::ReportOptions options{.quick = o.quick, .repeats = o.quick ? 3 : o.repeats, .scenes_dir = data_dir() + "/assets/scenes"};
     std::vector<analysis::Measurement> rows;
     for (auto* family : analysis::report_families()) {
@@ -34,6 +44,10 @@ int run_report(const ReportOptions& o) {
     }
     const auto extremes = analysis::run_extreme_cases(data_dir() + "/assets/scenes/extreme");
     const std::filesystem::path dir(o.out);
+    const auto write_file = [](const std::filesystem::path& path, const std::string& text) {
+        if (const std::string why = write_whole_file(path.string(), text); !why.empty())
+            throw std::runtime_error(algo::printable(why) + "; the measurements are not kept");
+    };
     // the version that measured, in every file a person opens (the CSV stays plain rows for spreadsheets)
     write_file(dir / "report.md", "# hsrviz: error against run time\n\nWritten by hsrviz " HSR_VERSION " (`hsrviz report" +
                                       std::string(o.quick ? " --quick" : "") + "`); every number comes from this run.\n\n" +
@@ -63,6 +77,20 @@ int run_report(const ReportOptions& o) {
     std::printf("wrote %s/report.md, report.csv and %zu charts (%zu rows, %d violations)\n", o.out.c_str(),
                 analysis::families_of(rows).size(), rows.size(), violations);
     return violations == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int run_report(const ReportOptions& o) {
+    try {
+        return measure_and_write(o);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "hsrviz report: out of memory\n");
+    } catch (const std::exception& e) {  // a folder not written, a shipped scene that does not load
+
+        std::fprintf(stderr, "hsrviz report: %s\n", algo::printable(e.what(), 2000).c_str());
+    }
+    return 1;
 }
 
 }  // namespace hsr::viz

@@ -3,9 +3,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 namespace hsr::viz {
@@ -16,6 +19,32 @@ bool make_folder(const std::string& dir) {
     if (!ec && std::filesystem::is_directory(dir, ec)) return true;
     std::fprintf(stderr, "hsrviz: cannot make the folder %s: %s\n", dir.c_str(), ec ? ec.message().c_str() : "a file of that name is in the way");
     return false;
+}
+
+std::string write_whole_file(const std::string& path, const std::string& text) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return "cannot write " + path + ": it is a folder";
+    errno = 0;
+    std::ofstream f(path, std::ios::binary | std::ios::trunc);
+    if (!f) return "cannot write " + path + (errno ? std::string(": ") + std::strerror(errno) : "");
+    f << text << std::flush;  // a full disk shows at the flush
+    if (f) return "";
+    const std::string why = errno ? std::string(": ") + std::strerror(errno) : "";
+    f.close();
+    if (fs::is_regular_file(path, ec)) fs::remove(path, ec);  // no half file
+    return "cannot write " + path + why;
+}
+
+std::string why_not_writable(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path p(path);
+    if (fs::is_directory(p, ec)) return path + " is a folder";
+    if (fs::exists(p, ec)) return access(p.c_str(), W_OK) == 0 ? "" : path + ": " + std::strerror(errno);
+    const fs::path folder = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    if (access(folder.c_str(), W_OK | X_OK) != 0) return "cannot make files in " + folder.string() + ": " + std::strerror(errno);
+    return "";
 }
 
 std::string output_folder(const std::string& name) {
