@@ -62,9 +62,9 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(floats.height == 800);
     CHECK(warning.find("expected a whole number") != std::string::npos);
 
-    std::ofstream(path) << "width = [1\n";
+    std::ofstream(path) << "# hsrviz remembers the window here between runs; delete the file to start afresh.\nwidth = [1\n";
     CHECK(read_window_settings(path, warning) == WindowSettings{});
-    CHECK(warning.find("window.toml:") != std::string::npos);
+    CHECK(warning.find("window.toml:2:") != std::string::npos);
     CHECK(warning.find("kept as") != std::string::npos);  // the broken file is kept aside, not replaced unseen
     CHECK(std::filesystem::exists(path + ".bak"));
     CHECK_FALSE(std::filesystem::exists(path));
@@ -90,6 +90,93 @@ TEST_CASE("window settings round trip, default when missing, and name a broken f
     CHECK(clamp_side(2000, 1280) == 960);
     CHECK(clamp_side(500, 500) == 320);
     std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+std::string text_of(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+}  // namespace
+
+TEST_CASE("the settings file's neighbours are never written through, moved over or replaced (issue 53, items 3, 5, 6)",
+          "[state][settings]") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("hsrviz_settings_neighbours_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string path = (dir / "window.toml").string();
+    const std::string ours = "# hsrviz remembers the window here between runs; delete the file to start afresh.\n";
+    const WindowSettings s{.width = 1600, .height = 900};
+    std::string warning;
+
+    SECTION("a FIFO or a link at the old temporary name is not touched, and no temporary file is left") {
+        REQUIRE(mkfifo((path + ".new").c_str(), 0600) == 0);  // open() of it for writing waited for a reader
+        std::ofstream(dir / "lesson.toml") << "title = \"Mine\"\n";
+        fs::create_symlink(dir / "lesson.toml", path + ".tmp");
+        REQUIRE(write_window_settings(path, s).empty());
+        CHECK(read_window_settings(path, warning) == s);
+        CHECK(fs::is_fifo(path + ".new"));
+        CHECK(text_of((dir / "lesson.toml").string()) == "title = \"Mine\"\n");
+        CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 4);
+    }
+    SECTION("a symbolic link at the path itself, dangling or not, is neither read through nor replaced") {
+        std::ofstream(dir / "lesson.toml") << "title = \"Mine\"\n";
+        fs::create_symlink(dir / "lesson.toml", path);
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.find("is a symbolic link; it is left alone") != std::string::npos);
+        CHECK_FALSE(write_window_settings(path, s).empty());
+        CHECK(fs::is_symlink(path));
+        CHECK(text_of((dir / "lesson.toml").string()) == "title = \"Mine\"\n");
+        fs::remove(path);
+        fs::create_symlink(dir / "gone.toml", path);
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.find("settings are not saved there") != std::string::npos);
+        CHECK_FALSE(write_window_settings(path, s).empty());
+        CHECK(fs::is_symlink(fs::symlink_status(path)));
+        CHECK_FALSE(fs::exists(dir / "gone.toml"));
+    }
+    SECTION("a file that does not parse and is not ours (notes, a half-saved lesson) is left alone, its .bak too") {
+        std::ofstream(path) << "these are my notes\n";
+        std::ofstream(path + ".bak") << "older notes\n";
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.find("window.toml:1:") != std::string::npos);
+        CHECK(warning.find("left alone") != std::string::npos);
+        CHECK_FALSE(write_window_settings(path, s).empty());
+        CHECK(text_of(path) == "these are my notes\n");
+        CHECK(text_of(path + ".bak") == "older notes\n");
+    }
+    SECTION("a broken settings file of ours is kept as .bak, but never over a .bak that exists") {
+        std::ofstream(path) << ours << "width = [1\n";
+        std::ofstream(path + ".bak") << "older\n";
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.find("exists already") != std::string::npos);
+        CHECK(text_of(path + ".bak") == "older\n");
+        CHECK(text_of(path) == ours + "width = [1\n");
+        CHECK_FALSE(write_window_settings(path, s).empty());
+        fs::remove(path + ".bak");
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.find("kept as") != std::string::npos);
+        CHECK(text_of(path + ".bak") == ours + "width = [1\n");
+        CHECK(write_window_settings(path, s).empty());
+    }
+    SECTION("an empty file is the defaults, and may be written") {
+        std::ofstream{path};
+        CHECK(read_window_settings(path, warning) == WindowSettings{});
+        CHECK(warning.empty());
+        CHECK(write_window_settings(path, s).empty());
+        CHECK(read_window_settings(path, warning) == s);
+    }
+    SECTION("every bad field is named, not only the last") {
+        std::string text;
+        for (const char* topic : {"a", "b", "c", "d", "e", "f"}) text += std::string("[practice.") + topic + "]\nanswered = 1\nright = 5\nbest_streak = 0\n";
+        std::ofstream(path) << text;
+        read_window_settings(path, warning);
+        for (const char* topic : {"a", "b", "c", "d", "e", "f"}) CHECK(warning.find(std::string("'practice.") + topic + "'") != std::string::npos);
+    }
+    fs::remove_all(dir);
 }
 
 TEST_CASE("the window's files go to the current directory, or under the data home when that is the home folder",

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -13,6 +13,7 @@
 
 #include "scene/input_file.h"
 #include "scene/toml_reader.h"
+#include "state/settings_file.h"
 
 namespace hsr::viz {
 
@@ -27,6 +28,7 @@ namespace {
 
 constexpr std::size_t settings_limit = 64 << 10;  // a settings file is a few lines
 const std::vector<std::string_view> settings_keys{"width", "height", "x", "y", "side", "maximized", "language", "type_size", "practice"};
+constexpr std::string_view header = "# hsrviz remembers the window here between runs; delete the file to start afresh.\n";
 
 // The first key a settings file does not have, if any: such a file is someone else's (a lesson, say) and is
 // neither used nor overwritten.
@@ -36,41 +38,71 @@ std::optional<std::string> foreign_key(const toml::table& t) {
     return std::nullopt;
 }
 
+// What is at the settings path. Only nothing, an empty file or a settings file may be replaced; a settings file
+// hsrviz wrote (it starts with `header`) that no longer parses is kept aside; anything else is left alone.
+struct SettingsFile {
+    enum class Kind { absent, empty, settings, broken, foreign } kind = Kind::absent;
+    toml::table table;  // settings
+    std::string why;    // broken, foreign: "PATH: …" or "PATH:LINE: …"
+};
+
+SettingsFile inspect(const std::string& path) {
+    using Kind = SettingsFile::Kind;
+    std::error_code ec;
+    const auto status = std::filesystem::symlink_status(path, ec);
+    if (!std::filesystem::exists(status)) return {};
+    if (std::filesystem::is_symlink(status))  // its target may be anyone's: never read through nor written over
+        return {Kind::foreign, {}, algo::printable(path) + " is a symbolic link"};
+    std::string text;
+    try {
+        if (std::filesystem::is_regular_file(status) && std::filesystem::file_size(path, ec) == 0 && !ec) return {Kind::empty, {}, ""};
+        text = algo::read_input_file(path, settings_limit);
+    } catch (const algo::LoadError& e) {  // not a regular file, too large: not ours to read or replace
+        return {Kind::foreign, {}, algo::printable(path) + ": " + e.message};
+    }
+    try {
+        toml::table t = toml::parse(text, path);
+        if (const auto key = foreign_key(t))
+            return {Kind::foreign, {}, algo::printable(path) + " is not an hsrviz settings file (it has '" + algo::printable(*key, 60) + "')"};
+        return {Kind::settings, std::move(t), ""};
+    } catch (const toml::parse_error& e) {
+        const std::string where = algo::printable(path) + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description());
+        if (text.rfind(header, 0) == 0) return {Kind::broken, {}, where};
+        return {Kind::foreign, {}, where + " (it is not an hsrviz settings file)"};
+    }
+}
+
 }  // namespace
 
 WindowSettings read_window_settings(const std::string& path, std::string& warning) {
+    using Kind = SettingsFile::Kind;
     warning.clear();
     WindowSettings s;
-    std::error_code ec;
-    if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)) && !std::filesystem::exists(path, ec)) return s;
-    toml::table t;
-    try {
-        t = toml::parse(algo::read_input_file(path, settings_limit), path);
-    } catch (const algo::LoadError& e) {  // not a regular file, too large, empty: not ours to read or replace
-        warning = algo::printable(path) + ": " + e.message + "; using the defaults, and the settings are not saved there";
-        return s;
-    } catch (const toml::parse_error& e) {  // a broken settings file is kept beside, never silently replaced
-        const std::string kept = path + ".bak";
-        std::filesystem::rename(path, kept, ec);
-        warning = algo::printable(path) + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()) +
-                  (ec ? "; using the defaults (it could not be kept aside: " + ec.message() + ")"
-                      : "; kept as " + algo::printable(kept) + ", using the defaults");
+    SettingsFile file = inspect(path);
+    if (file.kind == Kind::absent || file.kind == Kind::empty) return s;
+    if (file.kind == Kind::foreign) {
+        warning = file.why + "; it is left alone: the defaults are used and the settings are not saved there";
         return s;
     }
-    if (const auto key = foreign_key(t)) {
-        warning = algo::printable(path) + " is not an hsrviz settings file (it has '" + algo::printable(*key, 60) +
-                  "'); it is left alone: the defaults are used and the settings are not saved there";
+    if (file.kind == Kind::broken) {  // a settings file of ours, broken: kept beside, never silently replaced
+        std::string why;
+        const std::string kept = keep_aside(path, why);
+        warning = file.why + (kept.empty() ? "; it is left as it is (it could not be kept aside: " + algo::printable(why) +
+                                                 "): the defaults are used and the settings are not saved there"
+                                           : "; kept as " + algo::printable(kept) + ", using the defaults");
         return s;
     }
-    // Each field on its own: a bad one is skipped and named, the rest still used.
+    const toml::table& t = file.table;
+    // Each field on its own: a bad one is skipped and named (every one of them), the rest still used.
+    const auto add = [&](const std::string& w) { warning += (warning.empty() ? "" : "\n  ") + w; };
     const auto integer = [&](const char* key, int lo, int hi) -> std::optional<int> {
         const toml::node* n = t.get(key);
         if (!n) return std::nullopt;
         // exact: toml++ converting a float such as 1.5e21 to an integer is undefined behaviour (found by fuzz_settings)
         const auto v = n->value_exact<std::int64_t>();
         if (v && *v >= lo && *v <= hi) return int(*v);
-        warning = path + ":" + std::to_string(n->source().begin.line) + ": field '" + key + "': expected a whole number from " +
-                  std::to_string(lo) + " to " + std::to_string(hi) + "; ignored";
+        add(algo::printable(path) + ":" + std::to_string(n->source().begin.line) + ": field '" + key + "': expected a whole number from " +
+            std::to_string(lo) + " to " + std::to_string(hi) + "; ignored (and left out when the settings are saved again)");
         return std::nullopt;
     };
     if (const auto w = integer("width", 320, 16384)) s.width = *w;
@@ -94,8 +126,8 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
             };
             const auto answered = count("answered"), right = count("right"), best = count("best_streak");
             if (!named_well || !answered || !right || !best || *right > *answered || *best > *right) {
-                warning = path + ":" + std::to_string(node.source().begin.line) + ": field 'practice." + algo::printable(name, 40) +
-                          "': expected answered ≥ right ≥ best_streak, whole numbers; ignored";
+                add(algo::printable(path) + ":" + std::to_string(node.source().begin.line) + ": field 'practice." + algo::printable(name, 40) +
+                    "': expected answered ≥ right ≥ best_streak, whole numbers; ignored");
                 continue;
             }
             s.practice[name] = {*answered, *right, *best};
@@ -104,16 +136,11 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
 }
 
 std::string write_window_settings(const std::string& path, const WindowSettings& s) {
+    using Kind = SettingsFile::Kind;
     std::error_code ec;
     const std::filesystem::path file(path);
-    if (std::filesystem::exists(file, ec)) {  // only a settings file is replaced: never a lesson, a FIFO or a folder
-        try {
-            if (const auto key = foreign_key(toml::parse(algo::read_input_file(path, settings_limit), path)))
-                return path + " is not an hsrviz settings file (it has '" + algo::printable(*key, 60) + "'); left alone";
-        } catch (const std::exception&) {
-            return path + " is not an hsrviz settings file; left alone";
-        }
-    }
+    // only nothing, an empty file or a settings file is replaced: never a lesson, a link, a FIFO or a folder
+    if (const SettingsFile there = inspect(path); there.kind == Kind::foreign || there.kind == Kind::broken) return there.why + "; left alone";
     if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);
     toml::table t{{"width", s.width}, {"height", s.height}, {"maximized", s.maximized}, {"side", int(s.side)}, {"language", s.language}};
     if (s.x) t.insert("x", *s.x);
@@ -125,22 +152,10 @@ std::string write_window_settings(const std::string& path, const WindowSettings&
             practice.insert(topic, toml::table{{"answered", r.answered}, {"right", r.right}, {"best_streak", r.best_streak}});
         t.insert("practice", std::move(practice));
     }
-    // A new file, then renamed over the old one: a full disk or a crash mid-write leaves the old settings whole.
-    const std::string temporary = path + ".new";
-    {
-        std::ofstream f(temporary, std::ios::trunc);
-        f << "# hsrviz remembers the window here between runs; delete the file to start afresh.\n" << t << '\n';
-        if (!f.flush()) {
-            std::filesystem::remove(temporary, ec);
-            return "cannot write " + temporary;
-        }
-    }
-    std::filesystem::rename(temporary, file, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        return "cannot replace " + path;
-    }
-    return "";
+    // A new file of its own, then renamed over the old one: a full disk or a crash mid-write leaves the old settings whole.
+    std::ostringstream text;
+    text << header << t << '\n';
+    return replace_file(path, text.str());
 }
 
 float clamp_side(float side, float window_width) { return std::clamp(side, 320.0f, std::max(320.0f, window_width - 320.0f)); }

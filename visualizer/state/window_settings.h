@@ -30,12 +30,13 @@ struct WindowSettings {
 
 // $HSRVIZ_CONFIG if set, else $XDG_CONFIG_HOME/hsrviz/window.toml, else ~/.config/hsrviz/window.toml.
 std::string window_settings_path();
-// The settings in `path`; `warning` gets why a file there was not used (empty when it was, or when there is none).
-// A broken settings file is kept as PATH.bak (said in the warning); a file that is not a settings file (a lesson,
-// a FIFO, a folder) is read as nothing and left alone.
+// The settings in `path`; `warning` gets why a file there was not used, or each field that was not (empty when all
+// were, or when there is no file). Only a file hsrviz wrote is ever moved or replaced: one that no longer parses is
+// kept as PATH.bak (never over a PATH.bak that exists) and said in the warning; anything else (a lesson, a file that
+// is not TOML, a symbolic link, a FIFO, a folder) is read as nothing and left alone.
 WindowSettings read_window_settings(const std::string& path, std::string& warning);
-// Writes them (making the folder) through a new file renamed over the old one, and only over a settings file:
-// "" when written, else why not.
+// Writes them (making the folder) through a new file of its own (O_EXCL, beside it) renamed over the old one, and
+// only over nothing, an empty file or a settings file: "" when written, else why not.
 std::string write_window_settings(const std::string& path, const WindowSettings& s);
 // The column width kept within a window: at least 320 points, and at least 320 left for the view.
 float clamp_side(float side, float window_width);
