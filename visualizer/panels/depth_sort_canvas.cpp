@@ -61,13 +61,14 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
         const bool drawn = std::find(v.drawn.begin(), v.drawn.end(), i) != v.drawn.end();
         const float lift = int(i) == v.moved ? -6.0f : 0.0f;
         const ImVec2 a(x, y + lift), b(x + chip, y + lift + 28);
-        d->AddRectFilled(a, b, rgb(p.color, drawn ? 0.35f + 0.65f * float(p.opacity) : 0.3f), 3);
+        const float alpha = drawn ? 0.35f + 0.65f * float(p.opacity) : 0.3f;
+        d->AddRectFilled(a, b, rgb(p.color, alpha), 3);
         ImU32 edge = IM_COL32(90, 94, 102, 255);
         float thickness = canvas_px(1);
         if (int(i) == v.r) edge = r_colour, thickness = canvas_px(3);
         if (int(i) == v.q) edge = q_colour, thickness = canvas_px(3);
         d->AddRect(a, b, edge, 3, 0, thickness);
-        if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_colour, ("#" + std::to_string(i)).c_str());
+        if (chip >= 26) d->AddText(ImVec2(a.x + 4, a.y + 5), text_on(p.color, alpha), ("#" + std::to_string(i)).c_str());
         const std::string note = int(i) == v.moved ? tr("depth_sort.moved_note") : int(i) == v.cycle ? tr("depth_sort.cycle_note")
                                  : int(i) == v.r   ? "R" : int(i) == v.q ? "Q" : "";
         if (!note.empty()) notes.push_back({a.x + 2, note, int(i) == v.cycle ? cut_colour : text_colour});

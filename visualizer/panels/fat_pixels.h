@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include <imgui.h>
@@ -21,6 +22,15 @@ struct FatGrid {
 
 inline ImU32 rgb(algo::Color c, float alpha = 1) {
     return ImGui::GetColorU32(ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, alpha));
+}
+
+// Text that reads on colour c laid with `alpha` over the dark canvas: near-black on a light fill (a yellow chip),
+// near-white on a dark one (relative luminance, WCAG's weights, of what the eye sees).
+inline ImU32 text_on(algo::Color c, float alpha = 1) {
+    const float background = 0.1f;  // the canvases' background, about (26, 28, 33)
+    const auto seen = [&](std::uint8_t v) { return background * (1 - alpha) + v / 255.f * alpha; };
+    const float luminance = 0.2126f * seen(c.r) + 0.7152f * seen(c.g) + 0.0722f * seen(c.b);
+    return luminance > 0.5f ? IM_COL32(20, 20, 24, 255) : IM_COL32(235, 235, 235, 255);
 }
 
 // One buffer as width × height cells of `cell` points from `origin`; `fill(x, y)` gives each pixel's colour.
