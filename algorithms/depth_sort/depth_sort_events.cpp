@@ -43,13 +43,13 @@ constexpr Saying cut_across{"depth_sort.cut_across",
                             "No plane of the cycle cuts another of it: split #{polygon} across its length, by a plane along "
                             "the view rays, into #{front} and #{back}."};
 constexpr Saying cut{"depth_sort.cut", "Split #{polygon} by the plane of #{by} into #{front} and #{back}."};
-constexpr Saying deferred{"depth_sort.deferred", "#{polygon} (polygon {id}) joins the output list, to be drawn in the display step."};
-constexpr Saying painted{"depth_sort.painted", "Draw #{polygon} (polygon {id})."};
+constexpr Saying deferred{"depth_sort.deferred", "#{polygon} joins the output list, to be drawn in the display step."};
+constexpr Saying painted{"depth_sort.painted", "Draw #{polygon}."};
 constexpr Saying finished{"depth_sort.finished",
                           "Done: {drawn} {drawn?polygon|polygons} in depth order after {pairs} {pairs?pair|pairs}, {moves} "
                           "{moves?move|moves} and {splits} {splits?split|splits}."};
 constexpr Saying front_drawn{"depth_sort.front_drawn",
-                             "Draw #{polygon} (polygon {id}) front to back: {written} pixels written, {hidden} already "
+                             "Draw #{polygon} front to back: {written} pixels written, {hidden} already "
                              "written by nearer polygons; {unwritten} pixels still unwritten."};
 constexpr Saying screen_filled{"depth_sort.screen_filled",
                                "Every pixel is written after {drawn} polygons: stop; the {left} farther polygons are hidden "
