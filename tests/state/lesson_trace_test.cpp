@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Lessons load and play to the end; traces are JSON Lines and the same input gives the same hash.
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -101,6 +102,15 @@ TEST_CASE("a trace is one JSON object per event, and the same input gives the sa
 
     // A different algorithm on the same scene is a different trace.
     CHECK(trace_lesson(load_lesson(default_lesson_path(), "liang_barsky"), nullptr).hash != a.hash);
+}
+
+TEST_CASE("a trace asked to stop (Ctrl+C) stops between two events, its output ending with a whole line", "[trace]") {
+    std::ostringstream out;
+    std::atomic<bool> stop{true};
+    CHECK_THROWS_AS(trace_lesson(load_lesson(default_lesson_path()), &out, &stop), hsr::algo::WorkStopped);
+    CHECK(out.str().empty());
+    stop = false;
+    CHECK(trace_lesson(load_lesson(default_lesson_path()), &out, &stop).events > 0);
 }
 
 TEST_CASE("a BSP lesson traces BSP events, with split parts named as the window names them", "[trace][bsp]") {

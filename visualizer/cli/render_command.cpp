@@ -4,7 +4,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdlib>
 #include <cstdio>
 #include <functional>
@@ -22,6 +21,7 @@
 #include "cli/ids_png.h"
 #include "state/png_io.h"
 #include "state/arguments.h"
+#include "state/interrupt.h"
 #include "state/memory_budget.h"
 #include "raster/image.h"
 #include "core/work_meter.h"
@@ -162,22 +162,6 @@ algo::Image render_depth_sort(const algo::Scene& scene, const RenderOptions&, al
                                  std::to_string(r.splits) + " splits); no image written");
     return std::move(p.image);
 }
-
-// Ctrl+C while rendering asks the work to stop at its next look (no image is written); a second Ctrl+C ends the
-// program at once, as it would have without us.
-std::atomic<bool> interrupt_asked{false};
-extern "C" void on_interrupt(int) {
-    interrupt_asked.store(true);
-    std::signal(SIGINT, SIG_DFL);
-}
-struct StopOnInterrupt {
-    const std::atomic<bool>& asked = interrupt_asked;
-    void (*before)(int) = std::signal(SIGINT, on_interrupt);
-    StopOnInterrupt() { interrupt_asked.store(false); }
-    ~StopOnInterrupt() { std::signal(SIGINT, before); }
-    StopOnInterrupt(const StopOnInterrupt&) = delete;
-    StopOnInterrupt& operator=(const StopOnInterrupt&) = delete;
-};
 
 // On a terminal one line rewritten in place; into a log file a line every ten seconds.
 void progress_on_stderr(const algo::WorkProgress& p) {

@@ -49,7 +49,7 @@ std::string played_trace_text(const Session& s) {
     return hex(played.hash) + " " + std::to_string(played.events);
 }
 
-TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
+TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out, const std::atomic<bool>* stop) {
     return with_family(lesson.algorithm, [&](auto family) {
         using S = typename decltype(family)::Session;
         // the machine the window plays, its view folded alongside so that sentences name things as the window does
@@ -60,7 +60,7 @@ TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out) {
                 reduce(run.initial, e);
                 return S::sentence_of(e, run.initial);
             },
-            out);
+            out, stop);
     });
 }
 

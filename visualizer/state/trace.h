@@ -4,12 +4,14 @@
 // and a hash of those bytes (64-bit FNV-1a), so that "same input, same trace" is one comparison.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "core/steps.h"
+#include "core/work_meter.h"
 #include "state/lesson.h"
 
 namespace hsr::viz {
@@ -33,11 +35,15 @@ std::string trace_line(std::uint64_t step, const Event& e, const std::string& se
 std::vector<std::string> event_kinds(const Lesson& lesson);
 
 // Drains the machine, writing each event as a line with the sentence `describe(event)` gives. `out` may be null
-// to only count and hash.
+// to only count and hash. Between two events it stops when `out` fails (a full disk: the caller says so) and throws
+// algo::WorkStopped when `stop` is set (Ctrl+C), so the output ends with a whole line.
 template <class Event, class Result, class Describe>
-TraceSummary write_trace(algo::Steps<Event, Result>& machine, Describe describe, std::ostream* out) {
+TraceSummary write_trace(algo::Steps<Event, Result>& machine, Describe describe, std::ostream* out,
+                         const std::atomic<bool>* stop = nullptr) {
     TraceSummary t;
     while (const Event* e = machine.next()) {
+        if (stop && stop->load(std::memory_order_relaxed)) throw algo::WorkStopped();
+        if (out && !*out) break;
         const std::string line = trace_line(t.events, *e, describe(*e));
         if (out) *out << line << '\n';
         hash_line(t, line);
@@ -55,7 +61,8 @@ TraceSummary played_trace(const Session& s);
 // "HASH EVENTS" (16 hex digits, a count): how a screenshot prints it and the page answers it.
 std::string played_trace_text(const Session& s);
 
-// Runs the lesson's machine (whatever its family) to completion, writing its trace to `out` (may be null).
-TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out);
+// Runs the lesson's machine (whatever its family) to completion, writing its trace to `out` (may be null);
+// `stop`: as write_trace's.
+TraceSummary trace_lesson(const Lesson& lesson, std::ostream* out, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace hsr::viz
