@@ -337,9 +337,17 @@ int run_app(const AppOptions& o) {
         lp.questions_hold = !o.record_dir && !o.gif;  // recordings and slides show the whole lesson
         std::optional<GifWriter> gif;  // half the drawable's size (made at the first frame): enough for slides
         bool gif_failed = false;
-        if (o.gif && lp.session()) lp.session()->seek(std::min(o.gif_from, lp.session()->known()));
         bool running = true;
-        if (o.record_dir && !make_folder(*o.record_dir)) exit_code = 1, running = false;  // said why
+        if (o.gif && lp.session()) {
+            lp.session()->seek(o.gif_from);
+            if (lp.session()->cursor() < o.gif_from) {  // a GIF of one frame, the last, would not be what was asked
+                std::fprintf(stderr, "hsrviz: --from %zu is past the lesson's last step (%zu); the GIF would have no steps\n",
+                             o.gif_from, lp.session()->cursor());
+                exit_code = 2, running = false;
+            }
+        }
+        const bool record_folder_made = !o.record_dir || make_folder(*o.record_dir);
+        if (!record_folder_made) exit_code = 1, running = false;  // said why
         Renderer renderer;
         // the page's script may ask where the player stands (the desktop's page-less platform never asks)
         answer_queries([&lp, &renderer](const std::string& question) { return page_answer(lp, renderer, question); });
@@ -504,7 +512,7 @@ int run_app(const AppOptions& o) {
             std::printf("hsrviz: wrote %d frames to %s\n", frames, o.gif->c_str());
         }
         if (o.gif && !lp.session()) exit_code = 1;
-        if (o.record_dir) {
+        if (o.record_dir && record_folder_made) {
             std::printf("hsrviz: wrote %llu frames to %s/frame_*.png\n", static_cast<unsigned long long>(frame), o.record_dir->c_str());
             if (!lp.session()) exit_code = 1;
         }

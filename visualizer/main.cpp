@@ -8,6 +8,7 @@
 
 #include "app.h"
 #include "cli/commands.h"
+#include "cli/option_ranges.h"
 #include "state/output_folder.h"
 #include "cli/render_command.h"
 #include "cli/practice_command.h"
@@ -21,12 +22,13 @@ int main(int argc, char** argv) {
     CLI::App cli{"hsrviz: a step-through visualizer of culling and hidden-surface algorithms"};
     hsr::viz::AppOptions app;
     std::string size = "1280x800";
+    constexpr std::uint64_t max_step = 100'000'000;  // --from, --to: far beyond any lesson's steps
     cli.add_option("lesson", app.lesson_path, "Lesson or scene file to play (default: the Cohen–Sutherland lesson)");
     cli.add_option("--screenshot", app.screenshot, "Take one Step per frame, write a PNG of the window after --frames, exit");
-    cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(CLI::Range(1, 1000000));
+    cli.add_option("--frames", app.frames, "Frames to play before the screenshot")->check(hsr::viz::whole_from(1, 1000000));
     cli.add_option("--gif", app.gif, "Write an animated GIF of the window for steps --from to --to (one frame a step), then exit");
-    cli.add_option("--from", app.gif_from, "First step of the GIF (default 0)");
-    cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)");
+    cli.add_option("--from", app.gif_from, "First step of the GIF (default 0)")->check(hsr::viz::whole_from(0, max_step));
+    cli.add_option("--to", app.gif_to, "Last step of the GIF (default 60)")->check(hsr::viz::whole_from(0, max_step));
     cli.add_flag("--gif-half", app.gif_half, "GIF frames at half the window's size (smaller files; text is harder to read)");
     cli.add_option("--record", app.record_dir, "Play the lesson to its end, writing a PNG per step into this folder");
     cli.add_option("--algorithm", app.algorithm, "Play the lesson with another algorithm of its family (families apart by ';'): " + hsr::viz::algorithm_ids_by_family());
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
     cli.add_flag("--lesson-list", lesson_list, "Print the shipped lessons in the course's order (file, difficulty, algorithm, title), then exit");
     cli.add_option("--frame-log", app.frame_log, "Write each frame's time (ms) to this file; print the median at exit");
     cli.add_option("--scale", app.scale, "Size of type and panels, 0.5 to 4 (default: 1.3 with --projector, the screen's on a high-DPI screen, else 1; Ctrl+= and Ctrl+- change it)")
-        ->check(CLI::Range(0.5f, 4.0f));
+        ->check(hsr::viz::number_from(0.5, 4));
     cli.add_flag("--projector", app.projector, "Projector mode: fullscreen, larger type for the back row, high contrast (F1: keys)");
     std::string keys;  // one comma-separated argument: a lesson after it is the lesson, not one more key
     cli.add_option("--keys", keys, "Keys to press, one per frame, comma-separated (Space,Right,Shift+Right,Left,Home,End,F5,V,1); "
@@ -69,36 +71,37 @@ int main(int argc, char** argv) {
     CLI::App* report_cmd = cli.add_subcommand("report", "Measure error against run time for every algorithm family; write Markdown, CSV and SVG charts");
     report_cmd->add_option("--out", report.out, "Folder to write report.md, report.csv and one chart per family into");
     report_cmd->add_flag("--quick", report.quick, "Small scenes and three repeats (about a minute)");
-    report_cmd->add_option("--repeats", report.repeats, "Runs per measurement; the median is reported")->check(CLI::PositiveNumber);
+    report_cmd->add_option("--repeats", report.repeats, "Runs per measurement; the median is reported")->check(hsr::viz::whole_from(1, 1000));
     hsr::viz::PracticeOptions practice;
     CLI::App* practice_cmd = cli.add_subcommand("practice", "Print exercises of a topic as JSON Lines: the same seed, the same exercises");
     practice_cmd->add_option("topic", practice.topic, "Topic (cohen_sutherland, liang_barsky, sutherland_hodgman, backface, …; 'list' lists them)")->required();
-    practice_cmd->add_option("--seed", practice.seed, "Series of exercises (a teacher hands out its number)");
-    practice_cmd->add_option("--count", practice.count, "How many exercises")->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
-    practice_cmd->add_option("--level", practice.level, "1 easy, 2 medium, 3 hard (close to degenerate)")->check(CLI::Range(1, 3));
+    practice_cmd->add_option("--seed", practice.seed, "Series of exercises (a teacher hands out its number)")
+        ->check(hsr::viz::whole_from(0, UINT64_MAX));
+    practice_cmd->add_option("--count", practice.count, "How many exercises")->check(hsr::viz::whole_from(1, 1000000));
+    practice_cmd->add_option("--level", practice.level, "1 easy, 2 medium, 3 hard (close to degenerate)")->check(hsr::viz::whole_from(1, 3));
     cli.set_version_flag("--version", "hsrviz " HSR_VERSION);
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {  // --help and --version end here too, with 0; a usage error exits 2
         const int code = cli.exit(e);
-        return code == 0 ? 0 : 2;
+        return hsr::viz::with_stdout_checked(code == 0 ? 0 : 2);
     }
 
     if (app.gif && app.gif_from > app.gif_to) {
         std::fprintf(stderr, "hsrviz: --from %zu is after --to %zu; the GIF would have no steps\n", app.gif_from, app.gif_to);
         return 2;
     }
-    if (*trace_cmd) return hsr::viz::run_trace(trace);
-    if (*check_cmd) return hsr::viz::run_check(check_files, hsr::viz::data_dir());
-    if (*render_cmd) return hsr::viz::run_render(render);
-    if (*report_cmd) return hsr::viz::run_report(report);
-    if (*practice_cmd) return hsr::viz::run_practice(practice);
+    if (*trace_cmd) return hsr::viz::with_stdout_checked(hsr::viz::run_trace(trace));
+    if (*check_cmd) return hsr::viz::with_stdout_checked(hsr::viz::run_check(check_files, hsr::viz::data_dir()));
+    if (*render_cmd) return hsr::viz::with_stdout_checked(hsr::viz::run_render(render));
+    if (*report_cmd) return hsr::viz::with_stdout_checked(hsr::viz::run_report(report));
+    if (*practice_cmd) return hsr::viz::with_stdout_checked(hsr::viz::run_practice(practice));
 
     // The window: the default lesson unless one is named.
     if (app.lesson_path.empty()) app.lesson_path = hsr::viz::default_lesson_path();
     std::tie(app.width, app.height) = *hsr::viz::parse_size(size, 16384);
     app.size_given = size_option->count() > 0;
-    if (lesson_list) return hsr::viz::print_lesson_list();
+    if (lesson_list) return hsr::viz::with_stdout_checked(hsr::viz::print_lesson_list());
     for (std::size_t at = 0; !keys.empty() && at <= keys.size();) {
         const std::size_t comma = std::min(keys.find(',', at), keys.size());
         app.keys.push_back(keys.substr(at, comma - at));
@@ -118,5 +121,5 @@ int main(int argc, char** argv) {
             if (hsr::viz::run_trace({app.lesson_path, trace_file, app.algorithm}) != 0) return 1;
         }
     }
-    return hsr::viz::run_app(app);
+    return hsr::viz::with_stdout_checked(hsr::viz::run_app(app));
 }

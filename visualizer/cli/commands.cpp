@@ -72,4 +72,11 @@ int run_check(std::vector<std::string> files, const std::string& root) {
     return bad == 0 ? 0 : 1;
 }
 
+int with_stdout_checked(int code) {
+    errno = 0;
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+    std::fprintf(stderr, "hsrviz: cannot write the standard output%s%s\n", errno ? ": " : "", errno ? std::strerror(errno) : "");
+    return code == 0 ? 1 : code;
+}
+
 }  // namespace hsr::viz

@@ -21,4 +21,8 @@ std::string algorithm_ids_by_family();
 // Prints one line per file (and one per problem); exit code 1 when any file has a problem.
 int run_check(std::vector<std::string> files, const std::string& root);
 
+// A command's exit code, made 1 when what it printed did not all reach the standard output (a full disk, a closed
+// pipe, /dev/full): said on stderr, never a 0 with the output lost.
+int with_stdout_checked(int code);
+
 }  // namespace hsr::viz

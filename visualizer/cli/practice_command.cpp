@@ -20,7 +20,7 @@ int run_practice(const PracticeOptions& o) {
     try {
         for (std::uint64_t i = 0; i < o.count; ++i) {
             const std::string line = p::to_json(p::exercise(*topic, o.seed, i, p::Level(o.level))).dump();
-            std::printf("%s\n", line.c_str());
+            if (std::printf("%s\n", line.c_str()) < 0) break;  // the output is gone (main says so): no more to make
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "hsrviz practice: %s\n", e.what());
