@@ -179,6 +179,18 @@ TEST_CASE("check reports every problem of a file, each with its line and the fie
     CHECK_THAT(r.problems[2], Catch::Contains("many.toml:8:12: field 'polygons[0].vertices'"));
     CHECK_THAT(r.problems[3], Catch::Contains("many.toml:11:9: field 'polygons[1].color'"));
     CHECK_THAT(r.problems[4], Catch::Contains("many.toml:15:34: field 'polygons[2].vertices[2][2]'"));
+    // A problem is reported once, where it is: not again as what its removal left (issue 53, item 10)
+    for (const auto& [text, says] : std::vector<std::pair<std::string, std::string>>{
+             {"[camera]\neye = [0, 0, 5]\nfov = nan\n[[polygons]]\nid = 1\nvertices = [[0,0,0],[1,0,0]]\n", "field 'polygons[0].vertices'"},
+             {"[camera]\neye = [nan, 0, 5]\ntarget = [0, 0, 0]\n[[polygons]]\nid = 1\nvertices = [[0,0,0],[1,0,0],[0,1,0]]\n", "field 'camera.eye[0]'"},
+             {"[camera]\nnear = -1\nfar = 0.5\n[[polygons]]\nid = 1\nvertices = [[0,0,0],[1,0,0],[0,1,0]]\n", "field 'camera.near'"}}) {
+        std::ofstream(file) << text;
+        const CheckResult once = check_file(file);
+        INFO(text);
+        for (const auto& p : once.problems) INFO(p);
+        CHECK(once.problems.size() == (text.find("fov = nan") != std::string::npos ? 2u : 1u));
+        CHECK_THAT(once.problems.back(), Catch::Contains(says));
+    }
     // A lesson whose algorithm is unknown stops there (removed, the lesson would read as a scene)
     std::ofstream(file) << "title = \"t\"\nalgorithm = \"zbufer\"\nscene = \"none.toml\"\nformat = \"int12\"\n";
     REQUIRE(check_file(file).problems.size() == 1);

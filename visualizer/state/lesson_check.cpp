@@ -37,6 +37,10 @@ std::vector<std::pair<std::string, std::string>> lesson_texts(const Lesson& l) {
     return texts;
 }
 
+// The camera's fields checked against each other (target ≠ eye, up not along the view, far > near): one removed, its
+// default may contradict another.
+const std::set<std::string> tied_camera_fields{"camera.eye", "camera.target", "camera.up", "camera.near", "camera.far"};
+
 // Every problem that loading the file meets, not only the first: after each, what it names is removed and the file
 // read again (at most 20, and never twice the same field: a field that is missing once removed stops it). A later
 // problem may follow from an earlier one, as a compiler's do.
@@ -44,7 +48,7 @@ std::vector<std::string> load_problems(const std::string& path) {
     std::vector<std::string> out;
     try {
         algo::TomlReader reader(path);
-        std::set<std::string> fields;
+        std::set<std::string> fields, reported;  // as the reader names them; as the file does, with their tables
         std::map<std::string, std::vector<std::size_t>> removed;  // by array ("polygons"): the elements removed, as first numbered
         for (int k = 0; k < 20; ++k) {
             try {
@@ -61,7 +65,17 @@ std::vector<std::string> load_problems(const std::string& path) {
                     field = array + "[" + std::to_string(i) + field.substr(field.find(']', bracket));
                     gone.insert(std::upper_bound(gone.begin(), gone.end(), i), i);
                 }
+                // A problem the removals made is not the file's (issue 53, item 10): a scene with its only polygon
+                // removed has "nothing in it", a field removed is "missing", a camera without its eye has its target
+                // "equal to the eye". After the first, a problem of the whole file, of a field already removed or of
+                // one tied to a removed one ends the list.
+                if (k > 0 && (field.empty() || reported.contains(field))) return out;
                 out.push_back(algo::LoadError(e.file, e.line, e.column, field, e.message).what());
+                // camera.eye[0] removed leaves camera.eye "not an array of 3": the arrays holding it are tied to it
+                for (std::string f = field; !f.empty(); f = f.back() == ']' ? f.substr(0, f.rfind('[')) : "") {
+                    reported.insert(f);
+                    if (tied_camera_fields.contains(f)) reported.insert(tied_camera_fields.begin(), tied_camera_fields.end());
+                }
                 // (an unknown algorithm removed would read the lesson as a scene: the first problem is all there is)
                 if (e.file != path || e.field.empty() || e.field == "algorithm" || !fields.insert(e.field).second || !reader.forget(e.field))
                     return out;
