@@ -45,6 +45,11 @@ double distance_of_code(DepthFormat f, std::uint64_t target, algo::DepthRange r)
     return hi;
 }
 
+// The outline of the pixel under test: being tested, written (nearer), or failed the depth test (kept what was there).
+ImU32 outcome_colour(PixelOutcome o) {
+    return o == PixelOutcome::written ? IM_COL32(90, 220, 130, 255) : o == PixelOutcome::failed ? IM_COL32(240, 80, 60, 255) : IM_COL32(255, 230, 90, 255);
+}
+
 // What the fill has under way: the polygon, its span and the pixel under test.
 void under_way(ImDrawList* d, ImVec2 origin, float cell, const ZView& v) {
     for (const auto& p : *v.polygons) outline(d, origin, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.25f)), 1);
@@ -53,9 +58,7 @@ void under_way(ImDrawList* d, ImVec2 origin, float cell, const ZView& v) {
         d->AddRect(ImVec2(origin.x + float(v.span_begin) * cell - 1, origin.y + float(v.span_y) * cell - 1),
                    ImVec2(origin.x + float(v.span_end) * cell, origin.y + float(v.span_y + 1) * cell), IM_COL32(255, 230, 90, 255), 0, 0, canvas_px(2));
     if (v.pixel_x >= 0) {
-        const ImU32 c = v.outcome == PixelOutcome::written  ? IM_COL32(90, 220, 130, 255)
-                        : v.outcome == PixelOutcome::failed ? IM_COL32(240, 80, 60, 255)
-                                                            : IM_COL32(255, 230, 90, 255);
+        const ImU32 c = outcome_colour(v.outcome);
         d->AddRect(ImVec2(origin.x + float(v.pixel_x) * cell - 2, origin.y + float(v.pixel_y) * cell - 2),
                    ImVec2(origin.x + float(v.pixel_x + 1) * cell + 1, origin.y + float(v.pixel_y + 1) * cell + 1), c, 0, 0, canvas_px(3));
     }
@@ -84,6 +87,63 @@ void precision_diagram(ImDrawList* d, ImVec2 at, float width, const ZView& v) {
     }
 }
 
+
+// The pixel under test and its neighbours close up: each one's stored code on its polygon's colour (blank: the far
+// code, never written), the pixels' x above and y beside; the pixel under test outlined by its outcome, with the
+// incoming code it is compared against, and a legend of the outline's colours.
+void close_up(ImDrawList* d, ImVec2 at, float width, float height, const ZView& v) {
+    const ImU32 text = IM_COL32(220, 220, 220, 255), dim = IM_COL32(150, 150, 150, 255);
+    const float line = ImGui::GetTextLineHeight();
+    // the pixel under test; else the first pixel of the span under way (a step fills a span, a micro step a pixel)
+    const bool testing = v.pixel_x >= 0;
+    const int fx = testing ? v.pixel_x : v.span_begin, fy = testing ? v.pixel_y : v.span_y;
+    if (fy < 0) {
+        if (height > 2 * line) d->AddText(at, dim, tr("zbuffer.close_up_idle").c_str());
+        return;
+    }
+    const std::string widest = std::to_string(v.far_code);
+    const float cw = ImGui::CalcTextSize(widest.c_str()).x + canvas_px(12), ch = line + canvas_px(8);
+    const float header = ImGui::CalcTextSize("000").x + canvas_px(6);
+    int cols = std::min(9, int((width - header) / cw)), rows = std::min(5, int((height - 5 * line) / ch));
+    cols -= 1 - cols % 2, rows -= 1 - rows % 2;  // odd: the pixel under test in the middle
+    if (cols < 3 || rows < 1) return;
+    const int x0 = std::clamp(fx - cols / 2, 0, std::max(0, v.viewport.width - cols));
+    const int y0 = std::clamp(fy - rows / 2, 0, std::max(0, v.viewport.height - rows));
+    cols = std::min(cols, v.viewport.width), rows = std::min(rows, v.viewport.height);
+    const std::string title = tr(testing ? "zbuffer.close_up" : "zbuffer.close_up_span",
+                                 {{"x", std::to_string(fx)}, {"y", std::to_string(fy)}, {"incoming", std::to_string(v.incoming)}});
+    d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, text, title.c_str(), nullptr, width);  // wrapped in the view
+    const float title_h = ImGui::CalcTextSize(title.c_str(), nullptr, false, width).y;
+    const float top = at.y + title_h + canvas_px(6) + line, left = at.x + header;
+    for (int c = 0; c < cols; ++c)
+        d->AddText(ImVec2(left + float(c) * cw + canvas_px(4), top - line), dim, std::to_string(x0 + c).c_str());
+    for (int r = 0; r < rows; ++r) {
+        const int py = y0 + r;
+        d->AddText(ImVec2(at.x, top + float(r) * ch + canvas_px(4)), dim, std::to_string(py).c_str());
+        for (int c = 0; c < cols; ++c) {
+            const int px = x0 + c;
+            const std::size_t i = std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px);
+            const ImVec2 a(left + float(c) * cw, top + float(r) * ch), b(a.x + cw - 2, a.y + ch - 2);
+            const std::int32_t o = v.owner[i];
+            const algo::Color fill = o < 0 ? algo::Color{40, 43, 50} : (*v.polygons)[std::size_t(o)].color;
+            d->AddRectFilled(a, b, rgb(fill, o < 0 ? 1.0f : 0.55f), 2);
+            if (v.depth[i] < v.far_code)
+                d->AddText(ImVec2(a.x + canvas_px(5), a.y + canvas_px(4)), text_on(fill, o < 0 ? 1.0f : 0.55f), std::to_string(v.depth[i]).c_str());
+            if (py == v.span_y && px >= v.span_begin && px < v.span_end)  // the span under way, as in the grids
+                d->AddRect(a, b, IM_COL32(255, 230, 90, 160), 2, 0, canvas_px(1));
+            if (testing && px == v.pixel_x && py == v.pixel_y) d->AddRect(ImVec2(a.x - 2, a.y - 2), ImVec2(b.x + 2, b.y + 2), outcome_colour(v.outcome), 0, 0, canvas_px(3));
+        }
+    }
+    // the legend: each outline colour with its word
+    float x = at.x;
+    const float y = top + float(rows) * ch + canvas_px(6);
+    for (const PixelOutcome o : {PixelOutcome::none, PixelOutcome::written, PixelOutcome::failed}) {
+        const std::string word = tr(o == PixelOutcome::written ? "zbuffer.outcome_written" : o == PixelOutcome::failed ? "zbuffer.outcome_failed" : "zbuffer.outcome_testing");
+        d->AddRect(ImVec2(x, y + 2), ImVec2(x + line - 4, y + line - 2), outcome_colour(o), 0, 0, canvas_px(3));
+        d->AddText(ImVec2(x + line + 2, y), text, word.c_str());
+        x += line + 2 + ImGui::CalcTextSize(word.c_str()).x + canvas_px(18);
+    }
+}
 }  // namespace
 
 FatGrid zbuffer_frame_grid(const ZBufferSession& s, float x, float y, float w, float h) {
@@ -121,7 +181,10 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     });
     under_way(d, frame, cell, v);
     under_way(d, depth, cell, v);
-    precision_diagram(d, ImVec2(x + margin, frame.y + cell * float(v.viewport.height) + 16), w - 2 * margin, v);
+    const float diagram_top = frame.y + cell * float(v.viewport.height) + 16;
+    precision_diagram(d, ImVec2(x + margin, diagram_top), w - 2 * margin, v);
+    const float close_top = diagram_top + 26 + 10 + ImGui::GetTextLineHeight() + canvas_px(24);  // under the diagram's words
+    close_up(d, ImVec2(x + margin, close_top), w - 2 * margin, y + h - margin - close_top, v);
     ImGui::End();
 }
 
