@@ -57,6 +57,8 @@ void growth_chart(const std::vector<analysis::Measurement>& rows, const std::str
         ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(palette[k % 6]), "%s",
                            tr("runtime.chart_legend", {{"method", l.method}, {"slope", slope}, {"claim", claim}}).c_str());
     }
+    // why a slope measured here may not be the notes' exponent: the sizes a class waits for are small
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(dim), "%s", tr("runtime.chart_caveat").c_str());
     ImGui::PopTextWrapPos();
 }
 
