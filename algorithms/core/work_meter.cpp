@@ -30,7 +30,10 @@ std::string duration(double s) {
 }  // namespace
 
 std::string WorkProgress::sentence() const {
-    std::string s = stage + ": " + whole_number(done) + (total > 0 ? " of " + whole_number(total) : std::string()) + " " + unit;
+    // before any stage is named (the solid occluders' set-up said "hsrviz: : 0 , 2.6 s"): "getting ready, 2.6 s"
+    if (stage.empty() && unit.empty() && total <= 0) return "getting ready, " + duration(seconds);
+    std::string s = (stage.empty() ? "working" : stage) + ": " + whole_number(done) + (total > 0 ? " of " + whole_number(total) : std::string()) +
+                    (unit.empty() ? "" : " " + unit);
     if (total > 0) s += " (" + std::to_string(int(std::clamp(100 * done / total, 0.0, 100.0))) + " %)";
     s += ", " + duration(seconds);
     if (seconds_left && !finished) s += ", about " + duration(*seconds_left) + " left";

@@ -59,12 +59,14 @@ std::string read_input_file(const std::string& path, std::size_t limit) {
     return text;
 }
 
-std::string printable(std::string_view text, std::size_t max) {
+namespace {
+
+std::string shown(std::string_view text, std::size_t max, bool one_line) {
     std::string out;
     const auto put = [&](std::string_view part) {
         for (const char c : part) {
             const auto u = static_cast<unsigned char>(c);
-            if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) {
+            if ((u < 0x20 && (one_line || (c != '\n' && c != '\t'))) || u == 0x7f) {
                 char hex[8];
                 std::snprintf(hex, sizeof hex, "\\x%02x", u);
                 out += hex;
@@ -86,5 +88,10 @@ std::string printable(std::string_view text, std::size_t max) {
     put(text.substr(tail));
     return out;
 }
+
+}  // namespace
+
+std::string printable(std::string_view text, std::size_t max) { return shown(text, max, false); }
+std::string printable_name(std::string_view name, std::size_t max) { return shown(name, max, true); }
 
 }  // namespace hsr::algo

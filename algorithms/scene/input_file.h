@@ -22,5 +22,7 @@ std::string read_input_file(const std::string& path, std::size_t limit = input_f
 // feeds and tabs) as \xNN, and at most `max` characters (… in the middle), so a hostile name cannot rewrite the
 // terminal or bury the message.
 std::string printable(std::string_view text, std::size_t max = 300);
+// A file's name as printable shows it, with its line feeds and tabs as \xNN too: a name is one line.
+std::string printable_name(std::string_view name, std::size_t max = 300);
 
 }  // namespace hsr::algo

@@ -13,7 +13,7 @@ namespace hsr::algo {
 namespace {
 
 std::string where(const std::string& file, int line, int column, const std::string& field, const std::string& msg) {
-    std::string out = printable(file) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+    std::string out = printable_name(file) + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
     if (!field.empty()) out += "field '" + printable(field) + "': ";
     return out + msg;
 }
@@ -27,6 +27,13 @@ toml::table parse(const std::string& path, std::string_view text) {
     }
 }
 
+// The characters of UTF-8 text, not its bytes: 4,000 CJK characters are 12,000 bytes (toml++ has checked the UTF-8).
+std::size_t characters(std::string_view text) {
+    std::size_t count = 0;
+    for (const char c : text) count += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    return count;
+}
+
 // Keys and texts far longer than any lesson's are refused before anything quotes or draws them: a 17,000-character
 // name or a 1 MB key would otherwise reach the window's text drawing (16-bit vertex indices) or an error message.
 void bound_texts(const std::string& path, const toml::node& n) {
@@ -35,16 +42,16 @@ void bound_texts(const std::string& path, const toml::node& n) {
     };
     if (const toml::table* t = n.as_table()) {
         for (const auto& [key, value] : *t) {
-            if (key.str().size() > max_key_length)
-                refuse(value, "a key of " + std::to_string(key.str().size()) + " characters; keys are at most " +
+            if (const std::size_t length = characters(key.str()); length > max_key_length)
+                refuse(value, "a key of " + std::to_string(length) + " characters; keys are at most " +
                                   std::to_string(max_key_length));
             bound_texts(path, value);
         }
     } else if (const toml::array* a = n.as_array()) {
         for (const toml::node& value : *a) bound_texts(path, value);
     } else if (const auto* s = n.as_string()) {
-        if (s->get().size() > max_text_length)
-            refuse(n, "a text of " + std::to_string(s->get().size()) + " characters; texts are at most " +
+        if (const std::size_t length = characters(s->get()); length > max_text_length)
+            refuse(n, "a text of " + std::to_string(length) + " characters; texts are at most " +
                           std::to_string(max_text_length) + " (a lesson's longest summary is about 700)");
     }
 }

@@ -76,6 +76,22 @@ std::vector<Case> option_cases() {
         for (int k = 1; k <= 1000; ++k) f += std::to_string(k) + " ";
         return f;
     }() + "\n", {"m.obj: line 1002: face 3 names vertex 1000, but the file has 999 vertices"}));
+    // Limits counted as a person counts: characters, not bytes (4,000 CJK characters are 12,000 bytes)
+    std::string cjk;
+    for (int k = 0; k < 4000; ++k) cjk += "\u6f22";
+    cs.push_back(Case{"a lesson title of 4,000 CJK characters", {{"s.toml", scene}, {"l.toml", with(lesson, "title =", "title = \"" + cjk + "\"")}}, {},
+                      {{{"check", "l.toml"}, 0, {"ok    l.toml"}}}});
+    cs.push_back(Case{"a lesson title of 4,001 CJK characters", {{"s.toml", scene}, {"l.toml", with(lesson, "title =", "title = \"" + cjk + "\u6f22\"")}}, {},
+                      {{{"check", "l.toml"}, 1, {"a text of 4001 characters; texts are at most 4000"}}}});
+    // A file name is one line: a line feed or a tab in it is shown as \x0a, \x09
+    Run newline{{"check", "a\nb.toml"}, 1, {"a\\x0ab.toml"}};
+    newline.never_says = {"a\nb.toml"};
+    cs.push_back(Case{"a line feed in a file name", {{"s.toml", scene}}, {}, {newline}});
+    Run tab{{"render", "s.toml", "--out", "o\t.png", "--size", "64x48"}, 0, {"wrote o\\x09.png"}};
+    cs.push_back(Case{"a tab in an output's name", {{"s.toml", scene}}, {}, {tab}});
+    // render draws polygons: a terrain is refused with the reason, not an empty picture with exit 0
+    cs.push_back(Case{"render of a terrain", {{"t.toml", read(fs::path(HSR_SOURCE_DIR) / "assets/scenes/terrain_ridge.toml")}}, {},
+                      {{{"render", "t.toml", "--out", "o.png", "--size", "64x48"}, 1, {"t.toml: render draws polygons"}, "o.png"}}});
     return cs;
 }
 

@@ -70,4 +70,6 @@ TEST_CASE("the progress sentence gives done, total, share, time and the time lef
     CHECK(open.sentence() == "opening city.toml: 1,234,567 machine steps, 2.5 s");
     const WorkProgress done{.stage = "ray cast", .unit = "rays", .done = 7, .total = 7, .seconds = 1.0, .seconds_left = 0.0, .finished = true};
     CHECK(done.sentence() == "ray cast: 7 of 7 rays (100 %), 1.0 s");  // the last word has nothing left
+    const WorkProgress unnamed{.seconds = 2.6};  // told before any stage was named (issue 53, item 12)
+    CHECK(unnamed.sentence() == "getting ready, 2.6 s");
 }

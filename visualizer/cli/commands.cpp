@@ -61,11 +61,11 @@ int run_check(std::vector<std::string> files, const std::string& root) {
         const CheckResult r = check_file(f);
         for (const std::string& w : r.warnings) std::printf("warn  %s\n", algo::printable(w, 2000).c_str());
         if (r.problems.empty()) {
-            std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", algo::printable(f).c_str(), r.events, r.chapters, r.questions);
+            std::printf("ok    %s (%zu events, %zu chapters, %zu questions)\n", algo::printable_name(f).c_str(), r.events, r.chapters, r.questions);
             continue;
         }
         ++bad;
-        std::printf("FAIL  %s\n", algo::printable(f).c_str());
+        std::printf("FAIL  %s\n", algo::printable_name(f).c_str());
         for (const std::string& p : r.problems) std::printf("      %s\n", algo::printable(p, 2000).c_str());
     }
     std::printf("%zu files checked, %d with problems\n", files.size(), bad);

@@ -216,8 +216,12 @@ int run_render(const RenderOptions& o) {
         if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
         if (o.occluders != "planar" && o.occluders != "proxy" && o.occluders != "solid")
             throw std::runtime_error("--occluders: expected planar, proxy or solid, got \"" + algo::printable(o.occluders, 60) + "\"");
+        if (scene.terrain.rows > 0 && scene.polygons.empty())  // an empty picture with exit 0 was what it gave
+            throw std::runtime_error(algo::printable_name(o.scene) + ": render draws polygons, and this scene is a [terrain] (the floating "
+                                     "horizon's): play it in the window or with `hsrviz trace`");
+        if (scene.terrain.rows > 0) std::fprintf(stderr, "hsrviz: %s: the [terrain] is not drawn (render draws polygons)\n", algo::printable_name(o.scene).c_str());
         if (scene.coordinates != algo::Coordinates::world)
-            throw std::runtime_error(o.scene + ": render needs world coordinates");
+            throw std::runtime_error(algo::printable_name(o.scene) + ": render needs world coordinates");
         if (o.eye) {
             const auto e = parse_point(*o.eye);
             if (!e) throw std::runtime_error("--eye: expected X,Y,Z (finite numbers within ±1e100), got " + algo::printable(*o.eye, 60));
@@ -231,7 +235,7 @@ int run_render(const RenderOptions& o) {
         if (o.ids)
             for (const auto& p : scene.polygons)
                 if (p.id < 1 || p.id > 65535)
-                    throw std::runtime_error(o.scene + ": polygon id " + std::to_string(p.id) +
+                    throw std::runtime_error(algo::printable_name(o.scene) + ": polygon id " + std::to_string(p.id) +
                                              " does not fit the 16-bit id image (ids 1 to 65535)");
 
         const std::map<std::string, std::function<algo::Image(const algo::Scene&, const RenderOptions&, algo::Viewport, algo::WorkMeter&)>>
@@ -244,9 +248,9 @@ int run_render(const RenderOptions& o) {
         algo::WorkMeter meter(progress_on_stderr, &ctrl_c.asked);
         const algo::Image image = renderer->second(scene, o, {w, h}, meter);
         meter.look();  // a Ctrl+C during the last events, or during work that is not metered (the culling pipeline)
-        if (!write_rgb_png(o.out, image)) throw std::runtime_error("cannot write " + o.out);
-        if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + *o.ids);
-        std::printf("wrote %s%s%s\n", o.out.c_str(), o.ids ? " and " : "", o.ids ? o.ids->c_str() : "");
+        if (!write_rgb_png(o.out, image)) throw std::runtime_error("cannot write " + algo::printable_name(o.out));
+        if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + algo::printable_name(*o.ids));
+        std::printf("wrote %s%s%s\n", algo::printable_name(o.out).c_str(), o.ids ? " and " : "", o.ids ? algo::printable_name(*o.ids).c_str() : "");
         return 0;
     } catch (const algo::WorkStopped&) {
         std::fprintf(stderr, "%shsrviz: stopped (Ctrl+C); no image written\n", isatty(STDERR_FILENO) ? "\n" : "");

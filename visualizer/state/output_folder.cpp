@@ -11,13 +11,15 @@
 #include <fstream>
 #include <system_error>
 
+#include "scene/input_file.h"
+
 namespace hsr::viz {
 
 bool make_folder(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (!ec && std::filesystem::is_directory(dir, ec)) return true;
-    std::fprintf(stderr, "hsrviz: cannot make the folder %s: %s\n", dir.c_str(), ec ? ec.message().c_str() : "a file of that name is in the way");
+    std::fprintf(stderr, "hsrviz: cannot make the folder %s: %s\n", algo::printable_name(dir).c_str(), ec ? ec.message().c_str() : "a file of that name is in the way");
     return false;
 }
 

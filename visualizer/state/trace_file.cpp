@@ -27,7 +27,7 @@ void remove_partial(const std::string& path) {
 }  // namespace
 
 int run_trace(const TraceOptions& o) {
-    const std::string out_name = algo::printable(o.out);
+    const std::string out_name = algo::printable_name(o.out);
     bool opened = false;
     try {
         StopOnInterrupt ctrl_c;  // from the start: a Ctrl+C while the lesson loads stops at the first event
