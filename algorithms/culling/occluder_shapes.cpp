@@ -64,24 +64,6 @@ double perimeter(const std::vector<Vec2>& p) {
 bool thinner_than(const std::vector<Vec2>& p, double gap) { return p.size() < 3 || 2 * std::abs(area(p)) <= gap * perimeter(p); }
 }  // namespace
 
-std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
-    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    p.erase(std::unique(p.begin(), p.end()), p.end());
-    if (p.size() < 3) return p;
-    std::vector<Vec2> h(2 * p.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {  // lower chain
-        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-        h[k++] = p[i];
-    }
-    for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {  // upper chain
-        while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-        h[k++] = p[i];
-    }
-    h.resize(k - 1);
-    return h;
-}
-
 std::optional<std::vector<Vec3>> proxy_of(std::span<const Vec3> vertices, const ViewPlane& view) {
     std::vector<Vec2> images;
     double far = -1e308;

@@ -23,6 +23,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/plane.h"
+#include "geometry/polygon_2d.h"  // convex_hull
 #include "culling/hierarchy.h"
 #include "scene/scene.h"
 
@@ -42,9 +43,6 @@ struct ViewPlane {
     // The point of depth `depth` whose image is `at`.
     Vec3 point(const Vec2& at, double depth) const;
 };
-
-// The convex hull of points in the plane, counter-clockwise, without collinear points (Andrew's monotone chain).
-std::vector<Vec2> convex_hull(std::vector<Vec2> points);
 
 // The proxy of an object given by its vertices: the convex hull of their images at the depth of the farthest. None
 // when a vertex lies nearer than the near plane (it would be clipped, and an image behind the eye turns over) or

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "culling/bounding_volume.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 
@@ -77,27 +78,6 @@ Obb principal_box(std::span<const Vec3> distinct) {
     return box_along(Vec3(v[0][0], v[1][0], v[2][0]), Vec3(v[0][1], v[1][1], v[2][1]), distinct);
 }
 
-double cross2(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
-// Andrew's monotone chain: the convex hull of points in a plane, counter-clockwise.
-std::vector<glm::dvec2> hull_2d(std::vector<glm::dvec2> p) {
-    std::sort(p.begin(), p.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-    p.erase(std::unique(p.begin(), p.end()), p.end());
-    if (p.size() < 3) return p;
-    std::vector<glm::dvec2> h(2 * p.size());
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-        h[k++] = p[i];
-    }
-    for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-        while (k >= t && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-        h[k++] = p[i];
-    }
-    h.resize(k - 1);
-    return h;
-}
-
 // The box with `normal` as one axis: the smallest rectangle holding the points projected on the plane across it has
 // a side on an edge of their convex hull (Freeman and Shapira), so each hull edge is tried.
 Obb box_on_face(Vec3 normal, std::span<const Vec3> distinct) {
@@ -106,7 +86,7 @@ Obb box_on_face(Vec3 normal, std::span<const Vec3> distinct) {
     std::vector<glm::dvec2> flat;
     flat.reserve(distinct.size());
     for (const Vec3& p : distinct) flat.emplace_back(glm::dot(p, u), glm::dot(p, w));
-    const std::vector<glm::dvec2> hull = hull_2d(std::move(flat));
+    const std::vector<glm::dvec2> hull = convex_hull(std::move(flat));
     Obb best = box_along(u, w, distinct);
     for (std::size_t i = 0; hull.size() >= 3 && i < hull.size(); ++i) {
         const glm::dvec2 e = hull[(i + 1) % hull.size()] - hull[i];
