@@ -48,8 +48,6 @@ Vec3 ViewPlane::point(const Vec2& at, double z) const {
 
 // ── hulls and proxies ───────────────────────────────────────────────────────────────────────────────────────
 namespace {
-double cross(const Vec2& o, const Vec2& a, const Vec2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
 double area(const std::vector<Vec2>& p) {
     double a = 0;
     for (std::size_t i = 0; i < p.size(); ++i) a += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
@@ -122,7 +120,7 @@ namespace {
 // The part of a convex polygon on the left of the directed line a → b (keep_left) or on its right.
 std::vector<Vec2> clip_to_side(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& b, bool keep_left) {
     std::vector<Vec2> out;
-    const auto side = [&](const Vec2& p) { return keep_left ? cross(a, b, p) : -cross(a, b, p); };
+    const auto side = [&](const Vec2& p) { return keep_left ? orientation(a, b, p) : -orientation(a, b, p); };
     for (std::size_t i = 0; i < poly.size(); ++i) {
         const Vec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
         const double sp = side(p), sq = side(q);

@@ -7,11 +7,11 @@
 #include <string>
 
 #include "core/numeric.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 namespace {
 
-double cross(glm::dvec2 p, glm::dvec2 q) { return p.x * q.y - p.y * q.x; }
 bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 }  // namespace

@@ -7,11 +7,11 @@
 #include <glm/geometric.hpp>
 
 #include "core/numeric.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 namespace {
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Okabe–Ito, a colour per cell; walls light, floors dark.
 Color cell_color(std::size_t cell, bool floor) {

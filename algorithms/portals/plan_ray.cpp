@@ -3,10 +3,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/polygon_2d.h"
+
 namespace hsr::algo {
 namespace {
 
-double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Where the line p + t·d leaves a convex outline (counter-clockwise: it leaves where it crosses an edge rightwards);
 // 1e300 when it crosses none.

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/polygon_2d.h"
+
 namespace hsr::algo {
 namespace {
 
@@ -28,9 +30,10 @@ bool inside(const Vec3& p, std::span<const Vec3> polygon, const Vec3& normal) {
 std::optional<double> hit(const Ray& ray, std::span<const Vec3> polygon, const Plane& plane) {
     if (polygon.size() == 2) {  // a 2D segment: solve origin + t·dir = a + s·(b − a) in the plane z = 0
         const Vec3 a = polygon[0], e = polygon[1] - polygon[0], d = ray.direction, w = a - ray.origin;
-        const double den = d.x * e.y - d.y * e.x;
+        const glm::dvec2 d2(d), e2(e), w2(w);
+        const double den = cross(d2, e2);
         if (den == 0) return std::nullopt;
-        const double t = (w.x * e.y - w.y * e.x) / den, s = (w.x * d.y - w.y * d.x) / den;
+        const double t = cross(w2, e2) / den, s = cross(w2, d2) / den;
         if (t > 0 && s >= 0 && s <= 1) return t;
         return std::nullopt;
     }

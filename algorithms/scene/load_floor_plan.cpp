@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/polygon_2d.h"
+
 namespace hsr::algo {
 namespace {
 
@@ -16,7 +18,7 @@ bool winds_once(const std::vector<glm::dvec2>& p) {
     for (std::size_t i = 0; i < p.size(); ++i) {
         const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
         const glm::dvec2 u = b - a, w = c - b;
-        turned += std::atan2(u.x * w.y - u.y * w.x, u.x * w.x + u.y * w.y);
+        turned += std::atan2(cross(u, w), u.x * w.x + u.y * w.y);
     }
     return std::abs(turned) < 3 * M_PI;
 }
@@ -27,7 +29,7 @@ bool convex_with_area(const std::vector<glm::dvec2>& p, double eps) {
     double sign = 0, area = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
-        const double turn = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+        const double turn = cross(b - a, c - b);
         if (std::abs(turn) <= eps) return false;
         if (sign != 0 && (turn > 0) != (sign > 0)) return false;
         sign = turn;
@@ -48,7 +50,6 @@ glm::dvec2 point2(const TomlReader& r, const toml::node& n, const std::string& f
     return p;
 }
 
-double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Distance from p to the segment ab.
 double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
