@@ -11,6 +11,7 @@
 #include "core/numeric.h"
 #include "core/overloaded.h"
 #include "core/phrase.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 namespace {
@@ -26,13 +27,9 @@ std::optional<double> screen_area(const Face& f, const glm::dmat4& view_projecti
     // clipped at the near plane (and the rest of the volume) before the divide, so w > 0 for every vertex
     const PolygonClip visible = sutherland_hodgman(clip, {.space = ClipSpace::homogeneous}).run_to_end();
     if (visible.vertices.size() < 3) return std::nullopt;
-    double twice = 0;
-    for (std::size_t i = 0; i < visible.vertices.size(); ++i) {
-        const Vec4& a = visible.vertices[i];
-        const Vec4& b = visible.vertices[(i + 1) % visible.vertices.size()];
-        twice += (a.x / a.w) * (b.y / b.w) - (b.x / b.w) * (a.y / a.w);
-    }
-    return 0.5 * twice;
+    std::vector<glm::dvec2> on_screen;
+    for (const Vec4& v : visible.vertices) on_screen.emplace_back(v.x / v.w, v.y / v.w);
+    return 0.5 * twice_signed_area(on_screen);
 }
 
 Steps<CullEvent, std::vector<std::int32_t>> cull_machine(std::vector<Face> faces, Camera camera, BackfaceTest test,

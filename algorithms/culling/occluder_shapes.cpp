@@ -48,18 +48,13 @@ Vec3 ViewPlane::point(const Vec2& at, double z) const {
 
 // ── hulls and proxies ───────────────────────────────────────────────────────────────────────────────────────
 namespace {
-double area(const std::vector<Vec2>& p) {
-    double a = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) a += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
-    return a / 2;
-}
 double perimeter(const std::vector<Vec2>& p) {
     double s = 0;
     for (std::size_t i = 0; i < p.size(); ++i) s += glm::length(p[(i + 1) % p.size()] - p[i]);
     return s;
 }
 // Thinner than `gap` everywhere: twice the area over the perimeter is about the width of a long thin piece.
-bool thinner_than(const std::vector<Vec2>& p, double gap) { return p.size() < 3 || 2 * std::abs(area(p)) <= gap * perimeter(p); }
+bool thinner_than(const std::vector<Vec2>& p, double gap) { return p.size() < 3 || 2 * std::abs(signed_area(p)) <= gap * perimeter(p); }
 }  // namespace
 
 std::optional<std::vector<Vec3>> proxy_of(std::span<const Vec3> vertices, const ViewPlane& view) {
@@ -74,7 +69,7 @@ std::optional<std::vector<Vec3>> proxy_of(std::span<const Vec3> vertices, const 
         far = std::max(far, z);
     }
     const std::vector<Vec2> hull = convex_hull(std::move(images));
-    if (hull.size() < 3 || !(area(hull) > 0) || !std::isfinite(far)) return std::nullopt;
+    if (hull.size() < 3 || !(signed_area(hull) > 0) || !std::isfinite(far)) return std::nullopt;
     std::vector<Vec3> out;
     for (const Vec2& at : hull) out.push_back(view.point(at, far));
     return out;
@@ -133,7 +128,7 @@ std::vector<Vec2> clip_to_side(const std::vector<Vec2>& poly, const Vec2& a, con
 
 Coverage covered_by_union(const std::vector<Vec2>& image, std::span<const std::vector<Vec2>> covers, double gap, std::size_t max_pieces) {
     Coverage c;
-    if (thinner_than(image, gap)) return {false, 0, std::abs(area(image))};  // nothing to cover is no proof of being hidden
+    if (thinner_than(image, gap)) return {false, 0, std::abs(signed_area(image))};  // nothing to cover is no proof of being hidden
     std::vector<std::vector<Vec2>> left{image};  // what no cover has taken yet, in convex pieces
     for (const std::vector<Vec2>& cover : covers) {
         if (left.empty()) break;
@@ -159,7 +154,7 @@ Coverage covered_by_union(const std::vector<Vec2>& image, std::span<const std::v
         left = std::move(next);
         if (left.size() > max_pieces) break;
     }
-    for (const auto& piece : left) c.area_left += std::abs(area(piece));
+    for (const auto& piece : left) c.area_left += std::abs(signed_area(piece));
     c.covered = left.empty();
     return c;
 }

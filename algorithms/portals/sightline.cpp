@@ -6,22 +6,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/polygon_2d.h"
+
 namespace hsr::algo {
 namespace {
 
 constexpr double max_slope = 1000;
-
-// The shoelace formula about the first vertex, not the origin: a sliver of line space far from (0, 0) (lines through
-// openings 1e-9 wide) has an area below the rounding of products taken about the origin.
-double polygon_area(const std::vector<glm::dvec2>& p) {
-    if (p.size() < 3) return 0;
-    double twice = 0;
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-        const glm::dvec2 a = p[i] - p[0], b = p[i + 1] - p[0];
-        twice += a.x * b.y - a.y * b.x;
-    }
-    return std::abs(twice) / 2;
-}
 
 }  // namespace
 
@@ -33,7 +23,7 @@ Sightlines::Sightlines(const PortalEnds& first) {
     across_ = {along_.y, -along_.x};  // along is across rotated a quarter turn left: left is +y'
     const double t = width_ / 2;
     polygon_ = {{-max_slope, -t}, {max_slope, -t}, {max_slope, t}, {-max_slope, t}};
-    area_ = polygon_area(polygon_);
+    area_ = area_about_first_vertex(polygon_);
 }
 
 // A point (x, y) in the first portal's frame is left of the line y' = s·x' + t when y − s·x − t > 0: a
@@ -48,7 +38,7 @@ void Sightlines::keep(double x, double y, bool left) {
         if ((va >= 0) != (vb >= 0)) out.push_back(a + (b - a) * (va / (va - vb)));
     }
     polygon_ = std::move(out);
-    area_ = polygon_area(polygon_);
+    area_ = area_about_first_vertex(polygon_);  // a sliver of line space far from (0, 0) may be 1e-9 wide
 }
 
 bool Sightlines::through(const PortalEnds& next) {

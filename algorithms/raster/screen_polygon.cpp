@@ -10,16 +10,10 @@
 #include "core/numeric.h"
 #include "core/parallel.h"
 #include "core/plane.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 namespace {
-
-// Twice the signed area in sub-pixel units²; positive when clockwise on the screen (y down).
-std::int64_t twice_area(const std::vector<ScreenVertex>& v) {
-    std::int64_t sum = 0;
-    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) sum += v[j].x * v[i].y - v[i].x * v[j].y;
-    return sum;
-}
 
 // The turn at b from edge a→b to edge b→c (twice the signed area of the triangle a, b, c).
 std::int64_t turn(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
@@ -55,7 +49,7 @@ void keep_convex(std::vector<ScreenVertex>& v, std::int64_t area) {
     }
     std::vector<ScreenVertex> corners;
     for (std::size_t i : hull) corners.push_back(v[i]);
-    if ((twice_area(corners) > 0) != (area > 0)) std::reverse(hull.begin(), hull.end());
+    if ((twice_signed_area(corners) > 0) != (area > 0)) std::reverse(hull.begin(), hull.end());
     std::rotate(hull.begin(), std::min_element(hull.begin(), hull.end()), hull.end());
     corners.clear();
     for (std::size_t i : hull) corners.push_back(v[i]);
@@ -166,7 +160,7 @@ ScreenPolygon project_polygon(SceneId id, Color color, std::span<const glm::dvec
         out.vertices.pop_back();
         exact.pop_back();
     }
-    const std::int64_t area = out.vertices.size() < 3 ? 0 : twice_area(out.vertices);
+    const std::int64_t area = twice_signed_area(out.vertices);  // sub-pixels², > 0 clockwise on the screen (y down)
     if (area == 0) {
         out.status = ScreenStatus::zero_area;
         return out;

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/numeric.h"
+#include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
 namespace {
@@ -50,15 +51,6 @@ std::vector<glm::dvec2> keep_below(const std::vector<glm::dvec2>& poly, double c
         if ((hp < 0 && hq > 0) || (hp > 0 && hq < 0)) out.push_back(p + (q - p) * (hp / (hp - hq)));
     }
     return out;
-}
-
-double area(const std::vector<glm::dvec2>& poly) {
-    double a = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::dvec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
-        a += p.x * q.y - q.x * p.y;
-    }
-    return std::abs(a) / 2;
 }
 
 }  // namespace

@@ -26,16 +26,15 @@ bool winds_once(const std::vector<glm::dvec2>& p) {
 // Points in order round a convex polygon with area (either way round; no three in a row).
 bool convex_with_area(const std::vector<glm::dvec2>& p, double eps) {
     if (p.size() < 3 || !winds_once(p)) return false;
-    double sign = 0, area = 0;
+    double sign = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const glm::dvec2 a = p[i], b = p[(i + 1) % p.size()], c = p[(i + 2) % p.size()];
         const double turn = cross(b - a, c - b);
         if (std::abs(turn) <= eps) return false;
         if (sign != 0 && (turn > 0) != (sign > 0)) return false;
         sign = turn;
-        area += a.x * b.y - b.x * a.y;
     }
-    return std::abs(area) > eps;
+    return std::abs(twice_signed_area(p)) > eps;
 }
 
 glm::dvec2 point2(const TomlReader& r, const toml::node& n, const std::string& field) {
@@ -98,9 +97,7 @@ SceneCell read_cell(const TomlReader& r, const toml::table& t, const std::string
         const toml::array* a = r.array(t, "outline", f, true);
         for (std::size_t i = 0; i < a->size(); ++i) c.outline.push_back(point2(r, *a->get(i), index(join(f, "outline"), i)));
         if (c.outline.size() < 3) r.fail(t.get("outline"), join(f, "outline"), "a cell needs at least 3 corners");
-        double area = 0;
-        for (std::size_t i = 0; i < c.outline.size(); ++i) area += cross(c.outline[i], c.outline[(i + 1) % c.outline.size()]);
-        if (area < 0) std::reverse(c.outline.begin(), c.outline.end());  // counter-clockwise, whichever way it was written
+        if (twice_signed_area(c.outline) < 0) std::reverse(c.outline.begin(), c.outline.end());  // counter-clockwise, whichever way it was written
         for (std::size_t i = 0; i < c.outline.size(); ++i) {
             const glm::dvec2 a0 = c.outline[i], a1 = c.outline[(i + 1) % c.outline.size()], a2 = c.outline[(i + 2) % c.outline.size()];
             if (cross(a1 - a0, a2 - a1) <= 0)
