@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "culling/bounding_volume.h"
+#include "geometry/half_space_cut.h"
 
 
 namespace hsr::algo {
@@ -114,15 +115,7 @@ std::vector<std::vector<std::uint32_t>> convex_solids(const Scene& scene) {
 namespace {
 // The part of a convex polygon on the left of the directed line a → b (keep_left) or on its right.
 std::vector<Vec2> clip_to_side(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& b, bool keep_left) {
-    std::vector<Vec2> out;
-    const auto side = [&](const Vec2& p) { return keep_left ? orientation(a, b, p) : -orientation(a, b, p); };
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const Vec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
-        const double sp = side(p), sq = side(q);
-        if (sp >= 0) out.push_back(p);
-        if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) out.push_back(p + (q - p) * (sp / (sp - sq)));
-    }
-    return out;
+    return cut_polygon(poly, [&](const Vec2& p) { return keep_left ? orientation(a, b, p) : -orientation(a, b, p); });
 }
 }  // namespace
 

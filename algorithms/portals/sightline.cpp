@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/half_space_cut.h"
 #include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
@@ -30,14 +31,7 @@ Sightlines::Sightlines(const PortalEnds& first) {
 // half-plane t + x·s < y of line space (right: t + x·s > y). Sutherland–Hodgman against it.
 void Sightlines::keep(double x, double y, bool left) {
     const auto value = [&](glm::dvec2 st) { return left ? y - (st.y + x * st.x) : (st.y + x * st.x) - y; };
-    std::vector<glm::dvec2> out;
-    for (std::size_t i = 0; i < polygon_.size(); ++i) {
-        const glm::dvec2 a = polygon_[i], b = polygon_[(i + 1) % polygon_.size()];
-        const double va = value(a), vb = value(b);
-        if (va >= 0) out.push_back(a);
-        if ((va >= 0) != (vb >= 0)) out.push_back(a + (b - a) * (va / (va - vb)));
-    }
-    polygon_ = std::move(out);
+    polygon_ = cut_polygon(polygon_, value, {.crossing = Crossing::sign_change});
     area_ = area_about_first_vertex(polygon_);  // a sliver of line space far from (0, 0) may be 1e-9 wide
 }
 

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/half_space_cut.h"
+
 namespace hsr::algo {
 namespace {
 
@@ -46,15 +48,7 @@ void add_candidates(const std::vector<Vec3>& edges_of, const std::vector<Vec3>& 
 // portal_render's clip_poly: that drops slivers with no area to speak of, and here a sliver may be a real band of
 // sightlines 1e-9 wide; the test must keep it to stay conservative.)
 std::vector<Vec3> clip(const std::vector<Vec3>& poly, const Plane& pl, double tol) {
-    std::vector<Vec3> out;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const Vec3& s = poly[i];
-        const Vec3& e = poly[(i + 1) % poly.size()];
-        const double ds = pl.distance(s) + tol, de = pl.distance(e) + tol;
-        if (ds >= 0) out.push_back(s);
-        if ((ds >= 0) != (de >= 0)) out.push_back(s + (e - s) * (ds / (ds - de)));
-    }
-    return out;
+    return cut_polygon(poly, [&](const Vec3& p) { return pl.distance(p) + tol; }, {.crossing = Crossing::sign_change});
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "core/numeric.h"
+#include "geometry/half_space_cut.h"
 #include "geometry/polygon_2d.h"
 
 namespace hsr::algo {
@@ -39,19 +40,6 @@ struct Groups {
     }
     void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
-
-// One half-plane cut of a convex polygon in the (t, s) plane: keep where c0 + ct·t + cs·s ≤ 0.
-std::vector<glm::dvec2> keep_below(const std::vector<glm::dvec2>& poly, double c0, double ct, double cs) {
-    std::vector<glm::dvec2> out;
-    const auto h = [&](const glm::dvec2& p) { return c0 + ct * p.x + cs * p.y; };
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::dvec2 &p = poly[i], &q = poly[(i + 1) % poly.size()];
-        const double hp = h(p), hq = h(q);
-        if (hp <= 0) out.push_back(p);
-        if ((hp < 0 && hq > 0) || (hp > 0 && hq < 0)) out.push_back(p + (q - p) * (hp / (hp - hq)));
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -151,7 +139,7 @@ std::optional<std::pair<double, double>> hidden_part(const Camera& camera, const
         if (!plane_of(v, plane)) continue;
         if (plane.distance(centre) > 0) plane = {-plane.n, -plane.d};
         const double c0 = glm::dot(plane.n, na) + plane.d + eps, ct = glm::dot(plane.n, d), cs = glm::dot(plane.n, toward_eye);
-        region = keep_below(region, c0, ct, cs);
+        region = cut_polygon(region, [&](glm::dvec2 p) { return -(c0 + ct * p.x + cs * p.y); });  // keep c0 + ct·t + cs·s ≤ 0
         if (region.size() < 3) return std::nullopt;
     }
     if (area(region) <= 1e-18) return std::nullopt;

@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/half_space_cut.h"
+
 namespace hsr::algo {
 
 namespace {
@@ -23,19 +25,7 @@ bool clip_slab(double lo, double hi, double n_o, double n_d, double& t0, double&
 // A convex polygon's part on the side n·x ≤ c (Sutherland–Hodgman against one plane); the points made on the plane
 // are added to `cut`.
 std::vector<Vec3> clip_face(const std::vector<Vec3>& face, const Vec3& n, double c, std::vector<Vec3>& cut) {
-    std::vector<Vec3> out;
-    for (std::size_t i = 0; i < face.size(); ++i) {
-        const Vec3 &p = face[i], &q = face[(i + 1) % face.size()];
-        const double dp = glm::dot(n, p) - c, dq = glm::dot(n, q) - c;
-        if (dp <= 0) out.push_back(p);
-        if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) {
-            const Vec3 x = p + (q - p) * (dp / (dp - dq));
-            out.push_back(x);
-            cut.push_back(x);
-        } else if (dp == 0) {
-            cut.push_back(p);
-        }
-    }
+    std::vector<Vec3> out = cut_polygon(face, [&](const Vec3& p) { return c - glm::dot(n, p); }, {.on_boundary = &cut});
     return out.size() >= 3 ? out : std::vector<Vec3>{};
 }
 
