@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/union_find.h"
+
 namespace hsr::algo {
 
 void Aabb::add(const Vec3& p) { lo = glm::min(lo, p), hi = glm::max(hi, p); }
@@ -71,13 +73,7 @@ std::optional<double> void_fraction(double bounding_volume, double object_volume
 }
 
 std::vector<std::vector<std::size_t>> connected_objects(std::span<const std::vector<Vec3>> polygons) {
-    // union–find over the polygons, joined by any vertex they share
-    std::vector<std::size_t> parent(polygons.size());
-    for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
-    const auto root = [&](std::size_t k) {
-        while (parent[k] != k) k = parent[k] = parent[parent[k]];
-        return k;
-    };
+    UnionFind groups(polygons.size());  // over the polygons, joined by any vertex they share
     struct PointHash {
         std::size_t operator()(const std::array<double, 3>& p) const {
             std::size_t h = 0;
@@ -89,12 +85,12 @@ std::vector<std::vector<std::size_t>> connected_objects(std::span<const std::vec
     for (std::size_t k = 0; k < polygons.size(); ++k)
         for (const Vec3& v : polygons[k]) {
             const auto [at, fresh] = first_with.emplace(std::array<double, 3>{v.x, v.y, v.z}, k);
-            if (!fresh) parent[root(k)] = root(at->second);
+            if (!fresh) groups.join(k, at->second);
         }
     std::map<std::size_t, std::size_t> object_of_root;
     std::vector<std::vector<std::size_t>> objects;
     for (std::size_t k = 0; k < polygons.size(); ++k) {
-        const auto [at, fresh] = object_of_root.emplace(root(k), objects.size());
+        const auto [at, fresh] = object_of_root.emplace(groups.find(k), objects.size());
         if (fresh) objects.emplace_back();
         objects[at->second].push_back(k);
     }

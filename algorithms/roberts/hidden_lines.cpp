@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <string>
 #include <tuple>
 
@@ -13,6 +12,7 @@
 #include "core/numeric.h"
 #include "geometry/half_space_cut.h"
 #include "geometry/polygon_2d.h"
+#include "geometry/union_find.h"
 
 namespace hsr::algo {
 namespace {
@@ -28,17 +28,6 @@ std::vector<Vec3> face_vertices(const Scene& scene, std::uint32_t face) {
 // Vertices ordered by their coordinates, so that equal points are one key.
 struct ByCoordinates {
     bool operator()(const Vec3& a, const Vec3& b) const { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
-};
-
-// Union–find over the polygons, for bodies of faces that share edges.
-struct Groups {
-    std::vector<std::uint32_t> parent;
-    explicit Groups(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
 }  // namespace
@@ -72,7 +61,7 @@ LineDrawingInput convex_bodies(const Scene& scene) {
             ends.emplace(key, std::pair{a, b});
         }
     }
-    Groups groups(n);
+    UnionFind groups(n);  // over the polygons: bodies of faces that share edges
     for (const auto& [key, faces] : faces_of) {
         if (faces.size() != 2)
             throw InvalidInput(name(faces.front()) + (faces.size() < 2 ? ": an edge with no second face (Roberts' bodies are closed)"
@@ -80,7 +69,7 @@ LineDrawingInput convex_bodies(const Scene& scene) {
         groups.join(faces[0], faces[1]);
     }
     LineDrawingInput out;
-    std::map<std::uint32_t, std::uint32_t> body_of_root;
+    std::map<std::size_t, std::uint32_t> body_of_root;
     std::vector<std::uint32_t> body_of(n);
     for (std::uint32_t f = 0; f < n; ++f) {
         const auto [it, added] = body_of_root.emplace(groups.find(f), std::uint32_t(out.bodies.size()));
