@@ -23,7 +23,7 @@ constexpr Saying compared{"scanline.compared",
 constexpr Saying pierced{"scanline.pierced",
                          "Polygons #{was} and #{now} pierce each other at x = {x}, before the next intersection: an extra intersection there, and #{now} is nearer from pixel {pixel} on."};
 constexpr Saying background{"scanline.background", "Line {y}, pixels {first} to {last}: background."};
-constexpr Saying coloured{"scanline.coloured", "Line {y}, pixels {first} to {last}: polygon {id}."};
+constexpr Saying coloured{"scanline.coloured", "Line {y}, pixels {first} to {last}: polygon #{polygon}."};
 constexpr Saying done{"scanline.done", "Done: {lines} scan lines, {spans} spans."};
 constexpr Saying bound{"scanline.bound", "Stopped: the step bound of {limit} edge crossings was reached."};
 constexpr Saying all[] = {table, line, entered, left, in, out, classic_out, compared, pierced, background, coloured, done, bound};
@@ -55,7 +55,7 @@ Phrase phrase(const ScanLineEvent& event) {
             },
             [&](const SpanColored& e) {
                 return Phrase(e.polygon < 0 ? say::background : say::coloured,
-                              {{"y", n(e.y)}, {"first", n(e.x_begin)}, {"last", n(e.x_end - 1)}, {"id", n(e.id)}});
+                              {{"y", n(e.y)}, {"first", n(e.x_begin)}, {"last", n(e.x_end - 1)}, {"polygon", n(e.polygon)}});
             },
             [&](const ScanFinished& e) { return Phrase(say::done, {{"lines", n(e.lines)}, {"spans", n(e.spans)}}); },
             [&](const ScanStepBoundReached& e) { return Phrase(say::bound, {{"limit", n(e.max_crossings)}}); },

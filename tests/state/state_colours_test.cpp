@@ -67,6 +67,6 @@ TEST_CASE("the culling boxes' states are told apart under every colour blindness
     every_pair_apart(culling_colours::all, 15);
 }
 
-TEST_CASE("the portal plan's cells (the eye's, visited, in the PVS, out of it) are told apart under every colour blindness", "[colours]") {
+TEST_CASE("the portal plan's cells (the one being drawn, visited, in the PVS, out of it) are told apart under every colour blindness", "[colours]") {
     every_pair_apart(portal_cell_colours::all, 15);
 }

@@ -45,6 +45,12 @@ std::string machine_name(algo::CullingMachine m) {
 // One row per stage that ran; the stages the lesson's pipeline did not need are named on one line under the table
 // (a row of dashes for each kept the lesson's result below the column's fold).
 void pipeline_table(const CullingView& v) {
+    // the whole pipeline's figures are the lesson's result: shown once its machine has run, not at its first step
+    // (where they would answer the questions on the way)
+    if (!v.done) {
+        wrapped_text(tr("culling.pipeline_later"), dim_text);
+        return;
+    }
     std::string not_needed;
     for (const algo::StageReport& r : v.world->pipeline)
         if (!r.ran) not_needed += (not_needed.empty() ? "" : ", ") + stage_name(r.stage);

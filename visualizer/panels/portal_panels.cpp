@@ -91,7 +91,7 @@ void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
     const auto n = v.world->pvs.cells;
     draw_plan(d, f, m, [&](std::uint32_t c) {
         if (v.source < 0) return cell_colour(portal_cell_colours::out_of_pvs);
-        if (std::int32_t(c) == v.source) return cell_colour(portal_cell_colours::eye);
+        if (std::int32_t(c) == v.source) return cell_colour(portal_cell_colours::being_drawn);
         return cell_colour(v.matrix[std::size_t(v.source) * n + c] ? portal_cell_colours::in_pvs : portal_cell_colours::out_of_pvs);
     });
     for (std::uint32_t k : v.sequence) {
@@ -109,7 +109,7 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     std::vector<std::uint8_t> in_pvs(m.cells.size(), 0);
     for (std::uint32_t c : v.pvs_row) in_pvs[c] = 1;
     draw_plan(d, f, m, [&](std::uint32_t c) {
-        if (std::int32_t(c) == v.cell) return cell_colour(portal_cell_colours::eye);
+        if (std::int32_t(c) == v.cell) return cell_colour(portal_cell_colours::being_drawn);
         if (v.visited[c]) return cell_colour(portal_cell_colours::visited);
         return cell_colour(in_pvs[c] ? portal_cell_colours::in_pvs : portal_cell_colours::out_of_pvs);
     });
@@ -187,7 +187,7 @@ void end_plan_canvas(float x, float y, float plan_h, const char* caption, std::s
 }
 
 // The PVS lesson's cells: the source cell in the eye's colour, the cells of its PVS, the others.
-constexpr std::array pvs_legend{StateColour{"portals.cell_source", portal_cell_colours::eye.r, portal_cell_colours::eye.g, portal_cell_colours::eye.b},
+constexpr std::array pvs_legend{StateColour{"portals.cell_source", portal_cell_colours::being_drawn.r, portal_cell_colours::being_drawn.g, portal_cell_colours::being_drawn.b},
                                 portal_cell_colours::in_pvs, portal_cell_colours::out_of_pvs};
 
 }  // namespace

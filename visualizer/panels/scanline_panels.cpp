@@ -137,7 +137,7 @@ void tables(const ScanLineSession& s, UiActions& out) {
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);
     // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first)
-    const std::string headers[] = {tr("scanline.edge"), tr("scanline.polygon"), tr("scanline.lines"), tr("scanline.side"), tr("scanline.in_out")};
+    const std::string headers[] = {tr("scanline.edge"), tr("scanline.polygon"), tr("scanline.lines"), tr("scanline.side"), tr("scanline.polygon_now")};
     const std::string left = tr("scanline.left"), right = tr("scanline.right"), in = tr("scanline.in");
     const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
     const float widths[] = {std::max(width(headers[0]), width("000")), std::max(width(headers[1]), width("#000")),

@@ -288,7 +288,7 @@ const Pseudocode<HierarchyCullEvent> frustum_lines = {
 };
 const Pseudocode<OcclusionEvent> occluder_lines = {
     {"choose occluders (polygons, proxies, solids):", {}},
-    {"  f = -A (n . v) / |v|^2, the best first", {step<OccluderChosen>()}},
+    {"  f = -A (n . v/|v|) / |v|^2 (n of unit length), the best first", {step<OccluderChosen>()}},
     {"occlusion frustum: eye and the occluder's edges, and its plane", {}},
     {"Cull(node):", {}},
     {"  wholly inside one occlusion frustum: cull node and subtree", {step<OcclusionTested>([](const OcclusionTested& e) { return e.node >= 0 && e.outcome == OcclusionOutcome::occluded && !e.fused; }), micro<OcclusionTested>([](const OcclusionTested& e) { return e.outcome == OcclusionOutcome::occluded && !e.fused; })}},

@@ -31,11 +31,11 @@ inline constexpr StateColour large_enough{"culling.mark_large_enough", partial.r
 }  // namespace culling_colours
 
 namespace portal_cell_colours {  // the floor plan's cells while portal_render runs (and the PVS's source cell)
-inline constexpr StateColour eye{"portals.cell_eye", 0.471f, 0.431f, 0.157f};          // dark yellow
+inline constexpr StateColour being_drawn{"portals.cell_eye", 0.471f, 0.431f, 0.157f};  // dark yellow: the cell visited now (the PVS: the source)
 inline constexpr StateColour visited{"portals.cell_visited", 0.078f, 0.451f, 0.345f};  // dark green
 inline constexpr StateColour in_pvs{"portals.cell_in_pvs", 0.275f, 0.322f, 0.408f};    // grey-blue
 inline constexpr StateColour out_of_pvs{"portals.cell_out", 0.141f, 0.149f, 0.169f};   // nearly the background
-inline constexpr std::array all{eye, visited, in_pvs, out_of_pvs};
+inline constexpr std::array all{being_drawn, visited, in_pvs, out_of_pvs};
 }  // namespace portal_cell_colours
 
 }  // namespace hsr::viz
