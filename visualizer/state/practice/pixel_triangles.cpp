@@ -6,14 +6,16 @@
 
 #include <glm/geometric.hpp>
 
+#include "geometry/polygon_2d.h"
+
 namespace hsr::viz::practice {
 namespace {
 
 using glm::dvec2;
 constexpr double eye_z = 10;  // the camera's; a triangle at world z is at distance 10 − z
 
-// The signed area of (a, b, p), in pixels²: which side of the edge a → b the point p is on.
-double edge(dvec2 a, dvec2 b, dvec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+// Which side of the edge a → b the point p is on: orientation(a, b, p), twice the signed area of (a, b, p) in pixels².
+using algo::orientation;
 
 }  // namespace
 
@@ -25,7 +27,7 @@ std::optional<std::vector<PixelTriangle>> draw_pixel_triangles(Dice& d, Level l)
     for (int k = 0; k < count; ++k) {
         PixelTriangle tri{};
         for (dvec2& c : tri.corner) c = {d.grid(1, pixel_grid.width - 1, 1), d.grid(1, pixel_grid.height - 1, 1)};
-        if (std::abs(edge(tri.corner[0], tri.corner[1], tri.corner[2])) < 40) return std::nullopt;  // at least 20 px²
+        if (std::abs(orientation(tri.corner[0], tri.corner[1], tri.corner[2])) < 40) return std::nullopt;  // at least 20 px²
         tri.depth = depths[std::size_t(k)];
         t.push_back(tri);
     }
@@ -60,14 +62,15 @@ algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles) {
 }
 
 bool covers(const PixelTriangle& t, dvec2 p) {
-    const double e0 = edge(t.corner[0], t.corner[1], p), e1 = edge(t.corner[1], t.corner[2], p), e2 = edge(t.corner[2], t.corner[0], p);
+    const double e0 = orientation(t.corner[0], t.corner[1], p), e1 = orientation(t.corner[1], t.corner[2], p),
+                 e2 = orientation(t.corner[2], t.corner[0], p);
     return (e0 > 0 && e1 > 0 && e2 > 0) || (e0 < 0 && e1 < 0 && e2 < 0);
 }
 
 bool near_an_edge(const PixelTriangle& t, dvec2 p) {
     for (int k = 0; k < 3; ++k) {
         const dvec2 a = t.corner[k], b = t.corner[(k + 1) % 3];
-        if (std::abs(edge(a, b, p)) / glm::length(b - a) < 0.1) return true;
+        if (std::abs(orientation(a, b, p)) / glm::length(b - a) < 0.1) return true;
     }
     return false;
 }
