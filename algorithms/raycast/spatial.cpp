@@ -102,18 +102,10 @@ Box bounds_of(const std::vector<std::vector<Vec3>>& polygons) {
 }
 
 std::optional<Interval> ray_box(const Ray& ray, const Box& box, double t0, double t1) {
-    for (int a = 0; a < 3; ++a) {
-        const double o = ray.origin[a], d = ray.direction[a];
-        if (d == 0) {  // parallel to this slab: inside it or never
-            if (o < box.lo[a] || o > box.hi[a]) return std::nullopt;
-            continue;
-        }
-        double near = (box.lo[a] - o) / d, far = (box.hi[a] - o) / d;
-        if (near > far) std::swap(near, far);
-        t0 = std::max(t0, near), t1 = std::min(t1, far);
-        if (t0 > t1) return std::nullopt;
-    }
-    return Interval{t0, t1};
+    Interval t{t0, t1};
+    for (int a = 0; a < 3; ++a)
+        if (!narrow_to_slab(t, box.lo[a], box.hi[a], ray.origin[a], ray.direction[a])) return std::nullopt;
+    return t;
 }
 
 Grid build_grid(const std::vector<std::vector<Vec3>>& polygons, int per_axis) {

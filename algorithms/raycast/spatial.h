@@ -14,6 +14,7 @@
 
 #include "core/plane.h"
 #include "core/steps.h"
+#include "geometry/interval.h"
 #include "raycast/nearest_hit.h"
 #include "raycast/raycast_events.h"
 
@@ -25,9 +26,6 @@ struct Box {
 Box bounds_of(const std::vector<std::vector<Vec3>>& polygons);  // padded, never flat along an axis
 
 // Where the ray is inside the box, within [t0, t1]; axis-parallel rays divide by nothing.
-struct Interval {
-    double enter, exit;
-};
 std::optional<Interval> ray_box(const Ray& ray, const Box& box, double t0, double t1);
 
 struct Grid {

@@ -79,8 +79,8 @@ struct Walk {
 };
 
 // LLIntersectionTest(BoundingBox(M)): the ray against the node's volume, or its hulls outermost first until one misses.
-std::vector<std::pair<std::uint32_t, std::optional<RayInterval>>> test_volumes(const NodeVolume& v, const BoundingOptions& o, const Ray& r) {
-    std::vector<std::pair<std::uint32_t, std::optional<RayInterval>>> tests;
+std::vector<std::pair<std::uint32_t, std::optional<Interval>>> test_volumes(const NodeVolume& v, const BoundingOptions& o, const Ray& r) {
+    std::vector<std::pair<std::uint32_t, std::optional<Interval>>> tests;
     switch (o.volume) {
         case VolumeKind::aabb: tests.emplace_back(6, ray_through(v.box, r.origin, r.direction)); break;
         case VolumeKind::sphere: tests.emplace_back(0, ray_through(v.sphere, r.origin, r.direction)); break;

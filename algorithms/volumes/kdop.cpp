@@ -8,19 +8,12 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/half_space_cut.h"
+#include "geometry/interval.h"
 
 namespace hsr::algo {
 
 namespace {
 
-// The slab test along one direction n: narrow [t0, t1] to where lo ≤ n·(o + t·d) ≤ hi. False when it empties.
-bool clip_slab(double lo, double hi, double n_o, double n_d, double& t0, double& t1) {
-    if (n_d == 0) return n_o >= lo && n_o <= hi;  // parallel to the slab: inside it or never
-    double a = (lo - n_o) / n_d, b = (hi - n_o) / n_d;
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a), t1 = std::min(t1, b);
-    return t0 <= t1;
-}
 
 // A convex polygon's part on the side n·x ≤ c (Sutherland–Hodgman against one plane); the points made on the plane
 // are added to `cut`.
@@ -97,41 +90,41 @@ std::vector<std::vector<Vec3>> kdop_faces(const KDop& dop) {
     return faces;
 }
 
-std::optional<RayInterval> ray_through(const Aabb& box, const Vec3& o, const Vec3& d) {
+std::optional<Interval> ray_through(const Aabb& box, const Vec3& o, const Vec3& d) {
     if (box.empty()) return std::nullopt;
-    double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+    Interval t{0, std::numeric_limits<double>::infinity()};
     for (int a = 0; a < 3; ++a)
-        if (!clip_slab(box.lo[a], box.hi[a], o[a], d[a], t0, t1)) return std::nullopt;
-    return RayInterval{t0, t1};
+        if (!narrow_to_slab(t, box.lo[a], box.hi[a], o[a], d[a])) return std::nullopt;
+    return t;
 }
 
-std::optional<RayInterval> ray_through(const Sphere& s, const Vec3& o, const Vec3& d) {
+std::optional<Interval> ray_through(const Sphere& s, const Vec3& o, const Vec3& d) {
     // |o + t·d − c|² = r²: a·t² + 2b·t + c0 = 0
     const Vec3 m = o - s.centre;
     const double a = glm::dot(d, d), b = glm::dot(m, d), c0 = glm::dot(m, m) - s.radius * s.radius;
-    if (a == 0) return c0 <= 0 ? std::optional(RayInterval{0, 0}) : std::nullopt;
+    if (a == 0) return c0 <= 0 ? std::optional(Interval{0, 0}) : std::nullopt;
     const double disc = b * b - a * c0;
     if (disc < 0) return std::nullopt;
     const double root = std::sqrt(disc);
     const double t0 = (-b - root) / a, t1 = (-b + root) / a;
     if (t1 < 0) return std::nullopt;
-    return RayInterval{std::max(t0, 0.0), t1};
+    return Interval{std::max(t0, 0.0), t1};
 }
 
-std::optional<RayInterval> ray_through(const Obb& box, const Vec3& o, const Vec3& d) {
-    double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+std::optional<Interval> ray_through(const Obb& box, const Vec3& o, const Vec3& d) {
+    Interval t{0, std::numeric_limits<double>::infinity()};
     const Vec3 m = o - box.centre;
     for (int a = 0; a < 3; ++a)
-        if (!clip_slab(-box.half[a], box.half[a], glm::dot(box.axes[std::size_t(a)], m), glm::dot(box.axes[std::size_t(a)], d), t0, t1))
+        if (!narrow_to_slab(t, -box.half[a], box.half[a], glm::dot(box.axes[std::size_t(a)], m), glm::dot(box.axes[std::size_t(a)], d)))
             return std::nullopt;
-    return RayInterval{t0, t1};
+    return t;
 }
 
-std::optional<RayInterval> ray_through(const KDop& dop, const Vec3& o, const Vec3& d) {
-    double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+std::optional<Interval> ray_through(const KDop& dop, const Vec3& o, const Vec3& d) {
+    Interval t{0, std::numeric_limits<double>::infinity()};
     for (std::size_t i = 0; i < dop.directions.size(); ++i)
-        if (!clip_slab(dop.lo[i], dop.hi[i], glm::dot(dop.directions[i], o), glm::dot(dop.directions[i], d), t0, t1)) return std::nullopt;
-    return RayInterval{t0, t1};
+        if (!narrow_to_slab(t, dop.lo[i], dop.hi[i], glm::dot(dop.directions[i], o), glm::dot(dop.directions[i], d))) return std::nullopt;
+    return t;
 }
 
 }  // namespace hsr::algo

@@ -13,6 +13,7 @@
 
 #include "core/plane.h"
 #include "culling/bounding_volume.h"
+#include "geometry/interval.h"
 
 namespace hsr::algo {
 
@@ -32,12 +33,9 @@ std::vector<std::vector<Vec3>> kdop_faces(const KDop& dop);
 
 // Where a ray o + t·d (t ≥ 0) is inside a volume: [t_enter, t_exit], or nothing when it misses. The slab test for
 // boxes and k-DOPs (in the box's own axes for an OBB), the quadratic for a sphere.
-struct RayInterval {
-    double enter, exit;
-};
-std::optional<RayInterval> ray_through(const Aabb& box, const Vec3& o, const Vec3& d);
-std::optional<RayInterval> ray_through(const Sphere& s, const Vec3& o, const Vec3& d);
-std::optional<RayInterval> ray_through(const Obb& box, const Vec3& o, const Vec3& d);
-std::optional<RayInterval> ray_through(const KDop& dop, const Vec3& o, const Vec3& d);
+std::optional<Interval> ray_through(const Aabb& box, const Vec3& o, const Vec3& d);
+std::optional<Interval> ray_through(const Sphere& s, const Vec3& o, const Vec3& d);
+std::optional<Interval> ray_through(const Obb& box, const Vec3& o, const Vec3& d);
+std::optional<Interval> ray_through(const KDop& dop, const Vec3& o, const Vec3& d);
 
 }  // namespace hsr::algo
