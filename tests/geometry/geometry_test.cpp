@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The geometry kernel (algorithms/geometry/): the cross product and turn, the shoelace area in its two forms, the
-// convex hull, the half-space cut of a polygon and union–find, each with its degenerate inputs (fewer than 3
+// convex hull, the half-space cut of a polygon and union–find and the slab test of a ray's interval, each with its degenerate inputs (fewer than 3
 // points, no area, a cut through a vertex, a polygon wholly on one side).
 #include <cstdint>
 #include <vector>
@@ -10,6 +10,7 @@
 
 #include "catch.h"
 #include "geometry/half_space_cut.h"
+#include "geometry/interval.h"
 #include "geometry/polygon_2d.h"
 #include "geometry/union_find.h"
 
@@ -129,4 +130,20 @@ TEST_CASE("Union–find puts joined items in one group and leaves the rest apart
     CHECK(groups.find(4) == 4);
     CHECK(groups.find(5) == 5);
     CHECK(groups.find(0) == groups.find(3));  // join(a, b) puts a's group into b's: 3's root is the root of all
+}
+
+TEST_CASE("The slab test narrows a ray's interval and empties it when the ray misses", "[geometry]") {
+    Interval t{0, 100};
+    CHECK(narrow_to_slab(t, 2, 4, 0, 1));  // o = 0, d = 1: inside for t in [2, 4]
+    CHECK((t.enter == 2 && t.exit == 4));
+    CHECK(narrow_to_slab(t, -6, -3, 0, -2));  // going backwards: [1.5, 3], the ends swapped
+    CHECK((t.enter == 2 && t.exit == 3));
+    Interval parallel{0, 10};
+    CHECK(narrow_to_slab(parallel, 0, 1, 0.5, 0));  // parallel and inside: unchanged
+    CHECK((parallel.enter == 0 && parallel.exit == 10));
+    CHECK_FALSE(narrow_to_slab(parallel, 0, 1, 2, 0));  // parallel and outside
+    Interval touching{0, 10};
+    CHECK(narrow_to_slab(touching, 10, 20, 0, 1));  // meets the slab at its exit: one point left
+    CHECK((touching.enter == 10 && touching.exit == 10));
+    CHECK_FALSE(narrow_to_slab(touching, 11, 20, 0, 1));
 }
