@@ -122,6 +122,20 @@ void extent_bar(ImDrawList* d, const Screen& screen, const SortPolygon& p, bool 
     }
 }
 
+// "#i" on a dark backing at the middle of polygon i's projection: the parts of a cut, which the questions name,
+// are found in the picture by the numbers the chips carry.
+void number_label(ImDrawList* d, const Screen& screen, const SortPolygon& p, std::uint32_t i) {
+    if (p.vertices.empty()) return;
+    double cx = 0, cy = 0;
+    for (const auto& v : p.vertices) cx += v.x, cy += v.y;
+    const ImVec2 c = screen(cx / double(p.vertices.size()), cy / double(p.vertices.size()));
+    const std::string text = "#" + std::to_string(i);
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const ImVec2 a(c.x - size.x / 2 - 2, c.y - size.y / 2 - 1), b(c.x + size.x / 2 + 2, c.y + size.y / 2 + 1);
+    d->AddRectFilled(a, b, IM_COL32(26, 28, 33, 215), 2);
+    d->AddText(ImVec2(a.x + 2, a.y + 1), text_colour, text.c_str());
+}
+
 void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     const DepthSortView& v = s.view();
     d->AddRectFilled(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(26, 28, 33, 255));
@@ -129,10 +143,14 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     d->AddText(ImVec2(screen.o.x, screen.o.y - 20), text_colour, tr("depth_sort.screen_inset").c_str());
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) projection(d, screen, v.polygons[i], 0, IM_COL32(110, 114, 122, 200), 1);
+    if (v.r >= 0 && v.q >= 0) {
+        const SortPolygon &r = v.polygons[std::size_t(v.r)], &q = v.polygons[std::size_t(v.q)];
+        projection(d, screen, r, rgb(r.color, 0.35f), r_colour, 2.5f);
+        projection(d, screen, q, rgb(q.color, 0.35f), q_colour, 2.5f);
+    }
+    for (std::uint32_t i : v.list) number_label(d, screen, v.polygons[i], i);
     if (v.r < 0 || v.q < 0) return;
     const SortPolygon &r = v.polygons[std::size_t(v.r)], &q = v.polygons[std::size_t(v.q)];
-    projection(d, screen, r, rgb(r.color, 0.35f), r_colour, 2.5f);
-    projection(d, screen, q, rgb(q.color, 0.35f), q_colour, 2.5f);
     extent_bar(d, screen, r, true, 6, r_colour);
     extent_bar(d, screen, q, true, 12, q_colour);
     extent_bar(d, screen, r, false, 6, r_colour);

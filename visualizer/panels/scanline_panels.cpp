@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -15,11 +16,54 @@
 
 namespace hsr::viz {
 
+namespace {
+
+constexpr float canvas_margin = 24, canvas_title = 24;  // around the grid; the line above it
+
+// The side of one pixel of the grid when the canvas is w × h points.
+float grid_cell(const ScanView& v, float w, float h) {
+    return std::max(2.0f, std::min((w - 2 * canvas_margin) / float(v.viewport.width),
+                                   (h - 2 * canvas_margin - canvas_title) / float(v.viewport.height)));
+}
+
+// "#k" on a dark backing inside polygon k, in the polygon's colour: the name the tables, the narration and the
+// questions use, found in the picture. At the middle of its outline, or, where an earlier label sits there (two
+// crossing triangles share a middle), part way towards one of its corners.
+void polygon_number(ImDrawList* d, ImVec2 o, float cell, const algo::ScreenPolygon& p, std::size_t k, std::vector<ImVec4>& taken) {
+    if (p.status != algo::ScreenStatus::drawn || p.vertices.empty()) return;
+    std::vector<ImVec2> corners;
+    ImVec2 c(0, 0);
+    for (const auto& q : p.vertices) {
+        corners.push_back(on_grid(o, cell, q));
+        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
+    }
+    std::vector<ImVec2> candidates{c};
+    for (const float t : {0.4f, 0.6f})
+        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
+    const std::string text = "#" + std::to_string(k);
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 3, at.y - size.y / 2 - 1, at.x + size.x / 2 + 3, at.y + size.y / 2 + 1); };
+    const auto free = [&](const ImVec4& b) {
+        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
+    };
+    ImVec4 b = box(c);
+    for (const ImVec2& at : candidates)
+        if (free(box(at))) {
+            b = box(at);
+            break;
+        }
+    taken.push_back(b);
+    d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 225), 3);
+    d->AddText(ImVec2(b.x + 3, b.y + 1), rgb(p.color), text.c_str());
+}
+
+}  // namespace
+
 void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float h) {
     const ScanView& v = s.view();
     ImDrawList* d = begin_canvas("##scanline canvas", x, y, w, h);
-    const float margin = 24;
-    const float cell = std::max(2.0f, std::min((w - 2 * margin) / float(v.viewport.width), (h - 2 * margin - 24) / float(v.viewport.height)));
+    const float margin = canvas_margin;
+    const float cell = grid_cell(v, w, h);
     const ImVec2 o(x + margin, y + margin + 20);
     d->AddText(ImVec2(o.x, y + margin - 2), IM_COL32(220, 220, 220, 255), tr("scanline.image").c_str());
     pixel_grid(d, o, cell, v.viewport, [&](int px, int py) {
@@ -27,6 +71,8 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50});
     });
     for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
+    std::vector<ImVec4> taken;
+    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_number(d, o, cell, (*v.polygons)[k], k, taken);
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
         d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), canvas_px(3));
@@ -34,11 +80,20 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
     if (v.line >= 0) {
         const float ly = o.y + (float(v.line) + 0.5f) * cell;
         d->AddLine(ImVec2(o.x - 8, ly), ImVec2(o.x + cell * float(v.viewport.width) + 8, ly), IM_COL32(255, 230, 90, 255), canvas_px(2));
+        // each crossing's word above the line, or below it where it would run into the word before it
+        float above_end = -1e30f, below_end = -1e30f;
         for (const Crossing& c : v.crossings) {
             const float cx = o.x + float(c.x) * cell;
             const ImU32 colour = c.entering ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255);
             d->AddCircleFilled(ImVec2(cx, ly), 6, colour);
-            d->AddText(ImVec2(cx - 8, ly - 26), colour, tr(c.entering ? "scanline.in" : "scanline.out").c_str());
+            const std::string word = tr(c.entering ? "scanline.in" : "scanline.out");
+            const float tw = ImGui::CalcTextSize(word.c_str()).x, tx = cx - tw / 2;
+            const bool below = tx < above_end + 4 && tx >= below_end + 4;
+            float& end = below ? below_end : above_end;
+            const ImVec2 at(tx, below ? ly + 9 : ly - 9 - ImGui::GetTextLineHeight());
+            d->AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + tw + 2, at.y + ImGui::GetTextLineHeight()), IM_COL32(20, 22, 26, 200), 2);
+            d->AddText(at, colour, word.c_str());
+            end = tx + tw;
         }
         // classic: where the planes were compared (a ring) and the extra intersections where two pierce (an orange bar)
         for (const DepthMark& m : v.marks) {
@@ -136,16 +191,19 @@ void tables(const ScanLineSession& s, UiActions& out) {
     wrapped_text(tr("scanline.summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);
-    // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first)
-    const std::string headers[] = {tr("scanline.edge"), tr("scanline.polygon"), tr("scanline.lines"), tr("scanline.side"), tr("scanline.polygon_now")};
-    const std::string left = tr("scanline.left"), right = tr("scanline.right"), in = tr("scanline.in");
+    // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first).
+    // No "side" column: the notes flip a polygon's flag at each of its edges (parity), and a column that said which
+    // edges bring their polygon in would answer the lesson's first question before the walk reaches it. The last
+    // column fills in as the walk crosses each edge on this line.
+    const std::string headers[] = {tr("scanline.edge"), tr("scanline.polygon"), tr("scanline.lines"), tr("scanline.flipped_to")};
+    const std::string in = tr("scanline.in"), out_word = tr("scanline.out");
     const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
     const float widths[] = {std::max(width(headers[0]), width("000")), std::max(width(headers[1]), width("#000")),
-                            std::max(width(headers[2]), width("00–00")), std::max({width(headers[3]), width(left), width(right)})};
+                            std::max(width(headers[2]), width("00–00"))};
     if (!v.table_built) return wrapped_text(tr("scanline.table_pending"), dim_text);  // else it answers "how many edges?"
-    if (ImGui::BeginTable("edges", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-        for (int c = 0; c < 4; ++c) ImGui::TableSetupColumn(headers[c].c_str(), ImGuiTableColumnFlags_WidthFixed, widths[c]);
-        ImGui::TableSetupColumn(headers[4].c_str());
+    if (ImGui::BeginTable("edges", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+        for (int c = 0; c < 3; ++c) ImGui::TableSetupColumn(headers[c].c_str(), ImGuiTableColumnFlags_WidthFixed, widths[c]);
+        ImGui::TableSetupColumn(headers[3].c_str());
         ImGui::TableHeadersRow();
         for (std::size_t i = 0; i < v.edges->size(); ++i) {
             const algo::EdgeEntry& e = (*v.edges)[i];
@@ -159,9 +217,8 @@ void tables(const ScanLineSession& s, UiActions& out) {
             ImGui::TableNextColumn();
             ImGui::Text("%d–%d", e.first_row, e.end_row - 1);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(e.left ? left.c_str() : right.c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(v.in[e.polygon] ? in.c_str() : "");
+            const auto crossed = std::find_if(v.crossings.begin(), v.crossings.end(), [&](const Crossing& c) { return c.edge == i; });
+            if (crossed != v.crossings.end()) ImGui::TextUnformatted(crossed->entering ? in.c_str() : out_word.c_str());
         }
         ImGui::EndTable();
     }
@@ -175,6 +232,26 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& l, UiActi
     begin_column_box(l, Box::state, tables_title(s.view()).c_str());
     tables(s, out);
     end_column_box(l, Box::state);
+}
+
+float scanline_foot_share(const ScanLineSession& s, float view_w, float view_h) {
+    const ScanView& v = s.view();
+    if (v.classic || !foot_box_fits(view_w) || view_h <= 0) return 0;
+    // the box's height: its title, the summary line, the header and one row per edge, its padding
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float row = ImGui::GetTextLineHeight() + 2 * st.CellPadding.y + 1;
+    const float need = ImGui::GetFrameHeight() + 2 * st.WindowPadding.y + ImGui::GetTextLineHeightWithSpacing() +
+                       float(v.edges->size() + 1) * row + st.ItemSpacing.y + 8 + 8;
+    const float share = need / view_h;
+    if (share > 0.5f) return 0;
+    const float beside = grid_cell(v, view_w * (1 - scanline_tables_share), view_h), under = grid_cell(v, view_w, view_h * (1 - share));
+    return under > beside ? share : 0;
+}
+
+void scanline_tables_foot_box(const ScanLineSession& s, float view_w, float view_h, float share, UiActions& out) {
+    begin_view_foot_box(tables_title(s.view()), view_w, view_h, share);
+    tables(s, out);
+    end_view_side_box();
 }
 
 void scanline_tables_box(const ScanLineSession& s, float view_w, float view_h, UiActions& out) {

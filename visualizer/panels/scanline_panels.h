@@ -17,5 +17,10 @@ void scanline_state_panel(const ScanLineSession& s, const PanelLayout& layout, U
 // every step (in the column they had a row and a half at 1280×800).
 inline constexpr float scanline_tables_share = 0.48f;
 void scanline_tables_box(const ScanLineSession& s, float view_w, float view_h, UiActions& out);
+// The hybrid's edge table has a row per edge: under the image, across the view, it lets the image grow (at
+// 1280×800 its pixels half as large again as beside the table). The share of the view's height that box takes, or
+// 0 where the table is better beside the image (the classic's two tables, a view too short or too narrow).
+float scanline_foot_share(const ScanLineSession& s, float view_w, float view_h);
+void scanline_tables_foot_box(const ScanLineSession& s, float view_w, float view_h, float share, UiActions& out);
 
 }  // namespace hsr::viz

@@ -19,7 +19,10 @@ public:
                                           {"format", window_strings().name(algo::to_string(s.lesson().depth_format))}});
     }
     void draw_panels(const ScanLineSession& s, PanelFrame& f) const {
-        if (side_box_fits(f.view_w, scanline_tables_share)) {  // the tables beside the image, in the view
+        if (const float share = scanline_foot_share(s, f.view_w, f.view_h); share > 0) {  // the table under the image
+            scanline_canvas(s, 0, 0, f.view_w, f.view_h * (1 - share));
+            scanline_tables_foot_box(s, f.view_w, f.view_h, share, f.actions);
+        } else if (side_box_fits(f.view_w, scanline_tables_share)) {  // the tables beside the image, in the view
             scanline_canvas(s, 0, 0, f.view_w * (1 - scanline_tables_share), f.view_h);
             scanline_tables_box(s, f.view_w, f.view_h, f.actions);
         } else {
