@@ -70,3 +70,7 @@ TEST_CASE("the culling boxes' states are told apart under every colour blindness
 TEST_CASE("the portal plan's cells (the one being drawn, visited, in the PVS, out of it) are told apart under every colour blindness", "[colours]") {
     every_pair_apart(portal_cell_colours::all, 15);
 }
+
+TEST_CASE("the perspective transform's marks (the pair compared, an occluding pair, the canonical box) are told apart under every colour blindness", "[colours]") {
+    every_pair_apart(transform_colours::all, 15);
+}

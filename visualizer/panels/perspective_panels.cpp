@@ -9,6 +9,7 @@
 
 #include "core/events.h"
 #include "panels/panel_style.h"
+#include "panels/state_legend.h"
 #include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
@@ -60,7 +61,7 @@ void point_table(const PerspectiveView& v) {
 
 void rule_and_legend(const PerspectiveView& v) {
     wrapped_text(tr(v.input->maps.perspective ? "transform.rule" : "transform.rule_orthographic"), dim_text);
-    wrapped_text(tr("transform.legend"), dim_text);
+    state_legend(transform_colours::all);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ void perspective_state_panel(const PerspectiveSession& s, bool table_in_view, co
 
 // The points' table across the view's foot (eye space, w and the transformed x′, y′, z′), where a class reads it
 // whole; `points_box_share` of the view's height.
-inline constexpr float points_box_share = 0.36f;
+inline constexpr float points_box_share = 0.375f;
 void perspective_points_box(const PerspectiveSession& s, float view_w, float view_h);
 
 }  // namespace hsr::viz

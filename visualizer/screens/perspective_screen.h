@@ -15,7 +15,7 @@ class Screen<PerspectiveSession> : public ScreenDefaults {
 public:
     void frame(const PerspectiveSession&, OrbitCamera& camera) {  // the unit cube the picture lives in, from the side
         camera.yaw = 0.9f, camera.pitch = 0.3f;
-        frame_above_foot_box(camera, glm::vec3(0, 0, 0.3f), 1.9f, points_box_share);  // the points' table is below
+        frame_above_foot_box(camera, glm::vec3(0, 0, 0.15f), 1.55f, points_box_share);  // the points' table is below
     }
     void draw_scene(const PerspectiveSession& s, SceneFrame& f) const {
         draw_perspective_view(s.view(), s.lesson().scene, f.batches, f.labels);

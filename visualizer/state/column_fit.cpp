@@ -50,6 +50,9 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
         room -= h[narration];
         need[narration] = 0;
     }
+    // and at the end the pseudocode comes last of all: the lesson box's conclusion is read before it
+    const auto pseudocode = std::size_t(Box::pseudocode);
+    if (result_first) need[pseudocode] = 0;
     auto first = fair(need, room);
     first[lesson] = h[lesson];
     room += h[lesson];
@@ -59,10 +62,22 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
         room -= first[i];
         extra[i] = asks[i].full - first[i];
     }
+    if (result_first) {  // the conclusion in the lesson box before the narration's earlier sentences
+        extra[pseudocode] = 0;
+        const float more = std::clamp(extra[lesson], 0.0f, std::max(room, 0.0f));
+        h[lesson] += more;
+        room -= more;
+        extra[lesson] = 0;
+    }
     const auto second = fair(extra, room);
     for (std::size_t i = 0; i < extra.size(); ++i) {
         h[i] += second[i];
         room -= second[i];
+    }
+    if (result_first) {
+        const float p = std::clamp(asks[pseudocode].full - h[pseudocode], 0.0f, std::max(room, 0.0f));
+        h[pseudocode] += p;
+        room -= p;
     }
     const auto to = asks[std::size_t(Box::state)].full > 0 ? Box::state : Box::narration;
     if (room > 0 && asks[std::size_t(to)].full > 0) h[std::size_t(to)] += room;
@@ -81,7 +96,13 @@ void ColumnFit::arrange(float height, const std::string& lesson, bool result_fir
     for (std::size_t i = 0; i < box_count; ++i)
         if (!drawn_[i]) asks_[i] = {}, measured_[i] = false;  // not drawn last frame: no room kept for it
     drawn_ = {};
-    const auto h = share(asks_, height, result_first);
+    // at the lesson's end the state and narration boxes show what they hold now, not the most they held on the way
+    // (a pair's four lines of figures gone): the room they no longer need goes to the chapter's conclusion
+    auto asks = asks_;
+    if (result_first)
+        for (const Box b : {Box::state, Box::narration})
+            if (measured_[std::size_t(b)]) asks[std::size_t(b)] = last_[std::size_t(b)];
+    const auto h = share(asks, height, result_first);
     float y = 0;
     moved_ = false;
     for (std::size_t i = 0; i < box_count; ++i) {
@@ -94,6 +115,7 @@ void ColumnFit::arrange(float height, const std::string& lesson, bool result_fir
 void ColumnFit::keep(Box b) { drawn_[std::size_t(b)] = true; }
 
 void ColumnFit::asked(Box b, BoxAsk ask) {
+    last_[std::size_t(b)] = ask;
     BoxAsk& a = asks_[std::size_t(b)];
     bool& seen = measured_[std::size_t(b)];
     // the boxes that change at every step keep their largest size (a default was only a guess); the lesson text

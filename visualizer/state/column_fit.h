@@ -54,6 +54,7 @@ public:
 private:
     std::string lesson_;
     std::array<BoxAsk, box_count> asks_{};    // high-water marks of what each box asked for
+    std::array<BoxAsk, box_count> last_{};    // what each box asked for when last drawn
     std::array<bool, box_count> drawn_{};     // asked for this frame
     std::array<bool, box_count> measured_{};  // asked for since the lesson started (else asks_ is a default)
     std::array<BoxSlot, box_count> slots_{};

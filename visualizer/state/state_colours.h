@@ -38,4 +38,11 @@ inline constexpr StateColour out_of_pvs{"portals.cell_out", 0.141f, 0.149f, 0.16
 inline constexpr std::array all{being_drawn, visited, in_pvs, out_of_pvs};
 }  // namespace portal_cell_colours
 
+namespace transform_colours {  // the perspective transform's view: what a point's or a line's colour says
+inline constexpr StateColour compared{"transform.mark_compared", 0.94f, 0.89f, 0.26f};  // yellow, as palette::current_edge
+inline constexpr StateColour occluding{"transform.mark_occluding", 0.0f, 0.62f, 0.45f}; // bluish green, as palette::inside
+inline constexpr StateColour target_box{"transform.mark_box", 0.55f, 0.57f, 0.62f};    // grey: the canonical box
+inline constexpr std::array all{compared, occluding, target_box};
+}  // namespace transform_colours
+
 }  // namespace hsr::viz
