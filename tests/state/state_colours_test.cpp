@@ -74,3 +74,9 @@ TEST_CASE("the portal plan's cells (the one being drawn, visited, in the PVS, ou
 TEST_CASE("the perspective transform's marks (the pair compared, an occluding pair, the canonical box) are told apart under every colour blindness", "[colours]") {
     every_pair_apart(transform_colours::all, 15);
 }
+
+TEST_CASE("an occluder's orange stays apart from the marks an occlusion lesson shows beside it", "[colours]") {
+    const std::array occlusion_lesson{culling_colours::partial, culling_colours::occluded, culling_colours::visible,
+                                      culling_colours::built, culling_colours::occluder};
+    every_pair_apart(occlusion_lesson, 15);
+}
