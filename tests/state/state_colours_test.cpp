@@ -80,3 +80,7 @@ TEST_CASE("an occluder's orange stays apart from the marks an occlusion lesson s
                                       culling_colours::built, culling_colours::occluder};
     every_pair_apart(occlusion_lesson, 15);
 }
+
+TEST_CASE("IntersectionTest's volumes (at work, met, missed, a false alarm) are told apart under every colour blindness", "[colours]") {
+    every_pair_apart(intersection_colours::all, 15);
+}

@@ -38,12 +38,12 @@ void intersection_state_panel(const IntersectionSession& s, const PanelLayout& l
         wrapped_text(tr("intersection.calls", {{"ray", n(*v.ray)}, {"path", path}}));
     }
     wrapped_text(tr("intersection.counts", {{"volumes", n(v.volume_tests)}, {"primitives", n(v.primitive_tests)}, {"alarms", n(v.false_alarms)}}));
-    const float need = column_box_height_so_far();
     std::string answers;  // one line for the rays answered so far, a whole clause each
     for (std::size_t r = 0; r < v.answers.size(); ++r)
         if (v.answers[r]) answers += (answers.empty() ? "" : " · ") + tr(*v.answers[r] ? "intersection.ray_hit" : "intersection.ray_miss", {{"ray", n(r)}});
     if (!answers.empty()) wrapped_text(answers);
-    else wrapped_text(tr("intersection.legend"), dim_text);  // the rule, until the chapters have shown it at work
+    const float need = column_box_height_so_far();  // the rays answered are the result: seen whole
+    if (answers.empty()) wrapped_text(tr("intersection.legend"), dim_text);  // the rule, until the chapters have shown it at work
     end_column_box(l, Box::state, need);
 }
 

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "state/label_placement.h"
 #include "state/state_colours.h"
 #include "state/strings.h"
 
@@ -48,6 +49,25 @@ inline void canvas_legend(ImDrawList* d, float x, float bottom, std::span<const 
         d->AddText(ImVec2(x + side + 6, top), IM_COL32(200, 203, 210, 255), word.c_str());
         x += side + 6 + ImGui::CalcTextSize(word.c_str()).x + 2 * line;
     }
+}
+
+// The same in the 3D view's lower left corner, on a dark backing: over the scene, under the windows. Its rectangle,
+// for the screen's SceneFrame::covered, so that no label of the scene lands on it.
+inline float canvas_legend_width(std::span<const StateColour> entries) {
+    const float side = ImGui::GetTextLineHeight() * 0.8f, line = ImGui::GetTextLineHeight();
+    float w = 0;
+    for (const StateColour& e : entries) w += side + 6 + ImGui::CalcTextSize(tr(std::string(e.legend)).c_str()).x + 2 * line;
+    return w - 2 * line;
+}
+inline ViewRect view_legend_rect(float view_h, std::span<const StateColour> entries) {
+    constexpr float margin = 12, pad = 6;
+    return {margin - pad, view_h - margin - legend_height() - pad, margin + canvas_legend_width(entries) + pad, view_h - margin + pad};
+}
+inline void view_legend(float view_h, std::span<const StateColour> entries) {
+    const ViewRect r = view_legend_rect(view_h, entries);
+    ImDrawList* d = ImGui::GetBackgroundDrawList();
+    d->AddRectFilled(ImVec2(r.left, r.top), ImVec2(r.right, r.bottom), IM_COL32(20, 22, 26, 220), 4);
+    canvas_legend(d, r.left + 6, r.bottom - 6, entries);
 }
 
 }  // namespace hsr::viz

@@ -5,6 +5,7 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/state_colours.h"
 #include "state/strings.h"
 #include "volumes/kdop.h"
 
@@ -15,8 +16,11 @@ using algo::Vec3;
 namespace {
 
 constexpr int box_edges[12][2] = {{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7}, {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-constexpr glm::vec4 missed{0.84f, 0.37f, 0.0f, 0.55f}, alarm{0.90f, 0.62f, 0.0f, 0.9f}, met{0.0f, 0.62f, 0.45f, 0.7f},
-    visited{0.75f, 0.77f, 0.82f, 0.35f};
+// the legend's colours (state/state_colours.h), at the strength each is drawn with
+glm::vec4 rgba(const StateColour& c, float alpha) { return {c.r, c.g, c.b, alpha}; }
+const glm::vec4 missed = rgba(intersection_colours::missed, 0.7f), alarm = rgba(intersection_colours::false_alarm, 0.9f),
+                met = rgba(intersection_colours::met, 0.7f), at_work = rgba(intersection_colours::at_work, 1),
+                visited{0.75f, 0.77f, 0.82f, 0.35f};
 
 glm::vec3 f(const Vec3& v) { return glm::vec3(v); }
 
@@ -68,7 +72,7 @@ void draw_intersection_view(const IntersectionView& v, const algo::Scene& scene,
         const bool testing = v.primitive && v.primitive->polygon == p;
         for (std::size_t i = 0; i < poly.size(); ++i)
             (testing ? out.bold : out.faint).line(f(poly[i]), f(poly[(i + 1) % poly.size()]),
-                                                  testing ? (v.primitive->hit ? palette::inside : palette::outside) : colours(m.ids[p], 0.5f));
+                                                  testing ? (v.primitive->hit ? met : missed) : colours(m.ids[p], 0.5f));
         if (poly.size() >= 3) out.faint.triangle(f(poly[0]), f(poly[1]), f(poly[2]), colours(m.ids[p], 0.18f));
     }
     // the nodes this ray has reached, by what they were
@@ -83,8 +87,8 @@ void draw_intersection_view(const IntersectionView& v, const algo::Scene& scene,
             case CallMark::skipped: break;
         }
     }
-    if (v.volume && !v.calls.empty() && v.calls.back() == v.volume->node)  // the volume just tested, bold: yellow when met, red when missed
-        volume(out.bold, m.volumes[v.volume->node], m.options.volume, v.volume->k, v.volume->hit ? palette::current_edge : palette::outside);
+    if (v.volume && !v.calls.empty() && v.calls.back() == v.volume->node)  // the volume just tested, bold: yellow when met, blue when missed
+        volume(out.bold, m.volumes[v.volume->node], m.options.volume, v.volume->k, v.volume->hit ? at_work : rgba(intersection_colours::missed, 1));
     else if (!v.calls.empty() && m.tree.nodes[v.calls.back()].children.empty() && v.marks.size() > v.calls.back())
         volume(out.faint, m.volumes[v.calls.back()], algo::VolumeKind::aabb, 0, palette::current_edge);  // a bottom level: its box, faint
     // the rays: the one under test bold, from its origin past the scene
@@ -98,7 +102,22 @@ void draw_intersection_view(const IntersectionView& v, const algo::Scene& scene,
         out.bold.point(f(ray.origin), colour);
         labels.push_back({f(ray.origin), tr("intersection.ray_label", {{"ray", std::to_string(r)}}), colour});
     }
-    if (v.hit_point) out.bold.point(f(*v.hit_point), palette::inside);
+    if (v.hit_point) out.bold.point(f(*v.hit_point), met);
+    // the nodes the narration and the questions name: those on the call stack, the one just tested, a component the
+    // || skipped; at the top of its box, in the colour of what it was
+    const auto label_node = [&](std::uint32_t node, glm::vec4 colour) {
+        if (node >= m.tree.nodes.size()) return;
+        const algo::Aabb& b = m.tree.nodes[node].box;
+        labels.push_back({glm::vec3(b.centre().x, b.hi.y, b.centre().z), tr("intersection.node_label", {{"node", std::to_string(node)}}), colour});
+    };
+    for (const std::uint32_t node : v.calls) label_node(node, at_work);
+    if (!v.calls.empty() && v.calls.back() < m.tree.nodes.size())  // the components of the node at work, which it calls next
+        for (const std::uint32_t c : m.tree.nodes[v.calls.back()].children)
+            label_node(c, c < v.marks.size() && v.marks[c] == CallMark::missed ? missed : c < v.marks.size() && v.marks[c] == CallMark::hit ? met : visited * glm::vec4(1, 1, 1, 2.5f));
+    for (std::size_t node = 0; node < v.marks.size(); ++node)
+        if (v.marks[node] == CallMark::skipped) label_node(std::uint32_t(node), visited * glm::vec4(1, 1, 1, 2.5f));
+        else if (v.volume && v.volume->node == node && (v.calls.empty() || v.calls.back() != node))
+            label_node(std::uint32_t(node), v.volume->hit ? at_work : rgba(intersection_colours::missed, 1));
 }
 
 void intersection_view_bounds(const IntersectionView& v, glm::vec3& centre, float& radius) {

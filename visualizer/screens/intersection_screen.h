@@ -3,6 +3,7 @@
 #pragma once
 
 #include "panels/intersection_panels.h"
+#include "panels/state_legend.h"
 #include "render/intersection_renderer.h"
 #include "screens/screen.h"
 #include "state/intersection_session.h"
@@ -22,8 +23,12 @@ public:
     void draw_scene(const IntersectionSession& s, SceneFrame& f) const {
         draw_intersection_view(s.view(), s.lesson().scene, f.batches, f.labels);
         f.detail = tr("intersection.caption", {{"volume", volume_title(s.view().input->model.options)}});
+        f.covered.push_back(view_legend_rect(f.view_h, intersection_colours::all));
     }
-    void draw_panels(const IntersectionSession& s, PanelFrame& f) const { intersection_state_panel(s, f.layout); }
+    void draw_panels(const IntersectionSession& s, PanelFrame& f) const {
+        view_legend(f.view_h, intersection_colours::all);  // what the volumes' colours say, in the view
+        intersection_state_panel(s, f.layout);
+    }
 };
 
 }  // namespace hsr::viz

@@ -40,6 +40,14 @@ inline constexpr StateColour out_of_pvs{"portals.cell_out", 0.141f, 0.149f, 0.16
 inline constexpr std::array all{being_drawn, visited, in_pvs, out_of_pvs};
 }  // namespace portal_cell_colours
 
+namespace intersection_colours {  // IntersectionTest's volumes, by what the ray found in them
+inline constexpr StateColour at_work{"intersection.mark_at_work", 0.94f, 0.89f, 0.26f};    // yellow: the volume being tested
+inline constexpr StateColour met{"intersection.mark_met", 0.0f, 0.62f, 0.45f};             // bluish green: met, a hit below
+inline constexpr StateColour missed{"intersection.mark_missed", 0.0f, 0.447f, 0.698f};     // blue: missed, all inside it pruned
+inline constexpr StateColour false_alarm{"intersection.mark_alarm", 0.90f, 0.62f, 0.0f};   // orange: met, nothing met inside
+inline constexpr std::array all{at_work, met, missed, false_alarm};
+}  // namespace intersection_colours
+
 namespace transform_colours {  // the perspective transform's view: what a point's or a line's colour says
 inline constexpr StateColour compared{"transform.mark_compared", 0.94f, 0.89f, 0.26f};  // yellow, as palette::current_edge
 inline constexpr StateColour occluding{"transform.mark_occluding", 0.0f, 0.62f, 0.45f}; // bluish green, as palette::inside
