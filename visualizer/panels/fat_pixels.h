@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <imgui.h>
@@ -51,6 +52,36 @@ inline void outline(ImDrawList* d, ImVec2 origin, float cell, const algo::Screen
     std::vector<ImVec2> points;
     for (const auto& q : p.vertices) points.push_back(on_grid(origin, cell, q));
     d->AddPolyline(points.data(), int(points.size()), colour, ImDrawFlags_Closed, thickness);
+}
+
+// A polygon's name on a dark backing inside it, in the polygon's colour: the name the tables, the narration and the
+// questions use, found in the picture. At the middle of its outline, or, where an earlier name sits there (two
+// crossing triangles share a middle), part way towards one of its corners. `taken`: the names placed so far.
+inline void polygon_name(ImDrawList* d, ImVec2 origin, float cell, const algo::ScreenPolygon& p, const std::string& text, std::vector<ImVec4>& taken) {
+    if (p.status != algo::ScreenStatus::drawn || p.vertices.empty()) return;
+    std::vector<ImVec2> corners;
+    ImVec2 c(0, 0);
+    for (const auto& q : p.vertices) {
+        corners.push_back(on_grid(origin, cell, q));
+        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
+    }
+    std::vector<ImVec2> candidates{c};
+    for (const float t : {0.4f, 0.6f})
+        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 3, at.y - size.y / 2 - 1, at.x + size.x / 2 + 3, at.y + size.y / 2 + 1); };
+    const auto free = [&](const ImVec4& b) {
+        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
+    };
+    ImVec4 b = box(c);
+    for (const ImVec2& at : candidates)
+        if (free(box(at))) {
+            b = box(at);
+            break;
+        }
+    taken.push_back(b);
+    d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 225), 3);
+    d->AddText(ImVec2(b.x + 3, b.y + 1), rgb(p.color), text.c_str());
 }
 
 // An image (painted so far, say) stretched over the box from `o` of `size` points, with a frame: runs of one colour

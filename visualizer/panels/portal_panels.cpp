@@ -84,6 +84,17 @@ void long_line(ImDrawList* d, const PlanFit& f, Vec2 p, Vec2 dir, ImU32 colour, 
     d->AddLine(f(both_ways ? p - dir * reach : p), f(p + dir * reach), colour, thickness);
 }
 
+// The frustum's name, f1 (the eye's), f2, f3 … (each narrowing), as the lesson and the notes name them: on a dark
+// backing, `distance` points from the eye along `dir` (the middle of its wedge), in its lines' colour.
+void frustum_name(ImDrawList* d, const PlanFit& f, Vec2 eye, Vec2 dir, float distance, std::size_t number, ImU32 colour) {
+    const std::string text = "f" + std::to_string(number);
+    const ImVec2 at = f(eye + dir * double(canvas_px(distance) / f.scale)), size = ImGui::CalcTextSize(text.c_str());
+    const float pad = canvas_px(3);
+    const ImVec2 a(at.x - size.x / 2 - pad, at.y - size.y / 2 - pad / 2), b(at.x + size.x / 2 + pad, at.y + size.y / 2 + pad / 2);
+    d->AddRectFilled(a, b, IM_COL32(14, 15, 18, 215), pad);
+    d->AddText(ImVec2(a.x + pad, a.y + pad / 2), colour | IM_COL32_A_MASK, text.c_str());
+}
+
 // ── [SECTION] what each lesson adds ─────────────────────────────────────────────────────────────────────────
 void pvs_plan(const PvsSession& s, ImDrawList* d, const PlanFit& f) {
     const PvsView& v = s.view();
@@ -135,6 +146,11 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     for (double side : {-half, half})
         long_line(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
                   IM_COL32(240, 228, 66, 120), canvas_px(1), false);
+    {
+        const double side = half * 0.85;  // f1's name just inside its right edge
+        frustum_name(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
+                     230, 1, IM_COL32(240, 228, 66, 255));
+    }
     const ImU32 wedge_colours[] = {IM_COL32(0, 200, 140, 200), IM_COL32(86, 180, 233, 200), IM_COL32(204, 121, 167, 200)};
     for (std::size_t i = 0; i < v.passed.size(); ++i) {
         double a0 = 1e300, a1 = -1e300;
@@ -146,6 +162,7 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
             if (a > a1) a1 = a, d1 = dir;
         }
         for (const Vec2& dir : {d0, d1}) long_line(d, f, eye, dir, wedge_colours[i % 3], canvas_px(2), false);
+        frustum_name(d, f, eye, glm::normalize(d0 + d1), 90 + 45 * float(i), i + 2, wedge_colours[i % 3]);
     }
     if (v.portal >= 0) {
         const auto& p = m.portals[std::size_t(v.portal)];

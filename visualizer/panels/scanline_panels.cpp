@@ -26,37 +26,6 @@ float grid_cell(const ScanView& v, float w, float h) {
                                    (h - 2 * canvas_margin - canvas_title) / float(v.viewport.height)));
 }
 
-// "#k" on a dark backing inside polygon k, in the polygon's colour: the name the tables, the narration and the
-// questions use, found in the picture. At the middle of its outline, or, where an earlier label sits there (two
-// crossing triangles share a middle), part way towards one of its corners.
-void polygon_number(ImDrawList* d, ImVec2 o, float cell, const algo::ScreenPolygon& p, std::size_t k, std::vector<ImVec4>& taken) {
-    if (p.status != algo::ScreenStatus::drawn || p.vertices.empty()) return;
-    std::vector<ImVec2> corners;
-    ImVec2 c(0, 0);
-    for (const auto& q : p.vertices) {
-        corners.push_back(on_grid(o, cell, q));
-        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
-    }
-    std::vector<ImVec2> candidates{c};
-    for (const float t : {0.4f, 0.6f})
-        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
-    const std::string text = "#" + std::to_string(k);
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 3, at.y - size.y / 2 - 1, at.x + size.x / 2 + 3, at.y + size.y / 2 + 1); };
-    const auto free = [&](const ImVec4& b) {
-        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
-    };
-    ImVec4 b = box(c);
-    for (const ImVec2& at : candidates)
-        if (free(box(at))) {
-            b = box(at);
-            break;
-        }
-    taken.push_back(b);
-    d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 225), 3);
-    d->AddText(ImVec2(b.x + 3, b.y + 1), rgb(p.color), text.c_str());
-}
-
 }  // namespace
 
 void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float h) {
@@ -72,7 +41,7 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
     });
     for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
     std::vector<ImVec4> taken;
-    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_number(d, o, cell, (*v.polygons)[k], k, taken);
+    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_name(d, o, cell, (*v.polygons)[k], "#" + std::to_string(k), taken);
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
         d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), canvas_px(3));
