@@ -107,6 +107,8 @@ void setup_imgui(const Window& w, const AppOptions& o) {
     io.IniFilename = nullptr;
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0;
+    // a slider's grab is drawn under its number: a half-transparent one leaves every digit readable ("2.|00")
+    for (const ImGuiCol c : {ImGuiCol_SliderGrab, ImGuiCol_SliderGrabActive}) ImGui::GetStyle().Colors[c].w = 0.45f;
     if (o.projector) {  // high contrast for a washed-out projector: white on black, bright frames
         ImGuiStyle& style = ImGui::GetStyle();
         style.Colors[ImGuiCol_Text] = ImVec4(1, 1, 1, 1);
