@@ -70,6 +70,18 @@ void draw_plan(ImDrawList* d, const PlanFit& f, const algo::CellModel& m, Fill f
         d->AddLine(f(p.left), f(p.right), background, canvas_px(4));
         d->AddLine(f(p.left), f(p.right), opening_colour, canvas_px(1.5f));
     }
+    if (m.cells.size() <= 64)  // each opening named by the cells it joins (the chapters' "door A→D"), beside it
+        for (std::size_t k = 0; k < m.portals.size(); k += 2) {
+            const auto& p = m.portals[k];
+            const std::string name = m.cells[p.from].name + "–" + m.cells[p.to].name;
+            const ImVec2 a = f(p.left), b = f(p.right), size = ImGui::CalcTextSize(name.c_str());
+            const float len = std::max(1.0f, std::hypot(b.x - a.x, b.y - a.y));
+            const ImVec2 normal((a.y - b.y) / len, (b.x - a.x) / len);  // beside the opening, on its left
+            const float off = 0.5f * std::abs(normal.x) * size.x + 0.5f * std::abs(normal.y) * size.y + canvas_px(5);
+            const ImVec2 c((a.x + b.x) / 2 + normal.x * off - size.x / 2, (a.y + b.y) / 2 + normal.y * off - size.y / 2);
+            d->AddRectFilled(ImVec2(c.x - 2, c.y), ImVec2(c.x + size.x + 2, c.y + size.y), IM_COL32(14, 15, 18, 200), 2);
+            d->AddText(c, IM_COL32(150, 190, 235, 255), name.c_str());
+        }
     if (m.cells.size() <= 64)
         for (const auto& c : m.cells) {
             const ImVec2 at = f(mean_of(c.outline));
@@ -357,7 +369,6 @@ void stab_tree(const algo::CellModel& m, const std::vector<algo::StabNode>& tree
 void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("portals.pvs_title") + "###state").c_str());
     const PvsView& v = s.view();
-    wrapped_text(tr(v.bounded ? "portals.tests_bounded" : "portals.tests", {{"tests", std::to_string(v.tests)}}), dim_text);
     if (ImGui::BeginTabBar("pvs tabs")) {
         if (ImGui::BeginTabItem((tr("portals.matrix_tab") + "###matrix").c_str())) {
             pvs_matrix(v.world->model, v.matrix, v.source);
@@ -369,6 +380,8 @@ void pvs_state_panel(const PvsSession& s, const PanelLayout& l) {
         }
         ImGui::EndTabBar();
     }
+    // the count under the matrix: where the column is short, the count is what scrolls, not the matrix's last row
+    wrapped_text(tr(v.bounded ? "portals.tests_bounded" : "portals.tests", {{"tests", std::to_string(v.tests)}}), dim_text);
     end_column_box(l, Box::state);
 }
 
