@@ -77,7 +77,7 @@ TEST_CASE("the perspective transform's marks (the pair compared, an occluding pa
 
 TEST_CASE("an occluder's orange stays apart from the marks an occlusion lesson shows beside it", "[colours]") {
     const std::array occlusion_lesson{culling_colours::partial, culling_colours::occluded, culling_colours::visible,
-                                      culling_colours::built, culling_colours::occluder};
+                                      culling_colours::built, culling_colours::occluder, culling_colours::frustum};
     every_pair_apart(occlusion_lesson, 15);
 }
 

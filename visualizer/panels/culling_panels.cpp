@@ -151,6 +151,7 @@ void culling_legend(const CullingView& v) {
     } else {
         add_if(NodeMark::untouched, culling_colours::built);  // the children still to test
     }
+    shown.push_back(culling_colours::frustum);  // drawn in every culling view
     if (!v.occluders.empty()) shown.push_back(culling_colours::occluder);
     state_legend(shown);
 }

@@ -50,7 +50,8 @@ void culling_view_bounds(const CullingView& v, glm::vec3& centre, float& radius)
 void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label>& labels) {
     const auto& scene = v.world->scene;
     const auto& h = v.world->hierarchy;
-    draw_frustum(scene.camera, out.faint, {0.94f, 0.89f, 0.26f, 0.6f});
+    // the view frustum in grey, not the yellow of "partly inside" (state/state_colours.h: culling_colours::frustum)
+    draw_frustum(scene.camera, out.faint, {culling_colours::frustum.r, culling_colours::frustum.g, culling_colours::frustum.b, 1.0f});
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
     labels.push_back({glm::vec3(scene.camera.eye), tr("view.eye"), palette::eye});
     // primitives: kept solid, left out faint, not yet decided as outlines

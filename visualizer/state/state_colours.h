@@ -24,9 +24,11 @@ inline constexpr StateColour too_small{"culling.mark_too_small", 0.0f, 0.447f, 0
 inline constexpr StateColour occluded{"culling.mark_occluded", 0.800f, 0.475f, 0.655f}; // reddish purple
 inline constexpr StateColour visible{"culling.mark_visible", 0.337f, 0.706f, 0.914f};   // sky blue
 inline constexpr StateColour built{"culling.mark_built", 0.922f, 0.922f, 0.922f};       // white: built, not yet tested
+// the view frustum's thin lines
+inline constexpr StateColour frustum{"culling.mark_frustum", 0.40f, 0.40f, 0.40f};      // grey
 // an occluder's outline and the edges of its occlusion frustum (bold and thin orange lines, not boxes)
 inline constexpr StateColour occluder{"culling.mark_occluder", 0.90f, 0.62f, 0.0f};     // orange, as palette::intersection
-inline constexpr std::array all{outside, inside, partial, too_small, occluded, visible, built};
+inline constexpr std::array all{outside, inside, partial, too_small, occluded, visible, built, frustum};
 // detail culling alone: a node not below the threshold, its children tested. Yellow as `partial`, whose place it
 // takes (a lesson without the frustum test has no node partly inside), so it is not one more colour to tell apart.
 inline constexpr StateColour large_enough{"culling.mark_large_enough", partial.r, partial.g, partial.b};
