@@ -40,7 +40,7 @@ std::string numbers_of(const algo::TestTried& t) {
 
 // The tests tried on the pair under examination, one row each (the swapped retries of 3 and 4 after the five),
 // scrolled so that the latest is in sight. The names and the numbers side by side when the box is wide enough for
-// them whole, else the numbers under the name: nothing is cut at any scale.
+// them whole, else the latest test's numbers under its name: nothing is cut at any scale.
 void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("depth_sort.table") + "###decision table").c_str());
     const DepthSortView& v = s.view();
@@ -79,7 +79,9 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             wrapped_text(window_strings().say(algo::term(t.test)));
-            if (!beside) wrapped_text("    " + n, dim_text);
+            // numbers that do not fit beside go under the name of the test just tried only: the rows above keep one
+            // line each, so that the pair's whole table fits its box (the extents are also the inset's bars)
+            if (!beside && k + 1 == v.tests.size()) wrapped_text("    " + n, dim_text);
             ImGui::TableNextColumn();
             ImGui::TextColored(t.passed ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set, "%s", tr(t.passed ? "depth_sort.yes" : "depth_sort.no").c_str());
             if (three) {
