@@ -128,8 +128,10 @@ void void_table(const CullingView& v) {
     ImGui::EndTable();
 }
 
+}  // namespace
+
 // The colours of the boxes the view shows now, each with its word.
-void culling_legend(const CullingView& v) {
+std::vector<StateColour> culling_legend_entries(const CullingView& v) {
     const std::vector<ShownBox> boxes = shown_boxes(v);
     std::vector<StateColour> shown;
     const auto add_if = [&](NodeMark m, const StateColour& c) {
@@ -153,12 +155,11 @@ void culling_legend(const CullingView& v) {
     }
     shown.push_back(culling_colours::frustum);  // drawn in every culling view
     if (!v.occluders.empty()) shown.push_back(culling_colours::occluder);
-    state_legend(shown);
+    return shown;
 }
 
-}  // namespace
 
-void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
+void culling_state_panel(const CullingLesson& s, const PanelLayout& l, bool legend_in_view) {
     begin_column_box(l, Box::state, (tr("culling.title") + "###state").c_str());
     const CullingView& v = s.culling_view();
     const auto n = [](auto value) { return std::to_string(value); };
@@ -178,7 +179,7 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l) {
         if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
     }
     wrapped_text(header, dim_text);
-    culling_legend(v);
+    if (!legend_in_view) state_legend(culling_legend_entries(v));
     if (s.culling_machine() != algo::CullingMachine::bounds) {  // one table: no tab bar above it
         pipeline_table(v);
         end_column_box(l, Box::state);

@@ -9,11 +9,15 @@
 
 #include "panels/lesson_panels.h"
 #include "state/culling_session.h"
+#include "state/state_colours.h"
 #include "state/walkthrough.h"
 
 namespace hsr::viz {
 
-void culling_state_panel(const CullingLesson& s, const PanelLayout& layout);
+// `legend_in_view`: the screen draws the legend of the boxes' colours in the view (view_legend), else it is here.
+void culling_state_panel(const CullingLesson& s, const PanelLayout& layout, bool legend_in_view = false);
+// The colours of the boxes (and lines) the view shows now, each with its word.
+std::vector<StateColour> culling_legend_entries(const CullingView& v);
 // Walking through the scene (W): each stage with a switch, what reached it, what it left out and its time, the
 // frame's time, the Hi-Z stage's frame-to-frame coherence; the switches fill in `out`.
 void walk_panel(const Walkthrough& walk, const PanelLayout& layout, UiActions& out);

@@ -2,8 +2,10 @@
 // A legend for a view whose colours carry meaning: a swatch and its word for each state, as many to a row as fit.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -51,23 +53,46 @@ inline void canvas_legend(ImDrawList* d, float x, float bottom, std::span<const 
     }
 }
 
-// The same in the 3D view's lower left corner, on a dark backing: over the scene, under the windows. Its rectangle,
-// for the screen's SceneFrame::covered, so that no label of the scene lands on it.
-inline float canvas_legend_width(std::span<const StateColour> entries) {
-    const float side = ImGui::GetTextLineHeight() * 0.8f, line = ImGui::GetTextLineHeight();
-    float w = 0;
-    for (const StateColour& e : entries) w += side + 6 + ImGui::CalcTextSize(tr(std::string(e.legend)).c_str()).x + 2 * line;
-    return w - 2 * line;
+// The same in the 3D view's lower left corner, on a dark backing, in as many rows as the view's width needs: over
+// the scene, under the windows. Its rectangle, for the screen's SceneFrame::covered, so that no label of the scene
+// lands on it.
+inline float legend_entry_width(const StateColour& e) {
+    return ImGui::GetTextLineHeight() * 0.8f + 6 + ImGui::CalcTextSize(tr(std::string(e.legend)).c_str()).x;
 }
-inline ViewRect view_legend_rect(float view_h, std::span<const StateColour> entries) {
+// The entries of each row, left to right, within `width` points.
+inline std::vector<std::vector<StateColour>> legend_rows(std::span<const StateColour> entries, float width) {
+    std::vector<std::vector<StateColour>> rows(1);
+    float x = 0;
+    const float gap = 2 * ImGui::GetTextLineHeight();
+    for (const StateColour& e : entries) {
+        const float w = legend_entry_width(e);
+        if (!rows.back().empty() && x + gap + w > width) rows.emplace_back(), x = 0;
+        x += (rows.back().empty() ? 0 : gap) + w;
+        rows.back().push_back(e);
+    }
+    return rows;
+}
+inline ViewRect view_legend_rect(float view_w, float view_h, std::span<const StateColour> entries) {
     constexpr float margin = 12, pad = 6;
-    return {margin - pad, view_h - margin - legend_height() - pad, margin + canvas_legend_width(entries) + pad, view_h - margin + pad};
+    const auto rows = legend_rows(entries, view_w - 2 * margin - 2 * pad);
+    float widest = 0;
+    for (const auto& row : rows) {
+        float w = 0;
+        for (const StateColour& e : row) w += (w > 0 ? 2 * ImGui::GetTextLineHeight() : 0) + legend_entry_width(e);
+        widest = std::max(widest, w);
+    }
+    return {margin - pad, view_h - margin - float(rows.size()) * legend_height() - pad, margin + widest + pad, view_h - margin + pad};
 }
-inline void view_legend(float view_h, std::span<const StateColour> entries) {
-    const ViewRect r = view_legend_rect(view_h, entries);
+inline void view_legend(float view_w, float view_h, std::span<const StateColour> entries) {
+    if (entries.empty()) return;
+    const ViewRect r = view_legend_rect(view_w, view_h, entries);
     ImDrawList* d = ImGui::GetBackgroundDrawList();
     d->AddRectFilled(ImVec2(r.left, r.top), ImVec2(r.right, r.bottom), IM_COL32(20, 22, 26, 220), 4);
-    canvas_legend(d, r.left + 6, r.bottom - 6, entries);
+    float bottom = r.top + 6;
+    for (const auto& row : legend_rows(entries, view_w - 2 * 12 - 2 * 6)) {
+        bottom += legend_height();
+        canvas_legend(d, r.left + 6, bottom, row);
+    }
 }
 
 }  // namespace hsr::viz

@@ -7,6 +7,7 @@
 
 
 #include "panels/culling_panels.h"
+#include "panels/state_legend.h"
 #include "render/culling_renderer.h"
 #include "screens/screen.h"
 #include "screens/walk_mode.h"
@@ -35,6 +36,7 @@ public:
                       {{"primitives", std::to_string(w.scene.polygons.size())},
                        {"hierarchy", w.hierarchy.kind == algo::HierarchyKind::bvh ? tr("culling.bvh") : tr("culling.octree")}});
         if (f.second_view) f.view_projection = whole_width(w.scene.camera, f.aspect());  // the view from the scene's own camera
+        if (legend_in_view(s)) f.covered.push_back(view_legend_rect(f.view_w, f.view_h, culling_legend_entries(s.view())));
     }
     void draw_panels(const S& s, PanelFrame& f) {
         if (walk_.walking()) return walk_.draw_panels(f);
@@ -42,7 +44,8 @@ public:
             if (depth_for_ != s.view().rendered.size()) depth_ = rendered_depth(s.view()), depth_for_ = s.view().rendered.size();
             zpyramid_canvas(s.view(), depth_, 0, 0, f.view_w, f.view_h);
         }
-        culling_state_panel(s, f.layout);
+        if (legend_in_view(s)) view_legend(f.view_w, f.view_h, culling_legend_entries(s.view()));  // the boxes' colours
+        culling_state_panel(s, f.layout, legend_in_view(s));
     }
 
     // Walking (W): the lesson's stages on at the start, its occluder shapes, from the lesson's camera
@@ -57,6 +60,8 @@ public:
     bool walking(const S&) const { return walk_.walking(); }
 
 private:
+    // the legend in the view's corner, leaving the column's room to the pipeline; Hi-Z's pyramid covers the view
+    static bool legend_in_view(const S& s) { return s.culling_machine() != algo::CullingMachine::hiz; }
     WalkMode walk_;
     std::vector<std::uint32_t> depth_;     // the depth buffer of the primitives rendered so far (Hi-Z)
     std::optional<std::size_t> depth_for_;  // how many primitives depth_ holds

@@ -23,10 +23,10 @@ public:
     void draw_scene(const IntersectionSession& s, SceneFrame& f) const {
         draw_intersection_view(s.view(), s.lesson().scene, f.batches, f.labels);
         f.detail = tr("intersection.caption", {{"volume", volume_title(s.view().input->model.options)}});
-        f.covered.push_back(view_legend_rect(f.view_h, intersection_colours::all));
+        f.covered.push_back(view_legend_rect(f.view_w, f.view_h, intersection_colours::all));
     }
     void draw_panels(const IntersectionSession& s, PanelFrame& f) const {
-        view_legend(f.view_h, intersection_colours::all);  // what the volumes' colours say, in the view
+        view_legend(f.view_w, f.view_h, intersection_colours::all);  // what the volumes' colours say, in the view
         intersection_state_panel(s, f.layout);
     }
 };
