@@ -122,18 +122,37 @@ void extent_bar(ImDrawList* d, const Screen& screen, const SortPolygon& p, bool 
     }
 }
 
-// "#i" on a dark backing at the middle of polygon i's projection: the parts of a cut, which the questions name,
-// are found in the picture by the numbers the chips carry.
-void number_label(ImDrawList* d, const Screen& screen, const SortPolygon& p, std::uint32_t i) {
+// "#i" on a dark backing inside polygon i's projection: the parts of a cut, which the questions name, are found in
+// the picture by the numbers the chips carry. At the middle, or part way to a corner where an earlier number sits.
+void number_label(ImDrawList* d, const Screen& screen, const SortPolygon& p, std::uint32_t i, std::vector<ImVec4>& taken) {
     if (p.vertices.empty()) return;
-    double cx = 0, cy = 0;
-    for (const auto& v : p.vertices) cx += v.x, cy += v.y;
-    const ImVec2 c = screen(cx / double(p.vertices.size()), cy / double(p.vertices.size()));
+    std::vector<ImVec2> corners;
+    ImVec2 c(0, 0);
+    for (const auto& v : p.vertices) {
+        corners.push_back(screen(v.x, v.y));
+        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
+    }
+    std::vector<ImVec2> candidates{c};
+    for (const float t : {0.45f, 0.7f})
+        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
     const std::string text = "#" + std::to_string(i);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 a(c.x - size.x / 2 - 2, c.y - size.y / 2 - 1), b(c.x + size.x / 2 + 2, c.y + size.y / 2 + 1);
-    d->AddRectFilled(a, b, IM_COL32(26, 28, 33, 215), 2);
-    d->AddText(ImVec2(a.x + 2, a.y + 1), text_colour, text.c_str());
+    for (const float k : {1.1f, 2.2f})  // a polygon too small for its number: beside it
+        for (const ImVec2 dir : {ImVec2(0, 1), ImVec2(0, -1), ImVec2(1, 0), ImVec2(-1, 0)})
+            candidates.push_back(ImVec2(c.x + dir.x * k * (size.x + 4), c.y + dir.y * k * (size.y + 2)));
+    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 2, at.y - size.y / 2 - 1, at.x + size.x / 2 + 2, at.y + size.y / 2 + 1); };
+    const auto free = [&](const ImVec4& b) {
+        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
+    };
+    ImVec4 b = box(c);
+    for (const ImVec2& at : candidates)
+        if (free(box(at))) {
+            b = box(at);
+            break;
+        }
+    taken.push_back(b);
+    d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(26, 28, 33, 215), 2);
+    d->AddText(ImVec2(b.x + 2, b.y + 1), text_colour, text.c_str());
 }
 
 void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
@@ -148,7 +167,8 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
         projection(d, screen, r, rgb(r.color, 0.35f), r_colour, 2.5f);
         projection(d, screen, q, rgb(q.color, 0.35f), q_colour, 2.5f);
     }
-    for (std::uint32_t i : v.list) number_label(d, screen, v.polygons[i], i);
+    std::vector<ImVec4> taken;
+    for (std::uint32_t i : v.list) number_label(d, screen, v.polygons[i], i, taken);
     if (v.r < 0 || v.q < 0) return;
     const SortPolygon &r = v.polygons[std::size_t(v.r)], &q = v.polygons[std::size_t(v.q)];
     extent_bar(d, screen, r, true, 6, r_colour);
