@@ -78,7 +78,8 @@ void draw_plan(ImDrawList* d, const PlanFit& f, const algo::CellModel& m, Fill f
             const float len = std::max(1.0f, std::hypot(b.x - a.x, b.y - a.y));
             const ImVec2 normal((a.y - b.y) / len, (b.x - a.x) / len);  // beside the opening, on its left
             const float off = 0.5f * std::abs(normal.x) * size.x + 0.5f * std::abs(normal.y) * size.y + canvas_px(5);
-            const ImVec2 c((a.x + b.x) / 2 + normal.x * off - size.x / 2, (a.y + b.y) / 2 + normal.y * off - size.y / 2);
+            // near one end of the opening: a sightline or a frustum's edge usually crosses its middle
+            const ImVec2 c(a.x + (b.x - a.x) * 0.2f + normal.x * off - size.x / 2, a.y + (b.y - a.y) * 0.2f + normal.y * off - size.y / 2);
             d->AddRectFilled(ImVec2(c.x - 2, c.y), ImVec2(c.x + size.x + 2, c.y + size.y), IM_COL32(14, 15, 18, 200), 2);
             d->AddText(c, IM_COL32(150, 190, 235, 255), name.c_str());
         }
