@@ -420,7 +420,7 @@ int run_app(const AppOptions& o) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplSDL2_NewFrame();
             ImGui::NewFrame();
-            layout_problems().clear(), result_scrolls() = false;
+            layout_problems().clear(), result_scrolls() = false, scrolling_boxes().clear();
             int width = 0, height = 0;
             SDL_GL_GetDrawableSize(w.window, &width, &height);
             UiActions from_panels;
@@ -466,6 +466,7 @@ int run_app(const AppOptions& o) {
                                 lp.classroom.answered(), lp.classroom.questions(), lp.classroom.language().c_str());
                 std::printf("hsrviz: window words %s, narration %s\n", window_strings().language().c_str(), lp.classroom.language().c_str());
                 for (const std::string& problem : layout_problems()) std::printf("hsrviz: layout: %s\n", problem.c_str());
+                for (const std::string& box : scrolling_boxes()) std::printf("hsrviz: scrolls: %s\n", box.c_str());
                 if (result_scrolls() && lp.session() && lp.session()->complete() && lp.session()->cursor() >= lp.session()->known())
                     std::printf("hsrviz: result scrolls: the lesson's state box scrolls at the end of the lesson\n");
                 for (const Toasts::Showing& n : lp.toasts.showing(seconds_now())) std::printf("hsrviz: note showing: %s\n", n.text.c_str());

@@ -18,5 +18,8 @@ void note_broken_word();
 // Whether the frame's state box (what the lesson builds: the tree, the matrix, the tables) scrolls: at the end of a
 // lesson that is a problem too (its result must be in full view), which the window says after --screenshot.
 bool& result_scrolls();
+// The boxes of this frame that scroll (their content taller than they are): not an error, but a class sees only a
+// part of them; the window lists them after --screenshot ("hsrviz: scrolls: …"), for the layout's figures.
+std::vector<std::string>& scrolling_boxes();
 
 }  // namespace hsr::viz
