@@ -137,8 +137,9 @@ void abuffer_state_panel(const ABufferSession& s, std::optional<std::pair<int, i
                                               {"percent", f(std::round(1000 * v.fragment->weight) / 10)}}));
     }
     wrapped_text(tr("abuffer.counts", {{"fragments", n(v.fragments)}, {"pixels", n(v.pixels_resolved)}}));
+    const float need = column_box_height_so_far();  // the rule under the facts: what scrolls in a short column
     wrapped_text(tr("abuffer.rule"), dim_text);
-    end_column_box(l, Box::state);
+    end_column_box(l, Box::state, need);
 }
 
 }  // namespace hsr::viz

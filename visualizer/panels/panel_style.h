@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <string>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -68,6 +69,11 @@ inline float column_box_height_so_far() {
 inline void end_column_box(const PanelLayout& l, Box b, float need = -1, float full_height = -1) {
     audit_current_window();
     if (b == Box::state && ImGui::GetCurrentWindow()->ScrollbarY) result_scrolls() = true;
+    if (need >= 0 && need <= ImGui::GetWindowHeight() && ImGui::GetScrollY() == 0) {  // what must be seen is: only the rest scrolls
+        auto& boxes = scrolling_boxes();
+        const std::string name = std::string(ImGui::GetCurrentWindow()->Name);
+        boxes.erase(std::remove(boxes.begin(), boxes.end(), name.substr(0, name.find("###"))), boxes.end());
+    }
     if (l.fit) {
         float full = std::max(full_height, column_box_height_so_far());
         if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;

@@ -17,7 +17,6 @@ void roberts_state_panel(const RobertsSession& s, const PanelLayout& l) {
     const RobertsView& v = s.view();
     const auto n = [](auto value) { return std::to_string(value); };
     const auto f = [](double value) { return algo::format_number(value); };
-    wrapped_text(tr("roberts.rule"), dim_text);
     if (v.edge >= 0) {
         const algo::BodyEdge& e = v.input->edges[std::size_t(v.edge)];
         wrapped_text(tr("roberts.edge", {{"edge", n(v.edge)}, {"body", n(e.body)}}));
@@ -29,7 +28,10 @@ void roberts_state_panel(const RobertsSession& s, const PanelLayout& l) {
     wrapped_text(tr("roberts.counts", {{"bodies", n(v.input->bodies.size())}, {"edges", n(v.input->edges.size())},
                                        {"removed", n(v.removed)}, {"tests", n(v.tests)}}));
     wrapped_text(tr("roberts.legend"), dim_text);
-    end_column_box(l, Box::state);
+    // the rule last: where the column is short, it is what scrolls, not the edge under test or the counts
+    const float need = column_box_height_so_far();
+    wrapped_text(tr("roberts.rule"), dim_text);
+    end_column_box(l, Box::state, need);
 }
 
 }  // namespace hsr::viz
