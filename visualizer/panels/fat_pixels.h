@@ -80,8 +80,11 @@ inline void polygon_name(ImDrawList* d, ImVec2 origin, float cell, const algo::S
             break;
         }
     taken.push_back(b);
-    d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 225), 3);
-    d->AddText(ImVec2(b.x + 3, b.y + 1), rgb(p.color), text.c_str());
+    // a light backing, so that the pixels under a name still show their colour (a fill-rule lesson is about single
+    // pixels); white words, never the colour of the pixels under them, and the polygon's colour in a bar beside them
+    d->AddRectFilled(ImVec2(b.x - 4, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 165), 3);
+    d->AddRectFilled(ImVec2(b.x - 4, b.y + 1), ImVec2(b.x - 1, b.w - 1), rgb(p.color));
+    d->AddText(ImVec2(b.x + 3, b.y + 1), IM_COL32(245, 245, 245, 255), text.c_str());
 }
 
 // An image (painted so far, say) stretched over the box from `o` of `size` points, with a frame: runs of one colour
