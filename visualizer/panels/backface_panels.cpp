@@ -28,7 +28,7 @@ void faces_table(const BackfaceView& v) {
             return std::max(ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(widest).x) + pad;
         };
         ImGui::TableSetupColumn(face.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(face, "000"));
-        ImGui::TableSetupColumn(quantity.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(quantity, "-0.0000e+00"));
+        ImGui::TableSetupColumn(quantity.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(quantity, "-0.00000"));  // %.4g: "-0.1234", rarely "1.2e-05"
         if (cast) ImGui::TableSetupColumn(seen.c_str(), ImGuiTableColumnFlags_WidthFixed, fixed_width(seen, "00000"));
         ImGui::TableSetupColumn(verdict.c_str());
         ImGui::TableHeadersRow();
@@ -50,7 +50,7 @@ void faces_table(const BackfaceView& v) {
             }
             ImGui::TableNextColumn();
             if (!f.facing) {
-                ImGui::TextColored(dim_text, "%s", tr("backface.not_tested").c_str());
+                wrapped_text(tr("backface.not_tested"), dim_text);  // wrapped at spaces in a narrow column
                 continue;
             }
             const bool kept = *f.facing == algo::Facing::front;

@@ -74,8 +74,8 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
         h[i] += second[i];
         room -= second[i];
     }
-    if (result_first) {
-        const float p = std::clamp(asks[pseudocode].full - h[pseudocode], 0.0f, std::max(room, 0.0f));
+    if (result_first) {  // only when the room left holds what it must show: a sliver of it would be left blank
+        const float p = room >= std::min(asks[pseudocode].need, asks[pseudocode].full) ? std::clamp(asks[pseudocode].full - h[pseudocode], 0.0f, room) : 0.0f;
         h[pseudocode] += p;
         room -= p;
     }
