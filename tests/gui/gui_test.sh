@@ -20,7 +20,7 @@ case "$case" in
       "$hsrviz" "$lesson" --screenshot "$name.png" --frames 15
       "$png_check" "$name.png" 1280 800
     done ;;
-  layout)  # every lesson at 1280×800 and on a projector at 1920×1080: no panel of the column cut without a
+  layout)  # every lesson at 1280×800 (and in German) and on a projector at 1920×1080: no panel of the column cut without a
             # scrollbar, no word broken inside (the window prints each as "hsrviz: layout: …"); and at 1280×800 the
             # lesson's result (its state box) in full view at its end ("hsrviz: result scrolls: …")
     for lesson in "$src"/lessons/*.toml; do
@@ -37,6 +37,17 @@ case "$case" in
           if [ "$keys" = "$ends" ] && grep "result scrolls:" out.txt; then echo "in $name with $mode at its end"; exit 1; fi
         done
       done
+      # in German too (L switches; the settings file then remembers it, so each run starts from a fresh one): the first
+      # question as it opens and the lesson's end, at 1280×800, no box cut and no word broken
+      if grep -q '"de"' "$lesson"; then
+        for keys in L,End L,End,1,End,1,End,1,End,1,End,1,End,1,End,1,End,1,End; do
+          rm -f "$HSRVIZ_CONFIG"
+          "$hsrviz" "$lesson" --size 1280x800 --keys "$keys" --screenshot l.png --frames 5 > out.txt
+          grep -q "narration de" out.txt
+          if grep "layout:" out.txt; then echo "in $name in German after $keys"; exit 1; fi
+        done
+        rm -f "$HSRVIZ_CONFIG"
+      fi
     done
     # Ctrl+= makes type and column larger (the column's right edge is the window's, its left edge moves left)
     small=$("$hsrviz" "$src/lessons/18_portals_pvs.toml" --screenshot a.png --frames 4 --keys Right)
