@@ -54,13 +54,13 @@ std::string bad_vertex_line(const std::string& text) {
 }
 
 // "" when tinyobjloader's faces are the file's face lines, each of the size counted there (tinyobjloader keeps a face's
-// size modulo 256, and all its indices); else why not.
+// size modulo 256 in Debian 12's version, whole in Debian 13's, and all its indices); else why not.
 std::string faces_disagree(const tinyobj::ObjReader& obj, const std::vector<ObjFace>& faces) {
     std::size_t face = 0;
     for (const tinyobj::shape_t& shape : obj.GetShapes()) {
         std::size_t indices = 0;
-        for (const unsigned char size : shape.mesh.num_face_vertices) {
-            if (face == faces.size() || faces[face].vertices % 256 != size)
+        for (const auto size : shape.mesh.num_face_vertices) {  // unsigned char in tinyobjloader 1.0, unsigned int later
+            if (face == faces.size() || faces[face].vertices % 256 != std::size_t(size) % 256)
                 return "face " + std::to_string(face + 1) + (face < faces.size() ? " (line " + std::to_string(faces[face].line) + ")" : "") +
                        " is not read as its line has it (a face is 'f' and its vertices, separated by spaces)";
             indices += faces[face++].vertices;
