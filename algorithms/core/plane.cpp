@@ -58,9 +58,26 @@ SplitParts split(const Plane& plane, std::span<const Vec3> polygon, Tolerance to
     return parts;
 }
 
+namespace {
+
+// A power of two that brings the polygon's largest coordinate near 1. Newell's products and the normal's length
+// square the coordinates: a triangle 1e-160 across gave a normal of 1e-320 (a denormal) whose length underflowed to
+// 0, refused as "no area" by the BSP alone. Scaling by a power of two is exact, so the unit normal of every polygon
+// within 2^±400 is bit for bit what it was; only those beyond are scaled.
+double unit_scale(std::span<const Vec3> polygon) {
+    double largest = 0;
+    for (const Vec3& v : polygon) largest = std::max({largest, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0) || !std::isfinite(largest)) return 1;
+    const int e = std::ilogb(largest);
+    return e < -400 || e > 400 ? std::ldexp(1.0, -e) : 1.0;
+}
+
+}  // namespace
+
 bool plane_of(std::span<const Vec3> polygon, Plane& out) {
+    const double k = unit_scale(polygon);
     if (polygon.size() == 2) {
-        const Vec3 dir = polygon[1] - polygon[0];
+        const Vec3 dir = (polygon[1] - polygon[0]) * k;
         const Vec3 normal(-dir.y, dir.x, 0);  // left of the direction, in the plane z = 0
         const double len = glm::length(normal);
         if (!(len > 0)) return false;
@@ -70,10 +87,10 @@ bool plane_of(std::span<const Vec3> polygon, Plane& out) {
     }
     Vec3 normal(0), centre(0);
     for (std::size_t i = 0; i < polygon.size(); ++i) {  // Newell's method
-        const Vec3& a = polygon[i];
-        const Vec3& b = polygon[(i + 1) % polygon.size()];
+        const Vec3 a = polygon[i] * k;
+        const Vec3 b = polygon[(i + 1) % polygon.size()] * k;
         normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-        centre += a;
+        centre += polygon[i];
     }
     const double len = glm::length(normal);
     if (polygon.size() < 3 || !(len > 0)) return false;

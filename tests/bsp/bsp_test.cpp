@@ -137,6 +137,23 @@ TEST_CASE("splitting a polygon by a plane keeps its area, on both sides", "[bsp]
     CHECK(measure(halves.back) == Approx(0.5));
 }
 
+TEST_CASE("a polygon's plane at any magnitude: 1e-160 across, 1e150 across", "[bsp][plane]") {
+    // issue 53, item 12: Newell's products of a triangle 1e-160 across are 1e-320, and their length underflowed to 0,
+    // so the BSP alone refused the triangle every other algorithm drew
+    for (const double k : {1e-160, 1e-300, 1.0, 1e150}) {
+        const std::vector<Vec3> triangle = {Vec3(-2, -1, -1.5) * k, Vec3(1.6, -0.8, 0.8) * k, Vec3(-0.4, 1.6, -0.2) * k};
+        Plane plane, unit;
+        REQUIRE(plane_of(triangle, plane));
+        REQUIRE(plane_of(std::vector<Vec3>{{-2, -1, -1.5}, {1.6, -0.8, 0.8}, {-0.4, 1.6, -0.2}}, unit));
+        CHECK(glm::length(plane.n - unit.n) < 1e-12);
+        for (const Vec3& v : triangle) CHECK(std::abs(plane.distance(v)) <= 1e-12 * 3 * k);
+        const Built b = build({{1, triangle}});
+        CHECK(b.tree.held() == 1);
+    }
+    Plane none;
+    CHECK_FALSE(plane_of(std::vector<Vec3>{{0, 0, 0}, {1e-160, 0, 0}, {2e-160, 0, 0}}, none));  // on one line: still none
+}
+
 TEST_CASE("painting in BSP order gives the ray-cast picture in 3D, for every splitter rule", "[bsp][raycast]") {
     const SplitterRule rule =
         GENERATE(SplitterRule::first, SplitterRule::balanced, SplitterRule::fewest_splits, SplitterRule::weighted);
