@@ -46,6 +46,7 @@ WorkMeter::WorkMeter(Teller tell, const std::atomic<bool>* stop, double first_te
 void WorkMeter::stage(std::string name, std::string unit, double total) {
     progress_ = {.stage = std::move(name), .unit = std::move(unit), .total = total};
     stage_start_ = Clock::now();
+    rate_from_.reset();
     look();
 }
 
@@ -54,11 +55,14 @@ void WorkMeter::look() {
     if (!tell_) return;
     const auto now = Clock::now();
     const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    // The rate is measured from the first look that finds something done: the stage's set-up before its first unit
+    // (a grid built before the first ray) is not a unit's time ("about 7682 h left" for a 144 s run)
+    if (!rate_from_ && progress_.done > 0) rate_from_ = std::pair(now, progress_.done);
     if (seconds(now - work_start_) < first_tell_after_ || (told_ && seconds(now - last_told_) < tell_every_)) return;
     progress_.seconds = seconds(now - stage_start_);
     progress_.seconds_left.reset();
-    if (progress_.done > 0 && progress_.total >= progress_.done)
-        progress_.seconds_left = progress_.seconds * (progress_.total - progress_.done) / progress_.done;
+    if (rate_from_ && progress_.done > rate_from_->second && progress_.total >= progress_.done)
+        progress_.seconds_left = seconds(now - rate_from_->first) * (progress_.total - progress_.done) / (progress_.done - rate_from_->second);
     tell_(progress_);
     told_ = true;
     last_told_ = now;

@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/steps.h"
 
@@ -30,7 +31,7 @@ struct WorkProgress {
     std::string unit;   // what is counted: "rays", "polygons", …
     double done = 0, total = 0;
     double seconds = 0;                   // since the stage started
-    std::optional<double> seconds_left;   // a straight-line estimate, once something is done
+    std::optional<double> seconds_left;   // a straight-line estimate from the rate since the first look that found something done
     bool finished = false;                // the stage's last word (told only if something was told before)
     [[nodiscard]] std::string sentence() const;  // "ray cast: 120,000 of 262,144 rays (46 %), 3.1 s, about 3.6 s left"
 };
@@ -66,6 +67,7 @@ private:
     double first_tell_after_, tell_every_;
     WorkProgress progress_;
     Clock::time_point stage_start_ = Clock::now(), work_start_ = Clock::now(), last_told_{};
+    std::optional<std::pair<Clock::time_point, double>> rate_from_;  // the first look with something done, and how much
     std::uint64_t calls_ = 0;
     bool told_ = false;
 };

@@ -73,3 +73,19 @@ TEST_CASE("the progress sentence gives done, total, share, time and the time lef
     const WorkProgress unnamed{.seconds = 2.6};  // told before any stage was named (issue 53, item 12)
     CHECK(unnamed.sentence() == "getting ready, 2.6 s");
 }
+
+TEST_CASE("the time left is estimated from the rate since the first unit was done, not from the stage's set-up") {
+    // issue 53, item 12: a ray cast that built its grid for minutes before the first ray said 'about 7682 h left'
+    std::vector<WorkProgress> told;
+    WorkMeter meter([&](const WorkProgress& p) { told.push_back(p); }, nullptr, 0.0, 0.0);
+    meter.stage("ray cast", "rays", 100);
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // the set-up, before any ray
+    meter.at(1);
+    meter.look();
+    CHECK(!told.back().seconds_left);  // one look with something done: no rate yet
+    meter.at(50);
+    meter.look();
+    REQUIRE(told.back().seconds_left);
+    CHECK(*told.back().seconds_left < 0.2);  // 50 rays in next to no time: next to no time left (it said 0.4 s and more)
+    CHECK(told.back().seconds >= 0.4);       // the stage's own time still counts the set-up
+}
