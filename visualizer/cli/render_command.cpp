@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "cli/render_command.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <new>
@@ -19,7 +21,6 @@
 #include "scene/input_file.h"
 #include "analysis/painters.h"
 #include "cli/ids_png.h"
-#include "state/png_io.h"
 #include "state/arguments.h"
 #include "state/interrupt.h"
 #include "state/memory_budget.h"
@@ -194,6 +195,25 @@ void shade_by_facing_the_eye(algo::Scene& scene) {
     }
 }
 
+// What a render needs: bytes per triangle of each algorithm, measured (peak resident memory by /usr/bin/time, less
+// the 15 MB of a render of city:12) on city:300000 and city:1000000 at 512×512, the larger figure with a fifth more.
+// One figure for all (1200, the ray cast's grid in the window) refused city:20000000 as 'about 22.4 GB' where the
+// z-buffer peaks near 3.2 GB at 10^7 (issue 53, item 13).
+//   zbuffer 409 / 332, scanline 428, scanline-classic 410, raycast (grid) 720 / 680, depth-sort 258 (city:100000)
+//   bsp 4750 on city:100000; 886 MB when its build stops at its step bound on city:300000 (the tree it may grow
+//   is bounded, not the scene): per triangle up to that, and the scene's own bytes beyond it.
+std::uint64_t render_memory_estimate(const RenderOptions& o, std::uint64_t triangles, std::uint64_t pixels) {
+    constexpr std::uint64_t program = 64ull << 20;
+    if (o.algorithm == "bsp") {
+        constexpr std::uint64_t per_triangle = 5900, scene_bytes = 520, tree_at_bound = 1100ull << 20;
+        return program + std::min(triangles * per_triangle, tree_at_bound + triangles * scene_bytes) + pixels * bytes_per_pixel;
+    }
+    const std::uint64_t per_triangle = o.algorithm == "raycast" ? 870 : o.algorithm == "depth-sort" ? 320
+                                       : o.cull                   ? bytes_per_triangle  // the octree and occluders: the window's figure
+                                                                  : 520;
+    return program + triangles * per_triangle + pixels * bytes_per_pixel;
+}
+
 algo::Scene generated_or_loaded(const std::string& name) {
     if (auto generated = algo::generated_scene(name)) return std::move(*generated);
     return algo::load_scene(name);
@@ -208,9 +228,9 @@ int run_render(const RenderOptions& o) {
         const auto [w, h] = *size;
         const std::string work = "render of " + algo::printable(o.scene, 60) + " at " + o.size;
         // Before anything is generated or allocated: a generated scene's size is in its name
-        require_memory(memory_estimate(algo::generated_triangles(o.scene).value_or(0), std::uint64_t(w) * std::uint64_t(h)), work);
+        require_memory(render_memory_estimate(o, algo::generated_triangles(o.scene).value_or(0), std::uint64_t(w) * std::uint64_t(h)), work);
         algo::Scene scene = generated_or_loaded(o.scene);
-        require_memory(memory_estimate(scene.polygons.size(), std::uint64_t(w) * std::uint64_t(h)), work);
+        require_memory(render_memory_estimate(o, scene.polygons.size(), std::uint64_t(w) * std::uint64_t(h)), work);
         if (const auto refused = algo::polygons_not_convex(scene); !refused.empty())
             throw std::runtime_error(refused.front() + (refused.size() > 1 ? " (and " + std::to_string(refused.size() - 1) + " more)" : ""));
         if (o.cull && o.algorithm != "zbuffer") throw std::runtime_error("--cull works with --algorithm zbuffer");
@@ -248,8 +268,14 @@ int run_render(const RenderOptions& o) {
         algo::WorkMeter meter(progress_on_stderr, &ctrl_c.asked);
         const algo::Image image = renderer->second(scene, o, {w, h}, meter);
         meter.look();  // a Ctrl+C during the last events, or during work that is not metered (the culling pipeline)
-        if (!write_rgb_png(o.out, image)) throw std::runtime_error("cannot write " + algo::printable_name(o.out));
-        if (o.ids && !write_ids_png(*o.ids, image)) throw std::runtime_error("cannot write " + algo::printable_name(*o.ids));
+        if (!write_colour_png(o.out, image, &ctrl_c.asked)) throw std::runtime_error("cannot write " + algo::printable_name(o.out));
+        try {
+            if (o.ids && !write_ids_png(*o.ids, image, &ctrl_c.asked)) throw std::runtime_error("cannot write " + algo::printable_name(*o.ids));
+        } catch (...) {  // no colour picture without the ids asked for beside it
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(o.out, ec)) std::filesystem::remove(o.out, ec);
+            throw;
+        }
         std::printf("wrote %s%s%s\n", algo::printable_name(o.out).c_str(), o.ids ? " and " : "", o.ids ? algo::printable_name(*o.ids).c_str() : "");
         return 0;
     } catch (const algo::WorkStopped&) {
