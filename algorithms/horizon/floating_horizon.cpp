@@ -31,6 +31,8 @@ double curve_height(const Terrain& t, int row, double x) {
     return a + s * (b - a);
 }
 
+static_assert(max_terrain_rows * 256 <= max_horizon_points, "every terrain the reader takes fits a lesson's grid of 256 columns");
+
 Steps<HorizonEvent, HorizonImage> floating_horizon(Terrain terrain, HorizonOptions options) {
     check_terrain(terrain);
     if (options.columns < 1 || options.columns > 65536) throw InvalidInput("floating horizon: the screen has 1 to 65536 columns");

@@ -17,6 +17,9 @@ namespace {
 std::string terrain_problem(int columns, int rows, double elevation) {
     if (columns < 2) return "a terrain needs at least 2 columns (a curve is drawn between samples)";
     if (rows < 1) return "a terrain needs at least 1 row";
+    if (std::size_t(rows) > max_terrain_rows)
+        return "a terrain has at most " + std::to_string(max_terrain_rows) + " rows (the floating horizon draws each on up to 256 screen columns, "
+               "and stops at 20000000 points), not " + std::to_string(rows);
     if (std::size_t(columns) * std::size_t(rows) > max_terrain_samples)
         return "a terrain has at most " + std::to_string(max_terrain_samples) + " samples";
     if (!(elevation >= 0 && elevation <= 90)) return "the elevation is an angle from 0 (level) to 90 degrees (straight down)";

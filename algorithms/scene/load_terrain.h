@@ -15,6 +15,10 @@ namespace hsr::algo {
 
 inline constexpr double max_terrain_height = 1e300;  // beyond it a difference of two heights can overflow
 inline constexpr std::size_t max_terrain_samples = 4'000'000;
+// The floating horizon draws every row on each of the screen's columns (a lesson's grid: at most 256), and stops at
+// 2·10^7 points (horizon/floating_horizon.h): so that every terrain the reader takes can be played, it takes at most
+// this many rows (10^6 rows of 2 passed the samples' bound and then failed the machine's, without a line).
+inline constexpr std::size_t max_terrain_rows = 78'125;
 
 Terrain read_terrain(const TomlReader& r, const toml::table* t);  // t may be null: no terrain
 

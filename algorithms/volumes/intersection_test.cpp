@@ -184,13 +184,17 @@ std::vector<Ray> rays_of(const Scene& scene) {
     return rays;
 }
 
-Steps<IntersectionEvent, IntersectionResult> intersection_test(Scene scene, std::vector<Ray> rays, IntersectionOptions options) {
+void check_rays(const std::vector<Ray>& rays) {
     if (rays.empty()) throw InvalidInput("the intersection test needs a ray: give the scene a [[segments]] entry (from a through b)");
     for (const Ray& r : rays) {
         require_finite(glm::dvec4(r.origin, 1), "ray origin");
         require_finite(glm::dvec4(r.direction, 0), "ray direction");
         if (r.direction == Vec3(0)) throw InvalidInput("a ray's segment has a = b: it has no direction");
     }
+}
+
+Steps<IntersectionEvent, IntersectionResult> intersection_test(Scene scene, std::vector<Ray> rays, IntersectionOptions options) {
+    check_rays(rays);
     const BoundingModel model = bounding_model(scene, options.bounding);
     IntersectionResult result;
     for (std::uint32_t r = 0; r < rays.size() && !result.bounded; ++r) {

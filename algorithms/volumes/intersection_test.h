@@ -67,6 +67,9 @@ Ray unit_ray(const Ray& ray);
 
 // The rays a lesson tests: each of the scene's segments, from a through b and on.
 std::vector<Ray> rays_of(const Scene& scene);
+// InvalidInput when the rays cannot be tested (none, one not finite, one of no direction): looked at before the
+// hierarchy is built, which on a large scene takes seconds.
+void check_rays(const std::vector<Ray>& rays);
 
 struct IntersectionOptions {
     BoundingOptions bounding;

@@ -120,6 +120,23 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         lesson.grid = {int(g.x), int(g.y)};
     }
     const std::string scene = r.text(root, "scene", "");
+    // What the machine needs from its scene, checked before the scene is generated or its hierarchy built (an
+    // intersection test without a ray was refused only after 9 to 11 s building the hierarchy): a generated scene
+    // is polygons only
+    const std::string_view id = lesson.algorithm.id;
+    const auto needs = [&](bool generated) -> std::string {
+        if (id == "intersection_test" && (generated || lesson.scene.segments.empty()))
+            return "the intersection test needs a ray: give the scene a [[segments]] entry (from a through b)";
+        if (id == "floating_horizon" && (generated || lesson.scene.terrain.rows == 0))
+            return "the floating horizon needs a scene with a [terrain] (heights, or generate = \"hills\")";
+        return {};
+    };
+    bool generated_name = false;
+    try {
+        generated_name = algo::generated_triangles(scene).has_value();
+    } catch (const std::exception&) {  // a count out of range: said below
+    }
+    if (const std::string why = generated_name ? needs(true) : ""; !why.empty()) r.fail(root.get("scene"), "scene", algo::printable(scene, 60) + ": " + why);
     try {  // a generated scene by name: city:N, field:N, spheres:N
         if (const auto n = algo::generated_triangles(scene))  // refused before it is generated, not half-way
             require_memory(memory_estimate(*n, std::uint64_t(lesson.grid.width) * std::uint64_t(lesson.grid.height)),
@@ -139,6 +156,7 @@ Lesson read_lesson(const algo::TomlReader& r, std::optional<std::string> algorit
         if (e.line == 0) r.fail(root.get("scene"), "scene", algo::printable(scene_path.string()) + ": " + e.message);
         throw;  // an error inside the scene names the scene's own line
     }
+    if (const std::string why = needs(false); !why.empty()) r.fail(root.get("scene"), "scene", algo::printable(scene_path.string()) + ": " + why);
     return lesson;
 }
 
