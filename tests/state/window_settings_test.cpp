@@ -176,6 +176,27 @@ TEST_CASE("the settings file's neighbours are never written through, moved over 
         read_window_settings(path, warning);
         for (const char* topic : {"a", "b", "c", "d", "e", "f"}) CHECK(warning.find(std::string("'practice.") + topic + "'") != std::string::npos);
     }
+    SECTION("bad practice records are kept in the file when the settings are saved, and the warning says so") {
+        std::ofstream(path) << "[practice.bsp]\nanswered = 4\nright = 3\nbest_streak = 2\n[practice.zbuffer]\nanswered = 1\nright = 5\n"
+                               "best_streak = 0\n[practice.\"Odd Name\"]\nanswered = \"many\"\n";
+        WindowSettings read = read_window_settings(path, warning);
+        CHECK(warning.find("'practice.zbuffer'") != std::string::npos);
+        CHECK(warning.find("'practice.Odd Name'") != std::string::npos);
+        CHECK(warning.find("kept in the file as it is") != std::string::npos);
+        read.width = 1000;
+        REQUIRE(write_window_settings(path, read).empty());
+        const std::string saved = text_of(path);
+        CHECK(saved.find("[practice.zbuffer]") != std::string::npos);  // they vanished from the file (issue 53, item 11)
+        CHECK(saved.find("right = 5") != std::string::npos);
+        CHECK(saved.find("[practice.\"Odd Name\"]") != std::string::npos);
+        CHECK(saved.find("answered = 'many'") != std::string::npos || saved.find("answered = \"many\"") != std::string::npos);
+        CHECK(read_window_settings(path, warning).practice.at("bsp") == PracticeRecord{4, 3, 2});
+        // practising a bad record's topic starts it afresh: this run's record replaces the bad one
+        read.practice["zbuffer"] = {2, 1, 1};
+        REQUIRE(write_window_settings(path, read).empty());
+        CHECK(read_window_settings(path, warning).practice.at("zbuffer") == PracticeRecord{2, 1, 1});
+        CHECK(warning.find("'practice.zbuffer'") == std::string::npos);
+    }
     fs::remove_all(dir);
 }
 

@@ -113,7 +113,11 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
     if (const auto m = t["maximized"].value<bool>()) s.maximized = *m;
     if (const auto l = t["language"].value<std::string>(); l && l->size() <= 16) s.language = *l;
     if (const auto percent = integer("type_size", 50, 400)) s.scale = float(*percent) / 100;
-    // [practice.TOPIC] answered, right, best_streak: a topic with a bad field is skipped and named
+    // [practice.TOPIC] answered, right, best_streak: a topic with a bad field is skipped and named, each of them, and
+    // kept in the file as it is when the settings are saved (write_window_settings copies what it did not read)
+    if (const toml::node* p = t.get("practice"); p && !p->is_table())
+        add(algo::printable(path) + ":" + std::to_string(p->source().begin.line) +
+            ": field 'practice': expected tables [practice.TOPIC]; ignored (and left out when the settings are saved again)");
     if (const toml::table* practice = t["practice"].as_table())
         for (const auto& [topic, node] : *practice) {
             const toml::table* record = node.as_table();
@@ -127,7 +131,8 @@ WindowSettings read_window_settings(const std::string& path, std::string& warnin
             const auto answered = count("answered"), right = count("right"), best = count("best_streak");
             if (!named_well || !answered || !right || !best || *right > *answered || *best > *right) {
                 add(algo::printable(path) + ":" + std::to_string(node.source().begin.line) + ": field 'practice." + algo::printable(name, 40) +
-                    "': expected answered ≥ right ≥ best_streak, whole numbers; ignored");
+                    "': expected answered ≥ right ≥ best_streak, whole numbers; ignored, and kept in the file as it is (practising " +
+                    (named_well ? "this topic" : "anything") + " in this window " + (named_well ? "starts it afresh" : "leaves it there") + ")");
                 continue;
             }
             s.practice[name] = {*answered, *right, *best};
@@ -140,18 +145,21 @@ std::string write_window_settings(const std::string& path, const WindowSettings&
     std::error_code ec;
     const std::filesystem::path file(path);
     // only nothing, an empty file or a settings file is replaced: never a lesson, a link, a FIFO or a folder
-    if (const SettingsFile there = inspect(path); there.kind == Kind::foreign || there.kind == Kind::broken) return there.why + "; left alone";
+    const SettingsFile there = inspect(path);
+    if (there.kind == Kind::foreign || there.kind == Kind::broken) return there.why + "; left alone";
     if (!file.parent_path().empty()) std::filesystem::create_directories(file.parent_path(), ec);
     toml::table t{{"width", s.width}, {"height", s.height}, {"maximized", s.maximized}, {"side", int(s.side)}, {"language", s.language}};
     if (s.x) t.insert("x", *s.x);
     if (s.y) t.insert("y", *s.y);
     if (s.scale) t.insert("type_size", int(std::lround(*s.scale * 100)));  // in percent: a number a person reads
-    if (!s.practice.empty()) {
-        toml::table practice;
-        for (const auto& [topic, r] : s.practice)
-            practice.insert(topic, toml::table{{"answered", r.answered}, {"right", r.right}, {"best_streak", r.best_streak}});
-        t.insert("practice", std::move(practice));
-    }
+    toml::table practice;
+    for (const auto& [topic, r] : s.practice)
+        practice.insert(topic, toml::table{{"answered", r.answered}, {"right", r.right}, {"best_streak", r.best_streak}});
+    // the records this run did not hold (ones read as bad, and named then; or another window's) are kept as they were
+    if (const toml::table* old = there.kind == Kind::settings ? there.table["practice"].as_table() : nullptr)
+        for (const auto& [topic, node] : *old)
+            if (!practice.contains(topic.str())) practice.insert(topic, node);
+    if (!practice.empty()) t.insert("practice", std::move(practice));
     // A new file of its own, then renamed over the old one: a full disk or a crash mid-write leaves the old settings whole.
     std::ostringstream text;
     text << header << t << '\n';
