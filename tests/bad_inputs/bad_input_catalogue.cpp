@@ -451,6 +451,52 @@ std::vector<Case> catalogue() {
     cs.push_back(command("an unknown option", {"s.toml", "--colour", "red"}, 2, {"--colour"}));
     cs.push_back(command("an unknown subcommand option", {"check", "s.toml", "--fix"}, 2, {"--fix"}));
     cs.push_back(command("a control character in a file name", {"check", "a\x1b[31mred.toml"}, 1, {"a\\x1b[31mred.toml"}));
+    // ── issue 53's last points: what a lesson needs, checked before the work; bounds that agree; tiny triangles ───
+    {
+        const std::string no_ray = "title = \"t\"\nalgorithm = \"intersection_test\"\nscene = \"field:20000000\"\n";
+        Case c{"lesson: an intersection test on a generated scene (no ray), refused before it is generated", {{"s.toml", scene}, {"l.toml", no_ray}}, {}, {}};
+        // with the memory for it held back, the missing ray must be what is said: it is looked at first
+        c.runs.push_back({{"check", "l.toml"}, 1, {"l.toml:3:9:", "needs a ray"}, "", "HSRVIZ_MEMORY_LIMIT=2000000000", 0, {"needs about"}});
+        cs.push_back(c);
+        cs.push_back(bad_lesson("lesson: an intersection test on a scene without segments",
+                                "title = \"t\"\nalgorithm = \"intersection_test\"\nscene = \"s.toml\"\n", {"l.toml:3:9:", "needs a ray"}));
+        cs.push_back(bad_lesson("lesson: the floating horizon on a scene without a terrain",
+                                "title = \"t\"\nalgorithm = \"floating_horizon\"\nscene = \"city:1000\"\n", {"l.toml:3:9:", "needs a scene with a [terrain]"}));
+    }
+    for (const auto& [name, terrain] : std::vector<std::pair<std::string, std::string>>{
+             {"a million rows of 2, generated", "[terrain]\ngenerate = \"hills\"\ncolumns = 2\nrows = 1000000\n"},
+             {"78,126 rows of 2", [] {
+                  std::string t = "[terrain]\nheights = [\n";
+                  for (int j = 0; j < 78'126; ++j) t += "[0, 1],\n";
+                  return t + "]\n";
+              }()}}) {
+        Case c{"terrain: " + name + " (more rows than the floating horizon can draw on 256 columns)",
+               {{"s.toml", "name = \"hills\"\n" + terrain}}, {}, {}};
+        c.runs.push_back({{"check", "s.toml"}, 1, {"s.toml:", "a terrain has at most 78125 rows"}, ""});
+        c.runs.push_back({{"trace", "s.toml", "--out", "t.jsonl"}, 1, {"s.toml:", "a terrain has at most 78125 rows"}, "t.jsonl"});
+        cs.push_back(c);
+    }
+    {
+        const std::string tiny = with(scene, "vertices =", "vertices = [[-2e-160, -1e-160, -1.5e-160], [1.6e-160, -0.8e-160, 0.8e-160], [-0.4e-160, 1.6e-160, -0.2e-160]]");
+        Case c{"a triangle 1e-160 across: every algorithm takes it, the BSP too", {{"s.toml", tiny}}, {}, {}};
+        for (const char* algorithm : {"bsp", "zbuffer", "scanline", "scanline-classic", "raycast", "depth-sort"})
+            c.runs.push_back({{"render", "s.toml", "--algorithm", algorithm, "--size", "64x48", "--out", "o.png"}, 0, {"wrote o.png"}, "", "", 0, {"degenerate"}});
+        cs.push_back(c);
+    }
+    {
+        // Ctrl+C while a 16384×8192 picture is compressed (seconds): it stops, leaving no file (it was ignored for 30 s)
+        Case c{"render: Ctrl+C while the picture is written", {{"s.toml", scene}}, {}, {}};
+        c.runs.push_back({{"render", "s.toml", "--size", "16384x8192", "--out", "o.png"}, 130, {"stopped (Ctrl+C); no image written"}, "o.png", "", 4.0});
+        cs.push_back(c);
+    }
+    {
+        // the estimate from each algorithm's measured bytes per triangle, before anything is generated: the z-buffer on
+        // city:20000000 needs about 9.8 GB (it said 22.4 GB for every algorithm, refusing it on a 23 GB machine)
+        Case c{"render of city:20000000 with the z-buffer: its own estimate", {{"s.toml", scene}}, {}, {}};
+        c.runs.push_back({{"render", "city:20000000", "--algorithm", "zbuffer", "--out", "o.png"}, 1, {"needs about 9.8 GB of memory"}, "o.png",
+                          "HSRVIZ_MEMORY_LIMIT=2000000000"});
+        cs.push_back(c);
+    }
     // ── work no machine of the class can do: refused before it starts, with the figures ─────────────────────────
     for (const auto& [name, args] : std::vector<std::pair<std::string, std::vector<std::string>>>{
              {"render at 16384×16384", {"render", "s.toml", "--size", "16384x16384", "--out", "o.png"}},

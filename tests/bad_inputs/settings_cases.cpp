@@ -82,7 +82,15 @@ std::vector<Case> settings_cases() {
     std::string records;
     for (const char* topic : {"a", "b", "c", "d", "e", "f"}) records += std::string("[practice.") + topic + "]\nanswered = 1\nright = 5\nbest_streak = 0\n";
     add("six bad practice records", {{"window.toml", records}}, {},
-        window_saving("window.toml", 0, {"'practice.a'", "'practice.b'", "'practice.c'", "'practice.d'", "'practice.e'", "'practice.f'"}), {});
+        window_saving("window.toml", 0, {"'practice.a'", "'practice.b'", "'practice.c'", "'practice.d'", "'practice.e'", "'practice.f'",
+                                         "kept in the file as it is"}),
+        [](const fs::path& d) -> std::string {  // all six vanished from the file when it was saved
+            const std::string saved = read(d / "window.toml");
+            if (saved.rfind(ours, 0) != 0) return "the settings were not saved";
+            for (const char* topic : {"a", "b", "c", "d", "e", "f"})
+                if (saved.find(std::string("[practice.") + topic + "]") == std::string::npos) return std::string("practice.") + topic + " was lost";
+            return "";
+        });
     return cs;
 }
 
