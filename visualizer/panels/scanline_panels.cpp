@@ -40,12 +40,24 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50});
     });
     for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
-    std::vector<ImVec4> taken;
-    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_name(d, o, cell, (*v.polygons)[k], "#" + std::to_string(k), taken);
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
         d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), canvas_px(3));
     }
+    std::vector<ImVec4> taken;  // the words placed so far: the polygons' names keep off the edges' numbers
+    // each active edge's number, as the edge table and the questions name it, low on the edge: the top, where edges
+    // meet at a triangle's tip and the line's in/out words stand, is crowded
+    for (std::uint32_t e : v.active) {
+        const algo::EdgeEntry& edge = (*v.edges)[e];
+        const ImVec2 a = on_grid(o, cell, edge.a), b = on_grid(o, cell, edge.b);
+        const std::string text = tr("scanline.edge_label", {{"edge", std::to_string(e)}});
+        const ImVec2 top = a.y <= b.y ? a : b, bottom = a.y <= b.y ? b : a;
+        const ImVec2 size = ImGui::CalcTextSize(text.c_str()), at(top.x + (bottom.x - top.x) * 0.75f + 6, top.y + (bottom.y - top.y) * 0.75f - size.y / 2);
+        d->AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + size.x + 2, at.y + size.y), IM_COL32(20, 22, 26, 200), 2);
+        d->AddText(at, IM_COL32(255, 255, 255, 255), text.c_str());
+        taken.push_back(ImVec4(at.x - 2, at.y, at.x + size.x + 2, at.y + size.y));
+    }
+    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_name(d, o, cell, (*v.polygons)[k], "#" + std::to_string(k), taken);
     if (v.line >= 0) {
         const float ly = o.y + (float(v.line) + 0.5f) * cell;
         d->AddLine(ImVec2(o.x - 8, ly), ImVec2(o.x + cell * float(v.viewport.width) + 8, ly), IM_COL32(255, 230, 90, 255), canvas_px(2));

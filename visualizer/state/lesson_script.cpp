@@ -97,12 +97,18 @@ std::vector<std::string> LessonScript::problems(const Lesson& lesson, const std:
             out.push_back(q + ".field: the event \"" + ch.question->answer_event.kind + "\" has no field \"" + ch.question->field +
                           "\"; it has " + fields);
         } else if (places_[c].answered && !ch.question->choices.empty() &&
-                 std::find(ch.question->choices.begin(), ch.question->choices.end(), places_[c].answer) == ch.question->choices.end())
+                 std::none_of(ch.question->choices.begin(), ch.question->choices.end(),
+                              [&](const std::string& choice) { return choice_is(choice, places_[c].answer); }))
             out.push_back(q + ".choices: the machine's answer \"" + places_[c].answer + "\" is not among them");
     }
     return out;
 }
 
-Verdict judge(const ChapterPlace& place, const std::string& given) { return {given == place.answer, place.answer, place.because}; }
+// "#0" rather than "0": the keys 1, 2, 3 then do not read as the numbers 0, 1, 2 they choose.
+bool choice_is(const std::string& choice, const std::string& answer) {
+    return choice == answer || (choice.size() > 1 && choice[0] == '#' && choice.substr(1) == answer);
+}
+
+Verdict judge(const ChapterPlace& place, const std::string& given) { return {choice_is(given, place.answer), place.answer, place.because}; }
 
 }  // namespace hsr::viz

@@ -44,6 +44,9 @@ struct Verdict {
     std::string answer, because;
     bool revealed = false;  // the deciding event was shown before an answer was given: no score
 };
+// Whether a question's choice names the machine's answer: as the machine tells it ("0"), or as the picture labels a
+// polygon ("#0").
+bool choice_is(const std::string& choice, const std::string& answer);
 Verdict judge(const ChapterPlace& place, const std::string& given);
 
 }  // namespace hsr::viz
