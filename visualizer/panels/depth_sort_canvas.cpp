@@ -13,6 +13,7 @@
 #include "raster/image.h"
 #include "panels/depth_sort_panels.h"
 #include "panels/fat_pixels.h"
+#include "panels/name_placement.h"
 #include "panels/panel_style.h"
 #include "state/strings.h"
 
@@ -127,30 +128,9 @@ void extent_bar(ImDrawList* d, const Screen& screen, const SortPolygon& p, bool 
 void number_label(ImDrawList* d, const Screen& screen, const SortPolygon& p, std::uint32_t i, std::vector<ImVec4>& taken) {
     if (p.vertices.empty()) return;
     std::vector<ImVec2> corners;
-    ImVec2 c(0, 0);
-    for (const auto& v : p.vertices) {
-        corners.push_back(screen(v.x, v.y));
-        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
-    }
-    std::vector<ImVec2> candidates{c};
-    for (const float t : {0.45f, 0.7f})
-        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
+    for (const auto& v : p.vertices) corners.push_back(screen(v.x, v.y));
     const std::string text = "#" + std::to_string(i);
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    for (const float k : {1.1f, 2.2f})  // a polygon too small for its number: beside it
-        for (const ImVec2 dir : {ImVec2(0, 1), ImVec2(0, -1), ImVec2(1, 0), ImVec2(-1, 0)})
-            candidates.push_back(ImVec2(c.x + dir.x * k * (size.x + 4), c.y + dir.y * k * (size.y + 2)));
-    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 2, at.y - size.y / 2 - 1, at.x + size.x / 2 + 2, at.y + size.y / 2 + 1); };
-    const auto free = [&](const ImVec4& b) {
-        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
-    };
-    ImVec4 b = box(c);
-    for (const ImVec2& at : candidates)
-        if (free(box(at))) {
-            b = box(at);
-            break;
-        }
-    taken.push_back(b);
+    const ImVec4 b = place_name(corners, ImGui::CalcTextSize(text.c_str()), 2, {0.45f, 0.7f}, true, taken);
     d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(26, 28, 33, 215), 2);
     d->AddText(ImVec2(b.x + 2, b.y + 1), text_colour, text.c_str());
 }

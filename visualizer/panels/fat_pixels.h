@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "raster/image.h"
+#include "panels/name_placement.h"
 #include "raster/screen_polygon.h"
 
 namespace hsr::viz {
@@ -60,26 +61,8 @@ inline void outline(ImDrawList* d, ImVec2 origin, float cell, const algo::Screen
 inline void polygon_name(ImDrawList* d, ImVec2 origin, float cell, const algo::ScreenPolygon& p, const std::string& text, std::vector<ImVec4>& taken) {
     if (p.status != algo::ScreenStatus::drawn || p.vertices.empty()) return;
     std::vector<ImVec2> corners;
-    ImVec2 c(0, 0);
-    for (const auto& q : p.vertices) {
-        corners.push_back(on_grid(origin, cell, q));
-        c.x += corners.back().x / float(p.vertices.size()), c.y += corners.back().y / float(p.vertices.size());
-    }
-    std::vector<ImVec2> candidates{c};
-    for (const float t : {0.4f, 0.6f})
-        for (const ImVec2& v : corners) candidates.push_back(ImVec2(c.x + (v.x - c.x) * t, c.y + (v.y - c.y) * t));
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const auto box = [&](ImVec2 at) { return ImVec4(at.x - size.x / 2 - 3, at.y - size.y / 2 - 1, at.x + size.x / 2 + 3, at.y + size.y / 2 + 1); };
-    const auto free = [&](const ImVec4& b) {
-        return std::none_of(taken.begin(), taken.end(), [&](const ImVec4& t) { return b.x < t.z && t.x < b.z && b.y < t.w && t.y < b.w; });
-    };
-    ImVec4 b = box(c);
-    for (const ImVec2& at : candidates)
-        if (free(box(at))) {
-            b = box(at);
-            break;
-        }
-    taken.push_back(b);
+    for (const auto& q : p.vertices) corners.push_back(on_grid(origin, cell, q));
+    const ImVec4 b = place_name(corners, ImGui::CalcTextSize(text.c_str()), 3, {0.4f, 0.6f}, false, taken);
     // a light backing, so that the pixels under a name still show their colour (a fill-rule lesson is about single
     // pixels); white words, never the colour of the pixels under them, and the polygon's colour in a bar beside them
     d->AddRectFilled(ImVec2(b.x - 4, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 165), 3);
