@@ -57,6 +57,18 @@ TEST_CASE("a question never takes more than 60 % of the column, and needs beyond
     CHECK(sum(h) == Approx(800));
 }
 
+TEST_CASE("while a question is open, the state box's rows come before more narration and pseudocode", "[column]") {
+    // lesson 01's second question at 1280×800: the outcode table's last rows fell below its box while the
+    // narration kept two blank lines and the pseudocode its lines above and below
+    const auto h = ColumnFit::share(asks({240, 240}, {110, 230}, {60, 150}, {60, 140}, {90, 90}), 700);
+    CHECK(h[2] == 150);               // the table in full
+    CHECK(h[3] >= 60);                // the narration's sentence
+    CHECK(h[1] >= 110);               // the running line with its neighbours
+    CHECK(sum(h) == Approx(700));
+    const auto without = ColumnFit::share(asks({240, 240}, {110, 230}, {60, 150}, {60, 140}), 610);
+    CHECK(without[2] < 150);          // no question: the boxes share fairly as before
+}
+
 TEST_CASE("the fitted column keeps the state and narration boxes' largest size for the lesson", "[column]") {
     ColumnFit fit;
     fit.arrange(700, "a.toml");

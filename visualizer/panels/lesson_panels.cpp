@@ -97,12 +97,14 @@ void pseudocode_panel(const Session& s, const PanelLayout& l) {
         }
         ImGui::TextUnformatted(row.text.c_str());
     }
-    // all rows when there is room; must be seen: the title and five rows (the running one among them)
+    // all rows when there is room; must be seen: the title and five rows (the running one among them), while a
+    // question is open three (the running one between the two saying how many more there are)
     auto height_of = [&](std::size_t n) {
         return ImGui::GetCursorStartPos().y + float(n) * row_height - style.ItemSpacing.y + style.WindowPadding.y + 2;
     };
     if (monospace_font()) ImGui::PopFont();
-    if (l.fit) l.fit->asked(Box::pseudocode, {height_of(std::min<std::size_t>(rows.size(), 5)), height_of(rows.size())});
+    if (l.fit) l.fit->asked(Box::pseudocode, {height_of(std::min<std::size_t>(rows.size(), 5)), height_of(rows.size()),
+                                                   height_of(std::min<std::size_t>(rows.size(), 3))});
     audit_current_window();
     ImGui::End();
 }

@@ -34,7 +34,8 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
     // then what the lesson box must show (the chapter's text is the lesson; up to half of what is left)
     const auto lesson = std::size_t(Box::lesson);
     std::array<float, box_count - 1> need{}, extra{};
-    for (std::size_t i = 0; i < need.size(); ++i) need[i] = std::min(asks[i].need, asks[i].full);
+    for (std::size_t i = 0; i < need.size(); ++i)
+        need[i] = std::min(h[q] > 0 && asks[i].least > 0 ? asks[i].least : asks[i].need, asks[i].full);
     h[lesson] = std::min(need[lesson], room / 2);
     room -= h[lesson];
     need[lesson] = 0;
@@ -68,6 +69,12 @@ std::array<float, box_count> ColumnFit::share(const std::array<BoxAsk, box_count
         h[lesson] += more;
         room -= more;
         extra[lesson] = 0;
+    }
+    if (h[q] > 0) {  // a question is open: it asks about what the state box holds, which comes before more narration
+        const float more = std::clamp(extra[state], 0.0f, std::max(room, 0.0f));
+        h[state] += more;
+        room -= more;
+        extra[state] = 0;
     }
     const auto second = fair(extra, room);
     for (std::size_t i = 0; i < extra.size(); ++i) {
@@ -121,7 +128,7 @@ void ColumnFit::asked(Box b, BoxAsk ask) {
     // the boxes that change at every step keep their largest size (a default was only a guess); the lesson text
     // changes with the chapter, the pseudocode never, the question once
     const bool steady = b == Box::state || b == Box::narration;
-    a = seen && steady ? BoxAsk{std::max(a.need, ask.need), std::max(a.full, ask.full)} : ask;
+    a = seen && steady ? BoxAsk{std::max(a.need, ask.need), std::max(a.full, ask.full), std::max(a.least, ask.least)} : ask;
     seen = drawn_[std::size_t(b)] = true;
 }
 

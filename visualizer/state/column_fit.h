@@ -23,9 +23,10 @@ struct BoxSlot {
     float y = 0, h = 0;
 };
 
-// What a box asks for: `need` must be seen, `full` is all of it (0: not drawn).
+// What a box asks for: `need` must be seen, `full` is all of it (0: not drawn); `least`, when set, is what must be
+// seen while a question is open (the pseudocode's running line alone: the question is about the picture and the state).
 struct BoxAsk {
-    float need = 0, full = 0;
+    float need = 0, full = 0, least = 0;
 };
 
 class ColumnFit {
@@ -46,7 +47,8 @@ public:
 
     // The arithmetic of arrange, for tests: the question first (up to 60 % of the column), the lesson's need (up to
     // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
-    // remains equally); what is left over goes to the state box, else the narration. With `result_first`, the state
+    // remains equally; while a question is open, the state box's rest comes first: the question is about what it holds);
+    // what is left over goes to the state box, else the narration. With `result_first`, the state
     // box's full height (up to what the question, the lesson and the narration's need leave, at least 70 % of it)
     // and then the narration's need come before the pseudocode's comes before the other boxes' needs.
     static std::array<float, box_count> share(const std::array<BoxAsk, box_count>& asks, float height, bool result_first = false);
