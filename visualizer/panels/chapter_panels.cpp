@@ -83,9 +83,16 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
             const std::string& choice = q->choices[i];
             const std::string shown = window_strings().word(choice);  // "entering" in the student's language
             const bool numbered = choice.rfind(number + ".", 0) == 0;
+            // a choice numbered otherwise by the notes ("3'. Q wholly behind R's plane", the seventh choice) keeps its
+            // own number in front and its key after it, in brackets: not two numbers side by side
+            const std::size_t dot = choice.find(". ");
+            const bool own_number = !numbered && dot != std::string::npos && dot <= 3 && std::isdigit(static_cast<unsigned char>(choice[0]));
             // a choice that is itself a number ("0", "4") gets its key in brackets, so that "1  0" does not read as 10
             const bool number_choice = !choice.empty() && (std::isdigit(static_cast<unsigned char>(choice[0])) || choice[0] == '-');
-            const std::string label = numbered ? shown : number_choice ? "[" + number + "]  " + shown : number + "  " + shown;
+            const std::string label = numbered     ? shown
+                                      : own_number ? shown + "  [" + number + "]"
+                                      : number_choice ? "[" + number + "]  " + shown
+                                                      : number + "  " + shown;
             const float button_width = ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x;
             if (i > 0) {
                 ImGui::SameLine();
