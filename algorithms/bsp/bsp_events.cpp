@@ -52,10 +52,10 @@ constexpr Saying candidate{"bsp.candidate",
 constexpr Saying chosen{"bsp.chosen", "node {node} (depth {depth}): polygon {splitter} is its splitter"};
 constexpr Saying chosen_best{"bsp.chosen_best",
                              "node {node} (depth {depth}): polygon {splitter} is its splitter, the best of {candidates} candidates (score {score})"};
-constexpr Saying in_front{"bsp.in_front", "{polygon} is front of node {node}'s plane"};
-constexpr Saying behind{"bsp.behind", "{polygon} is back of node {node}'s plane"};
-constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar of node {node}'s plane"};
-constexpr Saying spanning{"bsp.spanning", "{polygon} is spanning of node {node}'s plane"};
+constexpr Saying in_front{"bsp.in_front", "{polygon} is in front of node {node}'s plane"};
+constexpr Saying behind{"bsp.behind", "{polygon} is behind node {node}'s plane"};
+constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar with node {node}'s plane"};
+constexpr Saying spanning{"bsp.spanning", "{polygon} spans node {node}'s plane"};
 constexpr Saying split{"bsp.split",
                        "{polygon} spans the plane: split into {front_part} (front, {front} {front?vertex|vertices}) and "
                        "{back_part} (back, {back} {back?vertex|vertices})"};
@@ -63,8 +63,8 @@ constexpr Saying node_finished{"bsp.node_finished",
                                "node {node} keeps {coplanar} {coplanar?polygon|polygons}; {front} go to the front subtree, {back} to the back"};
 constexpr Saying built{"bsp.built",
                        "built: {nodes} nodes, depth {depth}, {polygons} polygons in its nodes after {splits} splits"};
-constexpr Saying eye_front{"bsp.eye_front", "the eye is front of node {node}'s plane (distance {distance}): {first}"};
-constexpr Saying eye_back{"bsp.eye_back", "the eye is back of node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying eye_front{"bsp.eye_front", "the eye is in front of node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying eye_back{"bsp.eye_back", "the eye is behind node {node}'s plane (distance {distance}): {first}"};
 constexpr Saying eye_on{"bsp.eye_on", "the eye is on node {node}'s plane (distance {distance}): {first}"};
 constexpr Saying drawn{"bsp.drawn", "draw {polygon} (number {order})"};
 constexpr Saying traversal_finished{"bsp.traversal_finished", "{drawn} polygons drawn"};

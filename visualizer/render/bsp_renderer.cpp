@@ -136,6 +136,13 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
     }
 }
 
+std::vector<glm::vec3> bsp_view_points(const BspView& v) {
+    std::vector<glm::vec3> points = {glm::vec3(v.eye)};
+    for (const auto& p : v.polygons)
+        for (const Vec3& x : *p.vertices) points.emplace_back(x);
+    return points;
+}
+
 void bsp_view_bounds(const BspView& v, glm::vec3& centre, float& radius) {
     Vec3 lo, hi;
     bounds(v, lo, hi);

@@ -15,5 +15,7 @@ namespace hsr::viz {
 
 void draw_bsp_view(const BspView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
 void bsp_view_bounds(const BspView& view, glm::vec3& centre, float& radius);
+// What the view draws, to frame it: the polygons' corners and the eye.
+std::vector<glm::vec3> bsp_view_points(const BspView& view);
 
 }  // namespace hsr::viz

@@ -53,10 +53,16 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
         camera.yaw = 0, camera.pitch = 0;  // face the plane z = 0
         // the plan sits above the first-person strip: framed as if it reached a third further down
         centre.y -= 0.3f * radius, radius *= 1.3f;
-    } else if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
-        const glm::dvec3 d = glm::normalize(from);
-        camera.yaw = float(std::atan2(d.x, d.z));
-        camera.pitch = float(std::clamp(std::asin(d.y) + 0.25, -1.4, 1.4));
+    } else {
+        if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
+            const glm::dvec3 d = glm::normalize(from);
+            camera.yaw = float(std::atan2(d.x, d.z));
+            camera.pitch = float(std::clamp(std::asin(d.y) + 0.25, -1.4, 1.4));
+        }
+        // the tree is in the view's right part (bsp_tree_canvas), the eye's picture at its lower left
+        // (bsp_painted_canvas, its top at about 0.66 of the height at 1280×800, 0.62 on a projector)
+        frame_points_in_part(camera, bsp_view_points(s.view()), {0, 1 - side_box_share, 0.62f});
+        return;
     }
     frame_left_of_side_box(camera, centre, radius);  // the tree is in the view's right part (bsp_tree_canvas)
 }

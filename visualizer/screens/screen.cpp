@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "screens/screen.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 namespace hsr::viz {
@@ -27,18 +29,48 @@ void frame_bounds(OrbitCamera& camera, glm::vec3 centre, float radius) {
     camera.distance = radius * 2.4f;
 }
 
+namespace {
+// The camera's right and up in the world (its view direction from yaw and pitch).
+glm::vec3 camera_right(const OrbitCamera& c) { return {std::cos(c.yaw), 0, -std::sin(c.yaw)}; }
+glm::vec3 camera_up(const OrbitCamera& c) {
+    return {-std::sin(c.pitch) * std::sin(c.yaw), std::cos(c.pitch), -std::sin(c.pitch) * std::cos(c.yaw)};
+}
+}  // namespace
+
+void frame_in_part(OrbitCamera& camera, glm::vec3 centre, float radius, ViewPart part) {
+    radius /= std::min(part.right - part.left, part.bottom);  // the scene keeps the part's width and height
+    // half the view's height at the target is 2.4 · tan(22.5°) ≈ 0.994 radii; its half-width 1.1 times that. The
+    // target moves so that the centre is seen in the middle of the part: to its right when the part is at the
+    // view's left, down along the camera's up when the part is at the view's top (which lifts the scene)
+    const float across = 1 - (part.left + part.right), down = 1 - part.bottom;
+    frame_bounds(camera, centre + camera_right(camera) * (0.994f * 1.1f * across * radius) - camera_up(camera) * (0.994f * down * radius), radius);
+}
+
+void frame_points_in_part(OrbitCamera& camera, const std::vector<glm::vec3>& points, ViewPart part) {
+    if (points.empty()) return;
+    // the points' extent across, up and along the picture (projected on the camera's right, up and view direction)
+    const glm::vec3 right = camera_right(camera), up = camera_up(camera), along = glm::cross(up, right);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec3& p : points) {
+        const glm::vec3 q(glm::dot(p, right), glm::dot(p, up), glm::dot(p, along));
+        lo = glm::min(lo, q), hi = glm::max(hi, q);
+    }
+    const glm::vec3 mid = (lo + hi) * 0.5f, half = (hi - lo) * 0.5f;
+    const glm::vec3 centre = right * mid.x + up * mid.y + along * mid.z;
+    // the radius that holds them: the height as is, the width for a view 1.1 times as wide as tall; a quarter more for
+    // perspective (the nearer points are drawn larger than their projection on the target's plane)
+    const float least = std::min(part.right - part.left, part.bottom);
+    const float width = (part.right - part.left) / least, height = part.bottom / least;
+    const float radius = 1.25f * std::max({half.y / height, half.x / (1.1f * width), 0.25f});
+    frame_in_part(camera, centre, radius, part);
+}
+
 void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share) {
-    radius /= 1 - share;  // the scene keeps the width left of the box
-    // half the view's height at the target is 2.4 · tan(22.5°) ≈ 0.994 radii; its half-width 1.1 times that
-    const glm::vec3 right(std::cos(camera.yaw), 0, -std::sin(camera.yaw));
-    frame_bounds(camera, centre + right * (0.994f * 1.1f * share * radius), radius);
+    frame_in_part(camera, centre, radius, {0, 1 - share, 1});
 }
 
 void frame_above_foot_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share) {
-    radius /= 1 - share;  // the scene keeps the height above the box
-    // the camera's up on the screen, in the world: moving the target down along it lifts the scene in the picture
-    const glm::vec3 up(-std::sin(camera.pitch) * std::sin(camera.yaw), std::cos(camera.pitch), -std::sin(camera.pitch) * std::cos(camera.yaw));
-    frame_bounds(camera, centre - up * (0.994f * share * radius), radius);
+    frame_in_part(camera, centre, radius, {0, 1, 1 - share});
 }
 
 }  // namespace hsr::viz

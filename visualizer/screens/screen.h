@@ -117,5 +117,15 @@ void frame_bounds(OrbitCamera& camera, glm::vec3 centre, float radius);
 void frame_left_of_side_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share = side_box_share);
 // The same, above a box across the view's foot taking `share` of its height (begin_view_foot_box).
 void frame_above_foot_box(OrbitCamera& camera, glm::vec3 centre, float radius, float share);
+// A part of the view, in fractions of its width (from the left) and height (from the top): the part a scene has
+// beside the boxes drawn over the view.
+struct ViewPart {
+    float left = 0, right = 1, bottom = 1;
+};
+// The sphere framed in that part of the view.
+void frame_in_part(OrbitCamera& camera, glm::vec3 centre, float radius, ViewPart part);
+// The points framed in that part as the camera (its yaw and pitch set) sees them: as large as their extent across
+// and up the picture allows, not a sphere around them (a scene with its eye far behind it fills the part).
+void frame_points_in_part(OrbitCamera& camera, const std::vector<glm::vec3>& points, ViewPart part);
 
 }  // namespace hsr::viz
