@@ -248,13 +248,13 @@ std::vector<ShownBox> shown_boxes(const CullingView& v) {
 std::vector<std::uint32_t> named_primitives(const CullingView& v) {
     std::vector<std::uint32_t> out;
     if (v.world->machine != CullingMachine::occluders) return out;
-    if (v.done) {  // every primitive that reached the stage, culled or passed on: the last chapter names them
-        for (std::uint32_t p = 0; p < v.primitives.size(); ++p)
-            if (v.primitives[p] == PrimitiveMark::kept || v.primitives[p] == PrimitiveMark::left_out) out.push_back(p);
-        if (out.size() > max_named_at_end) out.clear();  // a crowd of labels names nothing
-        return out;
-    }
-    if (v.current < 0) return out;
+    // every primitive that reached the stage, culled, passed on or still to test, when they are few: the chapters
+    // and questions name them ("find #13 in the picture") before their turn comes
+    for (std::uint32_t p = 0; p < v.primitives.size(); ++p)
+        if (v.primitives[p] != PrimitiveMark::earlier) out.push_back(p);
+    if (out.size() <= max_named) return out;
+    out.clear();  // a crowd of labels names nothing: the primitive under test and the next in its node
+    if (v.done || v.current < 0) return out;
     if (v.primitive >= 0) out.push_back(std::uint32_t(v.primitive));
     if (v.nodes[std::size_t(v.current)] != NodeMark::partial) return out;  // only a node partly inside tests its own
     for (std::uint32_t p : v.world->hierarchy.nodes[std::size_t(v.current)].primitives)

@@ -72,10 +72,10 @@ struct ShownBox {
     bool labelled;
 };
 std::vector<ShownBox> shown_boxes(const CullingView& view);
-// The primitives the view labels with their numbers ("#7", as the sentences number them): an occluder lesson's
-// primitive last tested on its own and the next one its node tests; at its end, each that reached the stage (up to
-// max_named_at_end of them).
-inline constexpr std::size_t max_named_at_end = 12;
+// The primitives the view labels with their numbers ("#7", as the sentences number them) in an occluder lesson:
+// each that reached the stage, when they are at most max_named; else the primitive last tested on its own and the
+// next one its node tests.
+inline constexpr std::size_t max_named = 12;
 std::vector<std::uint32_t> named_primitives(const CullingView& view);
 
 // Hi-Z: the depth buffer of the primitives rendered so far (the Z-pyramid is built from it).
