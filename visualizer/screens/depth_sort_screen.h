@@ -16,7 +16,7 @@ class Screen<DepthSortSession> : public ScreenDefaults {
 public:
     void frame(const DepthSortSession&, OrbitCamera& camera) {  // the canonical view volume, from the eye's side
         camera.yaw = 0.55f, camera.pitch = 0.35f;
-        frame_bounds(camera, glm::vec3(0), 1.6f);
+        frame_above_foot_box(camera, glm::vec3(0), 1.45f, 0.38f);  // above the two insets (depth_sort_insets)
         chips_ = {}, painted_for_.reset();
     }
     void draw_scene(const DepthSortSession& s, SceneFrame& f) const {
