@@ -38,13 +38,15 @@ case "$case" in
         done
       done
       # in German too (L switches; the settings file then remembers it, so each run starts from a fresh one): the first
-      # question as it opens and the lesson's end, at 1280×800, no box cut and no word broken
+      # question as it opens and the lesson's end, at 1280×800, no box cut and no word broken, and at the end what the
+      # lesson built in full view
       if grep -q '"de"' "$lesson"; then
         for keys in L,End L,End,1,End,1,End,1,End,1,End,1,End,1,End,1,End,1,End; do
           rm -f "$HSRVIZ_CONFIG"
           "$hsrviz" "$lesson" --size 1280x800 --keys "$keys" --screenshot l.png --frames 5 > out.txt
           grep -q "narration de" out.txt
           if grep "layout:" out.txt; then echo "in $name in German after $keys"; exit 1; fi
+          if [ "$keys" != L,End ] && grep "result scrolls:" out.txt; then echo "in $name in German at its end"; exit 1; fi
         done
         rm -f "$HSRVIZ_CONFIG"
       fi

@@ -69,6 +69,22 @@ TEST_CASE("while a question is open, the state box's rows come before more narra
     CHECK(without[2] < 150);          // no question: the boxes share fairly as before
 }
 
+TEST_CASE("a box whose slot holds what it asked for is drawn without a scrollbar", "[column]") {
+    // a scrollbar shown for one frame narrowed the German end card's text, which then asked for a line more, and
+    // the column swung between two arrangements frame after frame (the lesson box's last line cut in one of them)
+    ColumnFit fit;
+    fit.arrange(700, "a.toml");
+    fit.asked(Box::lesson, {300, 300}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::state, {150, 150}), fit.asked(Box::narration, {60, 60}), fit.asked(Box::question, {106, 106});
+    fit.arrange(700, "a.toml");
+    CHECK(fit.holds(Box::question));
+    CHECK(fit.holds(Box::lesson));
+    fit.asked(Box::lesson, {300, 300}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::state, {400, 400}), fit.asked(Box::narration, {60, 60}), fit.asked(Box::question, {106, 106});
+    fit.arrange(700, "a.toml");
+    CHECK_FALSE(fit.holds(Box::state));  // squeezed: it scrolls, with its scrollbar showing
+}
+
 TEST_CASE("the fitted column keeps the state and narration boxes' largest size for the lesson", "[column]") {
     ColumnFit fit;
     fit.arrange(700, "a.toml");

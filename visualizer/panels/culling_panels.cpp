@@ -83,7 +83,8 @@ void pipeline_table(const CullingView& v) {
         ImGui::TableNextColumn();
         ImGui::Text("%.2f", r.milliseconds);
         ImGui::TableNextColumn();
-        ImGui::ProgressBar(r.in ? float(r.left_out) / float(r.in) : 0.0f, ImVec2(-1, 0), "");
+        // the share left out as a bar a line of text tall: the rows as close as the table's others
+        ImGui::ProgressBar(r.in ? float(r.left_out) / float(r.in) : 0.0f, ImVec2(-1, ImGui::GetTextLineHeight()), "");
     }
     ImGui::EndTable();
     if (!not_needed.empty()) wrapped_text(tr("culling.not_needed_stages", {{"stages", not_needed}}), dim_text);
@@ -163,8 +164,10 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l, bool lege
     begin_column_box(l, Box::state, (tr("culling.title") + "###state").c_str());
     const CullingView& v = s.culling_view();
     const auto n = [](auto value) { return std::to_string(value); };
-    // one clause per fact, joined by " · " (each a whole sentence in its language)
-    std::string header = s.culling_machine() == algo::CullingMachine::bounds
+    // one clause per fact, joined by " · " (each a whole sentence in its language); at the end the pipeline table
+    // holds the stage's kept and left out, and the line only names it
+    std::string header = v.done && s.culling_machine() != algo::CullingMachine::bounds ? machine_name(s.culling_machine())
+                         : s.culling_machine() == algo::CullingMachine::bounds
                              ? tr("culling.built_so_far", {{"machine", machine_name(s.culling_machine())}, {"built", n(v.built)},
                                                            {"nodes", n(v.world->hierarchy.nodes.size())}, {"leaves", n(v.leaves)}})
                              : tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
@@ -175,7 +178,8 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l, bool lege
         const algo::OccluderKind k = v.world->occluders;
         std::string shape = tr(k == algo::OccluderKind::solid ? "culling.shape_solid" : k == algo::OccluderKind::proxy ? "culling.shape_proxy" : "culling.shape_planar");
         if (v.world->fusion) shape = tr("culling.shape_fused", {{"shape", shape}});
-        header += " · " + tr("culling.occluders_shape", {{"shape", shape}});
+        const std::string shape_clause = tr("culling.occluders_shape", {{"shape", shape}});  // names the stage too
+        header = v.done ? shape_clause : header + " · " + shape_clause;
         if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
     }
     wrapped_text(header, dim_text);

@@ -54,7 +54,7 @@ inline ImDrawList* begin_canvas(const char* name, float x, float y, float w, flo
 inline void begin_column_box(const PanelLayout& l, Box b, const char* title, ImGuiWindowFlags flags = fixed) {
     const auto slot = l.slot(b);
     place(l.width - l.side, slot.y, l.side, slot.h);
-    ImGui::Begin(title, nullptr, flags);
+    ImGui::Begin(title, nullptr, l.fit && l.fit->holds(b) ? flags | ImGuiWindowFlags_NoScrollbar : flags);
 }
 
 // The height of the box's content down to the cursor: the content's bottom (the cursor stands one item spacing below

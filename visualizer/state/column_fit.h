@@ -44,6 +44,10 @@ public:
     // A box left undrawn this frame because its slot holds not one row (the pseudocode at a lesson's end) keeps what
     // it asked for before: it comes back as it was on the next step back.
     void keep(Box b);
+    // Whether the box's slot holds all it asked for when last drawn: then it is drawn without a scrollbar. (ImGui
+    // decides on a scrollbar from the last frame's content; one shown for a frame narrows the text, which wraps to
+    // more lines and asks for more room, and the box's height would swing between two sizes frame after frame.)
+    bool holds(Box b) const { return last_[std::size_t(b)].full > 0 && slots_[std::size_t(b)].h >= last_[std::size_t(b)].full; }
 
     // The arithmetic of arrange, for tests: the question first (up to 60 % of the column), the lesson's need (up to
     // half of the rest), then every other box's need, then the rest of each box, both shared max–min fairly (the smallest asks met in full, the others splitting what
