@@ -74,12 +74,12 @@ TEST_CASE("a box whose slot holds what it asked for is drawn without a scrollbar
     // the column swung between two arrangements frame after frame (the lesson box's last line cut in one of them)
     ColumnFit fit;
     fit.arrange(700, "a.toml");
-    fit.asked(Box::lesson, {300, 300}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::lesson, {250, 250}), fit.asked(Box::pseudocode, {100, 100});
     fit.asked(Box::state, {150, 150}), fit.asked(Box::narration, {60, 60}), fit.asked(Box::question, {106, 106});
     fit.arrange(700, "a.toml");
     CHECK(fit.holds(Box::question));
     CHECK(fit.holds(Box::lesson));
-    fit.asked(Box::lesson, {300, 300}), fit.asked(Box::pseudocode, {100, 100});
+    fit.asked(Box::lesson, {250, 250}), fit.asked(Box::pseudocode, {100, 100});
     fit.asked(Box::state, {400, 400}), fit.asked(Box::narration, {60, 60}), fit.asked(Box::question, {106, 106});
     fit.arrange(700, "a.toml");
     CHECK_FALSE(fit.holds(Box::state));  // squeezed: it scrolls, with its scrollbar showing
