@@ -69,7 +69,8 @@ void pipeline_table(const CullingView& v) {
     ImGui::TableSetupColumn(in.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({in, "000000"}));
     ImGui::TableSetupColumn(left_out.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({left_out, "000000"}));
     ImGui::TableSetupColumn(ms.c_str(), ImGuiTableColumnFlags_WidthFixed, wide({ms, "000.00"}));
-    ImGui::TableSetupColumn("");
+    const std::string share = tr("culling.share_left_out");  // the bars: left out of what came in
+    ImGui::TableSetupColumn(share.c_str());
     ImGui::TableHeadersRow();
     for (const algo::StageReport& r : v.world->pipeline) {
         if (!r.ran) continue;
