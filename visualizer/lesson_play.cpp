@@ -64,6 +64,7 @@ void Lessonplay::load(const AppOptions& o) {
         // nothing answers) says so, as `hsrviz check` would: the teacher sees it before the class does.
         if (const LessonScript* script = classroom.script())
             for (const std::string& problem : script->problems(lesson, event_kinds(lesson))) tell(problem);
+        for (const std::string& note : lesson.scene.notes) tell(note);  // faces of no area left out
         frame_bounds(camera, glm::vec3(0), 1);
         with_family_screen([&](auto& s, auto& screen) { screen.frame(s, camera); });
         std::size_t start = keep;

@@ -113,7 +113,8 @@ void read_meshes(const TomlReader& r, Scene& scene) {
         if (const std::string why = faces_disagree(obj, faces); !why.empty())
             r.fail(t->get("file"), join(f, "file"), "cannot read " + path.filename().string() + ": " + why);
         const std::size_t before = scene.polygons.size();
-        std::size_t face = 0;
+        std::size_t face = 0, no_area = 0;
+        std::string first_no_area;
         for (const tinyobj::shape_t& shape : obj.GetShapes()) {
             std::size_t at = 0;
             for (std::size_t k = 0; k < shape.mesh.num_face_vertices.size(); ++k, ++face) {
@@ -137,13 +138,20 @@ void read_meshes(const TomlReader& r, Scene& scene) {
                     if (!(glm::length(glm::dvec3(p.vertices.back())) <= max_world_coordinate))
                         r.fail(t->get("file"), join(f, "file"), face_name + ": a vertex lies beyond ±1e100 (after scale and translate)");
                 }
-                if (!has_area(p.vertices)) r.fail(t->get("file"), join(f, "file"), face_name + " has no area");
-                if (bend(p.vertices) > max_bend) r.fail(t->get("file"), join(f, "file"), face_name + ": " + not_planar(bend(p.vertices)));
+                if (!has_area(p.vertices)) {  // welded vertices, a sphere's pole: it covers no pixel, left out and said
+                    if (no_area++ == 0) first_no_area = "face " + std::to_string(face + 1) + ", line " + std::to_string(faces[face].line);
+                    continue;
+                }
+                if (p.vertices.size() > 3 && bend(p.vertices) > max_bend)
+                    r.fail(t->get("file"), join(f, "file"), face_name + ": " + not_planar(bend(p.vertices)));
                 scene.polygons.push_back(std::move(p));
             }
         }
+        if (scene.polygons.size() == before && no_area > 0)
+            r.fail(t->get("file"), join(f, "file"), "every face of " + path.filename().string() + " has no area (its vertices on one line or at one point)");
         if (scene.polygons.size() == before)  // garbage, or only points and lines: tinyobjloader reads them as nothing
             r.fail(t->get("file"), join(f, "file"), path.filename().string() + " has no faces of 3 or more vertices");
+        if (no_area > 0) scene.notes.push_back(left_out_of_no_area(path.filename().string(), no_area, "face", first_no_area));
     }
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <set>
 
@@ -14,6 +15,7 @@
 #include "core/events.h"
 #include "core/numeric.h"
 #include "core/plane.h"
+#include "geometry/exact_collinear.h"
 #include "scene/load_floor_plan.h"
 #include "scene/load_terrain.h"
 #include "scene/load_mesh.h"
@@ -240,9 +242,15 @@ std::string not_planar(double b) {
 }
 
 bool has_area(const std::vector<glm::dvec4>& vertices) {
-    double size = 0;
-    const std::vector<Vec3> v = unit_sized(vertices, size);
-    return size > 0 && measure(v) > 1e-12 * size * size;
+    std::vector<Vec3> v;
+    for (const auto& x : vertices) v.emplace_back(x);
+    Plane plane;  // a sliver of any area is drawn; one too thin for a normal in doubles cannot be (never seen yet)
+    return vertices.size() >= 3 && !collinear_exactly(v) && plane_of(v, plane);
+}
+
+std::string left_out_of_no_area(const std::string& where, std::size_t count, const std::string& what, const std::string& first) {
+    return where + ": " + std::to_string(count) + " " + what + (count == 1 ? "" : "s") + " of no area left out (" + first +
+           (count == 1 ? ")" : " first)");
 }
 
 double bend(const std::vector<glm::dvec4>& vertices) {
@@ -299,6 +307,9 @@ Scene read_scene(const TomlReader& r) {
         r.only_keys(t, f, {"id", "color", "a", "b"});
         s.segments.push_back({read_id(t, f), read_color(r, t, f), vertex(t, "a", f), vertex(t, "b", f)});
     });
+    std::size_t no_area = 0;
+    std::string first_no_area, first_field;
+    const toml::node* first_node = nullptr;
     for_each_table(r, root, "polygons", [&](const toml::table& t, const std::string& f) {
         r.only_keys(t, f, {"id", "color", "opacity", "vertices"});
         ScenePolygon p{read_id(t, f), read_color(r, t, f), {}};
@@ -310,14 +321,19 @@ Scene read_scene(const TomlReader& r) {
             p.vertices.push_back(point(*v->get(i), index(join(f, "vertices"), i)));
         if (p.vertices.size() < 3)
             r.fail(t.get("vertices"), join(f, "vertices"), "a polygon needs at least 3 vertices");
-        if (s.coordinates == Coordinates::world && !has_area(p.vertices))
-            r.fail(t.get("vertices"), join(f, "vertices"),
-                   "the polygon has no area (its vertices are on one line or at one point)");
-        if (s.coordinates == Coordinates::world && bend(p.vertices) > max_bend)
+        // a polygon of no area (its vertices on one line or at one point) covers no pixel: left out, and said
+        if (s.coordinates == Coordinates::world && !has_area(p.vertices)) {
+            if (no_area++ == 0) first_no_area = "line " + std::to_string(p.line), first_node = t.get("vertices"), first_field = join(f, "vertices");
+            return;
+        }
+        if (s.coordinates == Coordinates::world && p.vertices.size() > 3 && bend(p.vertices) > max_bend)
             r.fail(t.get("vertices"), join(f, "vertices"), not_planar(bend(p.vertices)));
         s.polygons.push_back(std::move(p));
     });
+    if (no_area > 0) s.notes.push_back(left_out_of_no_area(std::filesystem::path(r.path()).filename().string(), no_area, "polygon", first_no_area));
     read_meshes(r, s);
+    if (no_area > 0 && s.polygons.empty())
+        r.fail(first_node, first_field, "the polygon has no area (its vertices are on one line or at one point), nor has any other of the scene");
     for (std::size_t i = ids.size(); i < s.polygons.size(); ++i)  // mesh faces take ids too: none may be used twice
         if (!ids.insert(s.polygons[i].id).second)
             r.fail(root.get("meshes"), "meshes", "id " + std::to_string(s.polygons[i].id) + " is used twice");

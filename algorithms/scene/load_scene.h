@@ -29,9 +29,11 @@ namespace hsr::algo {
 Scene load_scene(const std::string& path);                          // throws LoadError
 Scene load_scene_text(const std::string& path, std::string_view text);  // throws LoadError
 Scene read_scene(const TomlReader& toml);
-// Does a polygon (3 or more vertices) have area, relative to its size? (Collinear vertices with rounding do not.)
-// Measured on the polygon scaled to unit size, so it holds at any magnitude a scene allows.
+// Does a polygon (3 or more vertices) have area? Decided exactly: vertices on one line or at one point have none; a
+// sliver of any area has some (geometry/exact_collinear.h).
 bool has_area(const std::vector<glm::dvec4>& vertices);
+// The sentence for what a reader left out: "city.obj: 3 faces of no area left out (face 2243 first)".
+std::string left_out_of_no_area(const std::string& where, std::size_t count, const std::string& what, const std::string& first);
 // How far the polygon's farthest vertex lies off its (Newell) plane, as a share of the polygon's size: 0 for a
 // planar polygon, about 1e-16 for one given with rounding. A scene refuses more than max_bend.
 double bend(const std::vector<glm::dvec4>& vertices);

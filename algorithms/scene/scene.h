@@ -170,6 +170,9 @@ struct Scene {
     FloorPlan floor_plan;  // no cells: not a cells-and-portals scene
     Terrain terrain;       // no rows: not a terrain scene
     Expect expect;
+    // What the reader left out, in sentences for the command line, `check` and the window ("city.obj: 3 faces of no
+    // area left out (face 2243 first)").
+    std::vector<std::string> notes;
 };
 
 // World → clip space: projection × view of the camera (OpenGL conventions, right-handed, looking down −z).

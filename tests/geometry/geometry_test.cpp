@@ -2,6 +2,7 @@
 // The geometry kernel (algorithms/geometry/): the cross product and turn, the shoelace area in its two forms, the
 // convex hull, the half-space cut of a polygon and union–find and the slab test of a ray's interval, each with its degenerate inputs (fewer than 3
 // points, no area, a cut through a vertex, a polygon wholly on one side).
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "catch.h"
+#include "geometry/exact_collinear.h"
 #include "geometry/half_space_cut.h"
 #include "geometry/interval.h"
 #include "geometry/polygon_2d.h"
@@ -146,4 +148,22 @@ TEST_CASE("The slab test narrows a ray's interval and empties it when the ray mi
     CHECK(narrow_to_slab(touching, 10, 20, 0, 1));  // meets the slab at its exit: one point left
     CHECK((touching.enter == 10 && touching.exit == 10));
     CHECK_FALSE(narrow_to_slab(touching, 11, 20, 0, 1));
+}
+
+TEST_CASE("collinearity is decided exactly: no tolerance, no rounding", "[geometry]") {
+    using V = glm::dvec3;
+    const double third = 1.0 / 3;  // rounded: 3 × third is 1 in doubles, but not exactly
+    CHECK_FALSE(collinear_exactly(std::vector<V>{{0, 0, 0}, {1, third, 0}, {3, 1, 0}}));
+    CHECK(1.0 * 1 - third * 3 == 0.0);  // the same determinant in doubles says "collinear": why exactness is needed
+    CHECK(collinear_exactly(std::vector<V>{{0, 0, 0}, {1, third, 0}, {2, 2 * third, 0}}));  // 2·third is exact
+    CHECK(collinear_exactly(std::vector<V>{{5, 5, 5}, {5, 5, 5}, {5, 5, 5}}));              // one point
+    CHECK(collinear_exactly(std::vector<V>{{1, 1, 1}, {1, 1, 1}, {2, 3, 4}}));              // a welded vertex
+    CHECK_FALSE(collinear_exactly(std::vector<V>{{0, 0, 0}, {1, 0, 0}, {0.5, 1e-300, 0}}));  // a sliver
+    CHECK_FALSE(collinear_exactly(std::vector<V>{{1e100, 0, 0}, {-1e100, 0, 0}, {0, 1e-100, 1e-100}}));
+    // tiny and huge alike (scaled by a power of two, which is exact): multiples of one direction by powers of two
+    for (const double s : {1e-200, 1.0, 1e200}) {
+        const V d(s * third, s * 0.7, -s);
+        CHECK(collinear_exactly(std::vector<V>{d, d * 2.0, d * -4.0, d * 0.5}));
+        CHECK_FALSE(collinear_exactly(std::vector<V>{d, d * 2.0, V(d.x * 4, std::nextafter(d.y * 4, 0.0), d.z * 4)}));
+    }
 }

@@ -195,3 +195,42 @@ TEST_CASE("an OBJ mesh whose face names a vertex past the list is refused, namin
                Catch::Contains("in the scene's folder or below it"));
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("a face of no area is left out and said, and a sliver of any area is kept", "[scene][mesh]") {
+    // Real meshes carry faces with welded vertices (city.obj's face 2243): one such face refused the whole model.
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_no_area_test";
+    std::filesystem::create_directories(dir);
+    const std::string scene = (dir / "s.toml").string();
+    std::ofstream(dir / "m.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"
+                                    "f 1 2 3\n"
+                                    "f 1 2 4\n"     // three points on the x axis
+                                    "f 1 1 3\n"     // a welded vertex
+                                    "f 2 3 1\n";
+    const Scene mesh = load_scene_text(scene, "[camera]\neye = [0, 0, 5]\n[[meshes]]\nfile = \"m.obj\"\n");
+    CHECK(mesh.polygons.size() == 2);
+    REQUIRE(mesh.notes.size() == 1);
+    CHECK(mesh.notes[0] == "m.obj: 2 faces of no area left out (face 2, line 6 first)");
+    // a mesh of nothing but such faces is an error, naming the file
+    std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+    CHECK_THAT(error_of("[camera]\neye = [0, 0, 5]\n[[meshes]]\nfile = \"flat.obj\"\n", scene).what(),
+               Catch::Contains("every face of flat.obj has no area"));
+    std::filesystem::remove_all(dir);
+
+    // a scene's polygon likewise, named by its line
+    const Scene polygons = load_scene_text("p.toml", R"([camera]
+eye = [0, 0, 5]
+[[polygons]]
+id = 1
+vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+[[polygons]]
+id = 2
+vertices = [[0, 0, 0], [1, 2, 3], [2.5, 5, 7.5]]
+[[polygons]]
+id = 3
+vertices = [[0, 0, 0], [1, 0, 0], [0.5, 1e-12, 0]]
+)");
+    REQUIRE(polygons.polygons.size() == 2);  // the sliver (area 5e-13 of its size squared) is drawn
+    CHECK(polygons.polygons[1].id == 3);
+    REQUIRE(polygons.notes.size() == 1);
+    CHECK(polygons.notes[0] == "p.toml: 1 polygon of no area left out (line 6)");
+}

@@ -230,6 +230,7 @@ int run_render(const RenderOptions& o) {
         // Before anything is generated or allocated: a generated scene's size is in its name
         require_memory(render_memory_estimate(o, algo::generated_triangles(o.scene).value_or(0), std::uint64_t(w) * std::uint64_t(h)), work);
         algo::Scene scene = generated_or_loaded(o.scene);
+        for (const std::string& note : scene.notes) std::fprintf(stderr, "hsrviz: %s\n", algo::printable(note, 2000).c_str());
         require_memory(render_memory_estimate(o, scene.polygons.size(), std::uint64_t(w) * std::uint64_t(h)), work);
         if (const auto refused = algo::polygons_not_convex(scene); !refused.empty())
             throw std::runtime_error(refused.front() + (refused.size() > 1 ? " (and " + std::to_string(refused.size() - 1) + " more)" : ""));

@@ -107,6 +107,7 @@ CheckResult check_file(const std::string& path) {
             for (const char32_t c : glyphs_missing(text))
                 r.warnings.push_back(path + ": " + field + ": " + glyph_name(c) + " is not in the window's font (the window draws � instead)");
         for (const Chapter& c : lesson.chapters) r.questions += c.question.has_value();
+        for (const std::string& note : lesson.scene.notes) r.warnings.push_back(note);
         for (const std::string& p : algo::polygons_not_convex(lesson.scene))
             r.warnings.push_back(p + " (the clippers take it; the hidden-surface algorithms and `render` refuse it)");
         for (std::string& p : script.problems(lesson, event_kinds(lesson))) r.problems.push_back(std::move(p));

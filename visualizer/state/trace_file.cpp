@@ -32,6 +32,7 @@ int run_trace(const TraceOptions& o) {
     try {
         StopOnInterrupt ctrl_c;  // from the start: a Ctrl+C while the lesson loads stops at the first event
         const Lesson lesson = load_lesson(o.input, o.algorithm);
+        for (const std::string& note : lesson.scene.notes) std::fprintf(stderr, "hsrviz: %s\n", algo::printable(note, 2000).c_str());
         if (ctrl_c.asked) throw algo::WorkStopped();  // before the file is made
         errno = 0;
         std::ofstream out(o.out, std::ios::binary);
