@@ -8,6 +8,7 @@
 
 #include "raycast/ray_cast.h"
 #include "core/numeric.h"
+#include "geometry/exact_collinear.h"
 #include "scene/load_scene.h"
 #include "state/long_work.h"
 #include "state/strings.h"
@@ -110,6 +111,9 @@ bool ZBufferSession::delete_polygon(std::size_t polygon) {
 }
 
 bool ZBufferSession::add_triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    // three points on one line of the screen make no triangle (taken back to the world in doubles, they would make
+    // a sliver of rounding's width)
+    if (algo::collinear_exactly(std::vector<algo::Vec3>{{a, 0}, {b, 0}, {c, 0}})) return false;
     // at the window depth of the middle of the scene's depths, so that it lies among the polygons there
     double lo = 1, hi = 0;
     for (const ScenePolygon& p : scene_.polygons)
