@@ -6,6 +6,7 @@
 #include <iterator>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -165,24 +166,28 @@ void culling_state_panel(const CullingLesson& s, const PanelLayout& l, bool lege
     begin_column_box(l, Box::state, (tr("culling.title") + "###state").c_str());
     const CullingView& v = s.culling_view();
     const auto n = [](auto value) { return std::to_string(value); };
-    // one clause per fact, joined by " · " (each a whole sentence in its language); at the end the pipeline table
-    // holds the stage's kept and left out, and the line only names it
-    std::string header = v.done && s.culling_machine() != algo::CullingMachine::bounds ? machine_name(s.culling_machine())
-                         : s.culling_machine() == algo::CullingMachine::bounds
-                             ? tr("culling.built_so_far", {{"machine", machine_name(s.culling_machine())}, {"built", n(v.built)},
-                                                           {"nodes", n(v.world->hierarchy.nodes.size())}, {"leaves", n(v.leaves)}})
-                             : tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
-                                  {{"machine", machine_name(s.culling_machine())}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}});
-    if (s.culling_machine() == algo::CullingMachine::frustum) header += " · " + tr("culling.plane_tests", {{"tests", n(v.plane_tests)}});
-    if (s.culling_machine() == algo::CullingMachine::hiz) header += " · " + tr("culling.texels", {{"texels", n(v.texels)}});
-    if (s.culling_machine() == algo::CullingMachine::occluders) {
+    // one clause per fact, joined by " · " (each a whole sentence in its language)
+    const algo::CullingMachine m = s.culling_machine();
+    std::vector<std::string> clauses;
+    if (m == algo::CullingMachine::bounds)
+        clauses.push_back(tr("culling.built_so_far", {{"machine", machine_name(m)}, {"built", n(v.built)},
+                                                      {"nodes", n(v.world->hierarchy.nodes.size())}, {"leaves", n(v.leaves)}}));
+    else if (!v.done)  // at the end the pipeline table holds the stage's kept and left out: the line names the stage
+        clauses.push_back(tr(v.earlier > 0 ? "culling.so_far_after_earlier" : "culling.so_far",
+                             {{"machine", machine_name(m)}, {"kept", n(v.kept)}, {"left_out", n(v.left_out)}, {"earlier", n(v.earlier)}}));
+    else if (m != algo::CullingMachine::occluders)  // the occluders' shape clause names their stage itself
+        clauses.push_back(machine_name(m));
+    if (m == algo::CullingMachine::frustum) clauses.push_back(tr("culling.plane_tests", {{"tests", n(v.plane_tests)}}));
+    if (m == algo::CullingMachine::hiz) clauses.push_back(tr("culling.texels", {{"texels", n(v.texels)}}));
+    if (m == algo::CullingMachine::occluders) {
         const algo::OccluderKind k = v.world->occluders;
         std::string shape = tr(k == algo::OccluderKind::solid ? "culling.shape_solid" : k == algo::OccluderKind::proxy ? "culling.shape_proxy" : "culling.shape_planar");
         if (v.world->fusion) shape = tr("culling.shape_fused", {{"shape", shape}});
-        const std::string shape_clause = tr("culling.occluders_shape", {{"shape", shape}});  // names the stage too
-        header = v.done ? shape_clause : header + " · " + shape_clause;
-        if (v.world->fusion) header += " · " + tr("culling.fused", {{"fused", n(v.fused)}});
+        clauses.push_back(tr("culling.occluders_shape", {{"shape", shape}}));
+        if (v.world->fusion) clauses.push_back(tr("culling.fused", {{"fused", n(v.fused)}}));
     }
+    std::string header;
+    for (const std::string& c : clauses) header += (header.empty() ? "" : " · ") + c;
     wrapped_text(header, dim_text);
     if (!legend_in_view) state_legend(culling_legend_entries(v));
     if (s.culling_machine() != algo::CullingMachine::bounds) {  // one table: no tab bar above it
