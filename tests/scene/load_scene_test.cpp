@@ -234,3 +234,30 @@ vertices = [[0, 0, 0], [1, 0, 0], [0.5, 1e-12, 0]]
     REQUIRE(polygons.notes.size() == 1);
     CHECK(polygons.notes[0] == "p.toml: 1 polygon of no area left out (line 6)");
 }
+
+TEST_CASE("an OBJ file as modellers write it loads every face with its own vertices", "[scene][mesh]") {
+    // CRLF line ends, comments, objects, groups, smoothing groups, materials whose .mtl file is not there, texture and
+    // normal indices (v/vt, v//vn, v/vt/vn), negative (relative) indices, a quad and a pentagon kept whole
+    const auto dir = std::filesystem::temp_directory_path() / "hsrviz_modeller_obj_test";
+    std::filesystem::create_directories(dir);
+    const std::string scene = (dir / "s.toml").string();
+    std::ofstream(dir / "m.obj", std::ios::binary)
+        << "# exported by a modeller\r\nmtllib missing.mtl\r\no Box\r\ng front\r\nusemtl red\r\ns 1\r\n"
+           "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nvt 0 0\r\nvt 1 0\r\nvt 1 1\r\nvt 0 1\r\nvn 0 0 1\r\n"
+           "f 1/1/1 2/2/1 3/3/1 4/4/1\r\n"                 // a quad, v/vt/vn
+           "g roof\r\nusemtl blue\r\ns off\r\n"
+           "v 0 0 -2\r\nv 2 0 -2\r\nv 3 1 -2\r\nv 1 2 -2\r\nv -1 1 -2\r\n"
+           "f -5//1 -4//1 -3//1 -2//1 -1//1\r\n"           // a pentagon, relative indices, v//vn
+           "o Tri\r\nf 1/1 2/2 4/4\r\n";                    // v/vt, the file's first vertices again
+    const Scene mesh = load_scene_text(scene, "[camera]\neye = [0, 0, 5]\n[[meshes]]\nfile = \"m.obj\"\n");
+    std::filesystem::remove_all(dir);
+    REQUIRE(mesh.polygons.size() == 3);
+    CHECK(mesh.notes.empty());
+    REQUIRE(mesh.polygons[0].vertices.size() == 4);
+    CHECK(glm::dvec3(mesh.polygons[0].vertices[2]) == glm::dvec3(1, 1, 0));
+    REQUIRE(mesh.polygons[1].vertices.size() == 5);
+    CHECK(glm::dvec3(mesh.polygons[1].vertices[0]) == glm::dvec3(0, 0, -2));  // -5 of the 9 read so far: vertex 5
+    CHECK(glm::dvec3(mesh.polygons[1].vertices[4]) == glm::dvec3(-1, 1, -2));
+    REQUIRE(mesh.polygons[2].vertices.size() == 3);
+    CHECK(glm::dvec3(mesh.polygons[2].vertices[2]) == glm::dvec3(0, 1, 0));
+}
