@@ -14,7 +14,7 @@
 
 namespace hsr::algo {
 Tolerance pair_tolerance(const BspTree& tree, BspPolygonId a, std::span<const Vec3> b) {
-    return Tolerance::for_points(tree.polygons[std::size_t(a)].vertices, b);
+    return Tolerance::for_pair(tree.polygons[std::size_t(a)].vertices, b);
 }
 
 Tolerance node_tolerance(const BspTree& tree, const BspNode& node, const Vec3& p) {
@@ -120,7 +120,7 @@ Steps<BspEvent, Sides> build_node(BspTree* t, BspNodeId node, ListToBuild in, Bs
         }
         const Tolerance tol = pair_tolerance(*t, splitter, t->polygons[std::size_t(p)].vertices);
         const PolygonSide side = classify(plane, t->polygons[std::size_t(p)].vertices, tol);
-        co_yield PolygonClassified{node, p, side};
+        co_yield PolygonClassified{node, p, side, splitter};
         switch (side) {
             case PolygonSide::front: sides.front.push_back(p); break;
             case PolygonSide::back: sides.back.push_back(p); break;
@@ -147,7 +147,7 @@ Steps<BspEvent, Sides> build_node(BspTree* t, BspNodeId node, ListToBuild in, Bs
         }
     }
     t->nodes[std::size_t(node)].polygons = here;
-    co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(sides.front.size()), std::uint32_t(sides.back.size())};
+    co_yield NodeFinished{node, std::uint32_t(here.size()), std::uint32_t(sides.front.size()), std::uint32_t(sides.back.size()), splitter};
     co_return sides;
 }
 

@@ -60,7 +60,8 @@ struct BspOptions {
 };
 
 // Validates (InvalidInput naming the polygon: NaN, infinity, fewer than 2 vertices, no area), then returns the
-// lazy machine. Each test uses ε = 1e-9 × the largest coordinate of the polygons it compares (pair_tolerance).
+// lazy machine. Each test uses ε = 1e-9 × the size of the smaller of the two polygons it compares, plus the
+// rounding at their coordinates (pair_tolerance, Tolerance::for_pair).
 Steps<BspEvent, BspTree> build_bsp(std::vector<BspInput> polygons, BspOptions options = {});
 
 // Where DisplayBSP looks from: a point (a perspective camera's eye), or an eye at infinity (an orthographic camera:
@@ -73,7 +74,7 @@ struct Viewpoint {
     bool operator==(const Viewpoint&) const = default;
 };
 
-// ε for testing polygon `b` against polygon `a`'s plane (or a point against a node's): their own size, not the scene's.
+// ε for testing polygon `b` against polygon `a`'s plane (or a point against a node's): their own sizes, not the scene's.
 Tolerance pair_tolerance(const BspTree& tree, BspPolygonId a, std::span<const Vec3> b);
 // ε for a point against a node's plane (the node's first polygon and the point).
 Tolerance node_tolerance(const BspTree& tree, const BspNode& node, const Vec3& p);

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace hsr::algo {
@@ -20,6 +22,35 @@ Tolerance Tolerance::for_points(std::span<const Vec3> a, std::span<const Vec3> b
     for (const auto points : {a, b})
         for (const Vec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
     return for_extent(largest);
+}
+
+namespace {
+
+double largest_coordinate(std::span<const Vec3> points) {
+    double m = 0;
+    for (const Vec3& p : points) m = std::max({m, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return m;
+}
+
+// The longest side of the points' bounding box: 0 for one point
+double size_of(std::span<const Vec3> points) {
+    if (points.empty()) return 0;
+    Vec3 lo = points[0], hi = points[0];
+    for (const Vec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+}
+
+}  // namespace
+
+Tolerance Tolerance::for_pair(std::span<const Vec3> planar, std::span<const Vec3> tested) {
+    // 32 ulps of the largest number in the sum n · x + d: Newell's normal, d and the dot product each round a few times
+    constexpr double rounding = 32 * std::numeric_limits<double>::epsilon();
+    const double on_plane = relative * std::min(size_of(planar), size_of(tested));
+    const double epsilon = on_plane + rounding * (largest_coordinate(planar) + largest_coordinate(tested));
+    return {std::isfinite(epsilon) ? epsilon : std::numeric_limits<double>::max()};
 }
 
 PolygonSide classify(const Plane& plane, std::span<const Vec3> polygon, Tolerance tol) {

@@ -37,6 +37,12 @@ struct Tolerance {
     // their largest coordinate. The rounding in n · x + d grows with |x| and |d|, so this covers it, and a giant
     // polygon elsewhere in the scene changes nothing here.
     static Tolerance for_points(std::span<const Vec3> a, std::span<const Vec3> b = {});
+    // For a test of `tested` (a polygon, or a point) against the plane of polygon `planar`: "on the plane" at the
+    // scale of the smaller of the two (1e-9 of its size: a polygon tilted a hair out of a neighbour's plane is not
+    // split into slivers), plus what rounding leaves uncertain (n · x + d at their coordinates, and a plane through
+    // points of magnitude M known to about M · 2^-52). Not the larger one's size: beside a quad 1e10 across, that
+    // made every unit triangle within 10 units of its plane "on" it, painted in the wrong order.
+    static Tolerance for_pair(std::span<const Vec3> planar, std::span<const Vec3> tested);
 };
 
 enum class Side : std::uint8_t { front, back, on };
