@@ -405,7 +405,7 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
             }
         }
         // a step forward stops where a chapter pauses, so that its question is asked before the events answer it,
-        // and no move forward (a step, play, End, the scrub bar) passes the event that answers an open question
+        // and no move forward (a step, play, End, the scrub bar) leaves the step where an open question is asked
         if (const auto stop = classroom.stop_forward(p, cursor, a.step || a.micro_step || playback.playing, questions_hold)) {
             p.seek(*stop);
             playback.playing = false;

@@ -45,27 +45,27 @@ constexpr Saying front_first{"bsp.front_first", "front subtree first"};
 constexpr Saying back_first{"bsp.back_first", "back subtree first"};
 constexpr Saying build_started{"bsp.build_started",
                                "build a BSP tree of {polygons} polygons, splitter rule: {rule}, ε = {tolerance} × the size of "
-                               "the polygons compared"};
+                               "the smaller polygon compared"};
 constexpr Saying candidate{"bsp.candidate",
-                           "node {node}: splitter {candidate} would leave {front} in front, {back} behind, split {spanning}: "
+                           "splitter {candidate} would leave {front} in front, {back} behind, split {spanning}: "
                            "score {score}"};
-constexpr Saying chosen{"bsp.chosen", "node {node} (depth {depth}): polygon {splitter} is its splitter"};
+constexpr Saying chosen{"bsp.chosen", "a new node at depth {depth}: polygon {splitter} is its splitter"};
 constexpr Saying chosen_best{"bsp.chosen_best",
-                             "node {node} (depth {depth}): polygon {splitter} is its splitter, the best of {candidates} candidates (score {score})"};
-constexpr Saying in_front{"bsp.in_front", "{polygon} is in front of node {node}'s plane"};
-constexpr Saying behind{"bsp.behind", "{polygon} is behind node {node}'s plane"};
-constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar with node {node}'s plane"};
-constexpr Saying spanning{"bsp.spanning", "{polygon} spans node {node}'s plane"};
+                             "a new node at depth {depth}: polygon {splitter} is its splitter, the best of {candidates} candidates (score {score})"};
+constexpr Saying in_front{"bsp.in_front", "{polygon} is in front of the plane of {splitter}"};
+constexpr Saying behind{"bsp.behind", "{polygon} is behind the plane of {splitter}"};
+constexpr Saying coplanar{"bsp.coplanar", "{polygon} is coplanar with {splitter}"};
+constexpr Saying spanning{"bsp.spanning", "{polygon} spans the plane of {splitter}"};
 constexpr Saying split{"bsp.split",
                        "{polygon} spans the plane: split into {front_part} (front, {front} {front?vertex|vertices}) and "
                        "{back_part} (back, {back} {back?vertex|vertices})"};
 constexpr Saying node_finished{"bsp.node_finished",
-                               "node {node} keeps {coplanar} {coplanar?polygon|polygons}; {front} go to the front subtree, {back} to the back"};
+                               "the node of {splitter} keeps {coplanar} {coplanar?polygon|polygons}; {front} go to the front subtree, {back} to the back"};
 constexpr Saying built{"bsp.built",
                        "built: {nodes} nodes, depth {depth}, {polygons} polygons in its nodes after {splits} splits"};
-constexpr Saying eye_front{"bsp.eye_front", "the eye is in front of node {node}'s plane (distance {distance}): {first}"};
-constexpr Saying eye_back{"bsp.eye_back", "the eye is behind node {node}'s plane (distance {distance}): {first}"};
-constexpr Saying eye_on{"bsp.eye_on", "the eye is on node {node}'s plane (distance {distance}): {first}"};
+constexpr Saying eye_front{"bsp.eye_front", "the eye is in front of the plane of {splitter} (distance {distance}): {first}"};
+constexpr Saying eye_back{"bsp.eye_back", "the eye is behind the plane of {splitter} (distance {distance}): {first}"};
+constexpr Saying eye_on{"bsp.eye_on", "the eye is on the plane of {splitter} (distance {distance}): {first}"};
 constexpr Saying drawn{"bsp.drawn", "draw {polygon} (number {order})"};
 constexpr Saying traversal_finished{"bsp.traversal_finished", "{drawn} polygons drawn"};
 constexpr Saying bound_reached{"bsp.bound_reached", "stopped: the bound of {limit} {bound} was reached; what is left stays at this node"};
@@ -108,8 +108,7 @@ Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
                 return Phrase(say::build_started, {{"polygons", n(e.polygons)}, {"tolerance", num(e.tolerance)}}, Terms{{"rule", &term(e.rule)}});
             },
             [&](const CandidateScored& e) {
-                return Phrase(say::candidate, {{"node", n(e.node)},
-                                               {"candidate", name(e.candidate)},
+                return Phrase(say::candidate, {{"candidate", name(e.candidate)},
                                                {"front", n(e.front)},
                                                {"back", n(e.back)},
                                                {"spanning", n(e.spanning)},
@@ -117,7 +116,7 @@ Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
             },
             [&](const SplitterChosen& e) {
                 return Phrase(e.candidates > 1 ? say::chosen_best : say::chosen,
-                              {{"node", n(e.node)}, {"depth", n(e.depth)}, {"splitter", name(e.splitter)},
+                              {{"depth", n(e.depth)}, {"splitter", name(e.splitter)},
                                {"candidates", n(e.candidates)}, {"score", num(e.score)}});
             },
             [&](const PolygonClassified& e) {
@@ -125,7 +124,7 @@ Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
                                        : e.side == PolygonSide::back ? say::behind
                                        : e.side == PolygonSide::coplanar ? say::coplanar
                                                                          : say::spanning;
-                return Phrase(saying, {{"polygon", name(e.polygon)}, {"node", n(e.node)}});
+                return Phrase(saying, {{"polygon", name(e.polygon)}, {"splitter", name(e.splitter)}});
             },
             [&](const PolygonSplit& e) {
                 return Phrase(say::split, {{"polygon", name(e.polygon)},
@@ -135,7 +134,7 @@ Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
                                            {"back", n(e.back ? e.back->size() : 0)}});
             },
             [&](const NodeFinished& e) {
-                return Phrase(say::node_finished, {{"node", n(e.node)}, {"coplanar", n(e.coplanar)}, {"front", n(e.front)}, {"back", n(e.back)}});
+                return Phrase(say::node_finished, {{"splitter", name(e.splitter)}, {"coplanar", n(e.coplanar)}, {"front", n(e.front)}, {"back", n(e.back)}});
             },
             [&](const BuildFinished& e) {
                 return Phrase(say::built, {{"nodes", n(e.nodes)}, {"depth", n(e.depth)}, {"polygons", n(e.polygons)}, {"splits", n(e.splits)}});
@@ -143,7 +142,7 @@ Phrase phrase(const BspEvent& event, const PolygonNamer& name) {
             [&](const EyeClassified& e) {
                 const bool front_first = (e.side == Side::back) == (e.order == Order::back_to_front);
                 return Phrase(e.side == Side::front ? say::eye_front : e.side == Side::back ? say::eye_back : say::eye_on,
-                              {{"node", n(e.node)}, {"distance", num(e.distance)}},
+                              {{"splitter", name(e.splitter)}, {"distance", num(e.distance)}},
                               Terms{{"first", front_first ? &say::front_first : &say::back_first}});
             },
             [&](const PolygonDrawn& e) { return Phrase(say::drawn, {{"polygon", name(e.polygon)}, {"order", n(e.order)}}); },

@@ -35,7 +35,7 @@ struct BuildStarted {
     static constexpr std::string_view kind = "BuildStarted";
     std::uint32_t polygons;
     SplitterRule rule;
-    double tolerance;  // the classification ε, relative: a share of the largest coordinate of the polygons compared
+    double tolerance;  // the classification ε, relative: a share of the size of the smaller polygon compared
     bool operator==(const BuildStarted&) const = default;
 };
 // One candidate splitter scored against the other polygons of the node (a micro-step).
@@ -64,6 +64,7 @@ struct PolygonClassified {
     BspNodeId node;
     BspPolygonId polygon;
     PolygonSide side;
+    BspPolygonId splitter;  // the node's splitter: its plane is the one tested, and the picture names nodes by it
     bool operator==(const PolygonClassified&) const = default;
 };
 struct PolygonSplit {
@@ -81,6 +82,7 @@ struct NodeFinished {
     static constexpr std::string_view kind = "NodeFinished";
     BspNodeId node;
     std::uint32_t coplanar, front, back;  // polygons kept at the node, sent to each side
+    BspPolygonId splitter;
     bool operator==(const NodeFinished&) const = default;
 };
 struct BuildFinished {
@@ -96,6 +98,7 @@ struct EyeClassified {
     Side side;
     Order order;
     double distance;  // signed distance of the eye from the node's plane
+    BspPolygonId splitter;  // the node's first polygon, whose plane it is
     bool operator==(const EyeClassified&) const = default;
 };
 struct PolygonDrawn {

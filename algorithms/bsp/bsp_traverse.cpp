@@ -37,7 +37,7 @@ Steps<BspEvent, std::vector<BspPolygonId>> traversal(const BspTree* t, Viewpoint
         }
         const double distance = eye.toward_eye ? glm::dot(node.plane.n, *eye.toward_eye) : node.plane.distance(eye.at);
         const Side side = eye_side(node.plane, eye, node_tolerance(*t, node, eye.at));
-        co_yield EyeClassified{call.node, side, order, distance};
+        co_yield EyeClassified{call.node, side, order, distance, node.polygons.empty() ? -1 : node.polygons.front()};
 
         // The far side first: behind the plane when the eye is in front (or on it: then either order is right,
         // since the node's polygons are seen edge-on)

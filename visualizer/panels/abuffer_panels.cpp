@@ -84,6 +84,7 @@ void abuffer_canvas(const ABufferSession& s, std::optional<std::pair<int, int>> 
                     d->AddRectFilled(ImVec2(p.x + sub * 0.2f, p.y + sub * 0.2f), ImVec2(p.x + sub * 0.8f, p.y + sub * 0.8f), rgb(*c));
                 }
         }
+    grid_numbers(d, o, cell, vp);
     for (const algo::ScreenPolygon& p : v.input->polygons)
         outline(d, o, cell, p, v.polygon >= 0 && &p == &v.input->polygons[std::size_t(v.polygon)] ? IM_COL32(240, 228, 66, 255) : IM_COL32(220, 220, 220, 90),
                 canvas_px(v.polygon >= 0 && &p == &v.input->polygons[std::size_t(v.polygon)] ? 2.5f : 1));

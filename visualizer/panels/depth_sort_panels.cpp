@@ -45,9 +45,11 @@ void depth_sort_state_panel(const DepthSortSession& s, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("depth_sort.table") + "###decision table").c_str());
     const DepthSortView& v = s.view();
     if (v.r < 0) {
-        wrapped_text(v.done ? tr("depth_sort.all_drawn", {{"drawn", std::to_string(v.drawn.size())}, {"moves", std::to_string(v.moves)},
-                                                          {"splits", std::to_string(v.splits)}})
-                            : tr("depth_sort.no_pair"),
+        const StringValues counts = {{"drawn", std::to_string(v.drawn.size())}, {"moves", std::to_string(v.moves)},
+                                     {"splits", std::to_string(v.splits)}, {"front", std::to_string(v.front.size())},
+                                     {"never", std::to_string(v.left)}};
+        // front to back, the sorted list is drawn from its near end and may stop early: say how many were drawn
+        wrapped_text(!v.done ? tr("depth_sort.no_pair") : tr(v.front_to_back ? "depth_sort.all_sorted_front" : "depth_sort.all_drawn", counts),
                      dim_text);
     } else if (v.tests.empty()) {
         wrapped_text(tr("depth_sort.pair", {{"r", std::to_string(v.r)}, {"q", std::to_string(v.q)}}));

@@ -44,6 +44,32 @@ void pixel_grid(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp, Fil
                              ImVec2(origin.x + float(x + 1) * cell - 1, origin.y + float(y + 1) * cell - 1), fill(x, y));
 }
 
+// The pixels' numbers along a grid, x under it and y left of it, in small dim type: the questions and the narration
+// name pixels by them ("pixel (15, 13)"). Every pixel's when the cells are wide enough for two digits, else every
+// 2nd, 5th or 10th. They take the line under the grid and the canvas's margin left of it.
+inline float grid_number_size() { return ImGui::GetFontSize() * 0.75f; }
+inline void grid_numbers(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp) {
+    ImFont* font = ImGui::GetFont();
+    const float size = grid_number_size();
+    const ImU32 dim = IM_COL32(170, 170, 170, 255);
+    const auto width = [&](const std::string& t) { return font->CalcTextSizeA(size, 1e9f, 0, t.c_str()).x; };
+    const float two = width("00") + 3;
+    int step = 1;
+    for (int s : {1, 2, 5, 10, 20, 50, 100}) {
+        step = s;
+        if (cell * float(s) >= two && cell * float(s) >= size) break;
+    }
+    const float bottom = origin.y + cell * float(vp.height) + 1;
+    for (int x = 0; x < vp.width; x += step) {
+        const std::string t = std::to_string(x);
+        d->AddText(font, size, ImVec2(origin.x + (float(x) + 0.5f) * cell - width(t) / 2, bottom), dim, t.c_str());
+    }
+    for (int y = 0; y < vp.height; y += step) {
+        const std::string t = std::to_string(y);
+        d->AddText(font, size, ImVec2(origin.x - 3 - width(t), origin.y + (float(y) + 0.5f) * cell - size / 2), dim, t.c_str());
+    }
+}
+
 inline ImVec2 on_grid(ImVec2 origin, float cell, const algo::ScreenVertex& v) {
     return {origin.x + float(v.x) / float(algo::subpixels) * cell, origin.y + float(v.y) / float(algo::subpixels) * cell};
 }

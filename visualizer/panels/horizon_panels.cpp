@@ -2,6 +2,7 @@
 #include "panels/horizon_panels.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -62,17 +63,32 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
         kx += kw + gap;
     }
     const float legend_h = key_at.back().y + line;
-    const ScreenMap map{x + margin + axis, y + margin + line, legend_w, h - 2 * margin - line - legend_h - canvas_px(6), v.columns, v.y_min, v.y_max};
+    const float small = ImGui::GetFontSize() * 0.75f, numbers_h = small + canvas_px(2);  // the columns' numbers under the screen
+    const ScreenMap map{x + margin + axis, y + margin + line, legend_w, h - 2 * margin - line - legend_h - numbers_h - canvas_px(6), v.columns,
+                        v.y_min, v.y_max};
     const int rows = v.terrain->rows;
     // The canvas's own background: the terrain's 3D view beside it must not show through its margins
     d->AddRectFilled(ImVec2(x, y), ImVec2(x + w, y + h), IM_COL32(26, 28, 33, 255));  // palette::background
     d->AddRectFilled(ImVec2(map.left, map.top), ImVec2(map.left + map.width, map.top + map.height), IM_COL32(22, 24, 30, 255));
     d->AddText(ImVec2(map.left, map.top - line), IM_COL32(220, 220, 220, 255), tr("horizon.screen", {{"columns", std::to_string(v.columns)}}).c_str());
-    if (v.columns <= 128)  // the screen's columns, faintly
+    if (v.columns <= 128) {  // the screen's columns, faintly, and their numbers under it (the questions name them)
         for (int c = 0; c <= v.columns; ++c) {
             const float px = map.x(c);
             d->AddLine(ImVec2(px, map.top), ImVec2(px, map.top + map.height), IM_COL32(60, 64, 72, 120));
         }
+        ImFont* font = ImGui::GetFont();
+        const float column_w = map.width / float(v.columns), two = font->CalcTextSizeA(small, 1e9f, 0, "00").x + 3;
+        int step = 1;
+        for (int every : {1, 2, 5, 10, 20}) {
+            step = every;
+            if (column_w * float(every) >= two) break;
+        }
+        for (int c = 0; c < v.columns; c += step) {
+            const std::string t = std::to_string(c);
+            d->AddText(font, small, ImVec2(map.x(c + 0.5) - font->CalcTextSizeA(small, 1e9f, 0, t.c_str()).x / 2, map.top + map.height + 1),
+                       IM_COL32(170, 170, 170, 255), t.c_str());
+        }
+    }
     // The horizons first, as wide translucent step lines across their columns, so that the curve that set them
     // still shows on top
     const auto horizon = [&](const std::vector<double>& values, ImU32 colour) {
@@ -98,7 +114,9 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
     // The screen's y at its bottom, top and 0, on the left
     for (const double value : {v.y_min, v.y_max, 0.0}) {
         if (value < v.y_min || value > v.y_max || (value == 0 && (v.y_min == 0 || v.y_max == 0))) continue;
-        const std::string text = algo::format_number(value);
+        char short_value[24];  // three digits: the axis's ends, not a computation's ("3.73", not "3.73205")
+        std::snprintf(short_value, sizeof short_value, "%.3g", value);
+        const std::string text = short_value;
         const float ty = std::clamp(map.y(value) - line / 2, map.top, map.top + map.height - line);
         d->AddText(ImVec2(map.left - ImGui::CalcTextSize(text.c_str()).x - canvas_px(4), ty), IM_COL32(170, 170, 170, 255), text.c_str());
     }
@@ -115,7 +133,7 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
         d->AddCircle(ImVec2(px, py), canvas_px(7), ring, 0, canvas_px(3));
         d->AddCircleFilled(ImVec2(px, py), canvas_px(2.5f), current_colour);
     }
-    const ImVec2 legend(map.left, map.top + map.height + canvas_px(6));
+    const ImVec2 legend(map.left, map.top + map.height + numbers_h + canvas_px(6));
     for (std::size_t k = 0; k < keys.size(); ++k) {
         const ImVec2 at(legend.x + key_at[k].x, legend.y + key_at[k].y);
         d->AddLine(ImVec2(at.x, at.y + line / 2), ImVec2(at.x + canvas_px(22), at.y + line / 2), keys[k].colour, canvas_px(3));

@@ -53,7 +53,11 @@ inline ImDrawList* begin_canvas(const char* name, float x, float y, float w, flo
 // with end_column_box, which tells the fit how tall its content was.
 inline void begin_column_box(const PanelLayout& l, Box b, const char* title, ImGuiWindowFlags flags = fixed) {
     const auto slot = l.slot(b);
-    place(l.width - l.side, slot.y, l.side, slot.h);
+    // a box the column has no room for yet (a question that opened this frame, after the column was arranged) is
+    // drawn once out of sight, to be measured: the next frame gives it its room. Drawn in place, it hung below the
+    // column, over the timeline, with its choices cut off.
+    const bool unplaced = l.fit && slot.h <= 0;
+    place(l.width - l.side, unplaced ? l.height + 100 : slot.y, l.side, slot.h);
     ImGui::Begin(title, nullptr, l.fit && l.fit->holds(b) ? flags | ImGuiWindowFlags_NoScrollbar : flags);
 }
 

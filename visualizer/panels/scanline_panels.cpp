@@ -39,6 +39,7 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         const std::int32_t k = v.owner[std::size_t(py) * std::size_t(v.viewport.width) + std::size_t(px)];
         return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50});
     });
+    grid_numbers(d, o, cell, v.viewport);
     for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];

@@ -69,6 +69,7 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
                 if (part == 1) return shade(v.b->depth[k], v.b->polygon[k] >= 0);
                 return unmerged ? rgb({24, 26, 30}) : shade(shade.nearer(v.a->depth[k], v.b->depth[k]), v.merged[k] >= 0);
             });
+            grid_numbers(d, o, cell, v.viewport);
             if (v.x >= 0) {  // the pixel merged last: green where its value came from, red where it lost
                 const bool chosen = part == 2 || (part == 0) == v.from_a;
                 d->AddRect(ImVec2(o.x + float(v.x) * cell - 2, o.y + float(v.y) * cell - 2),

@@ -40,16 +40,37 @@ void draw_raycast_view(const RayView& v, const algo::Scene& scene, LineBatches& 
                 .line(glm::vec3(p.vertices[k]), glm::vec3(p.vertices[(k + 1) % p.vertices.size()]),
                       tested ? palette::current_edge : colors(p.id, 1));
     }
+    // each polygon named as the questions and the narration name it, when there are few enough to read
+    if (scene.polygons.size() <= 12)
+        for (const auto& p : scene.polygons) {
+            Vec3 centre(0);
+            for (const auto& q : p.vertices) centre += Vec3(q);
+            labels.push_back({glm::vec3(centre / double(p.vertices.size())), tr("raycast.label_polygon", {{"id", std::to_string(p.id)}}),
+                              colors(p.id, 1)});
+        }
     draw_frustum(scene.camera, out.faint);
     out.bold.point(glm::vec3(scene.camera.eye), palette::eye);
     labels.push_back({glm::vec3(scene.camera.eye), tr("view.eye"), palette::eye});
     // The grid and the cells the ray has walked
     if (v.grid) {
-        box(out.faint, v.grid->box.lo, v.grid->box.hi, glm::vec4(0.6f, 0.6f, 0.65f, 0.4f));
+        const algo::Grid& g = *v.grid;
+        box(out.faint, g.box.lo, g.box.hi, glm::vec4(0.6f, 0.6f, 0.65f, 0.4f));
+        // a classroom grid (a few cells a side) with its inner planes outlined, so that its cells can be counted
+        if (g.cells.x <= 8 && g.cells.y <= 8 && g.cells.z <= 8)
+            for (int a = 0; a < 3; ++a)
+                for (int i = 1; i < g.cells[a]; ++i) {
+                    Vec3 lo = g.box.lo, hi = g.box.hi;
+                    lo[a] = hi[a] = g.box.lo[a] + double(i) * g.size[a];
+                    box(out.faint, lo, hi, glm::vec4(0.6f, 0.6f, 0.65f, 0.22f));
+                }
         for (std::size_t i = 0; i < v.cells.size(); ++i) {
-            const Vec3 lo = v.grid->box.lo + Vec3(v.cells[i]) * v.grid->size;
+            const Vec3 lo = g.box.lo + Vec3(v.cells[i]) * g.size;
             const bool last = i + 1 == v.cells.size();
-            box(last ? out.bold : out.faint, lo, lo + v.grid->size, last ? palette::parameter : glm::vec4(0.34f, 0.71f, 0.91f, 0.6f));
+            box(last ? out.bold : out.faint, lo, lo + g.size, last ? palette::parameter : glm::vec4(0.34f, 0.71f, 0.91f, 0.6f));
+            if (last)  // the cell the ray is in, named as the narration names it
+                labels.push_back({glm::vec3(lo + g.size), tr("raycast.label_cell", {{"x", std::to_string(v.cells[i].x)}, {"y", std::to_string(v.cells[i].y)},
+                                                                                   {"z", std::to_string(v.cells[i].z)}}),
+                                  palette::parameter});
         }
     }
     // The octree: while it is built, its leaves so far (green: few primitives, amber: a voxel) and the cell being

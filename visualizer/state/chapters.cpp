@@ -73,14 +73,13 @@ std::vector<Chapter> read_chapters(const algo::TomlReader& r, const toml::table&
             const std::string fq = algo::join(f, "question");
             const toml::table* q = qn->as_table();
             if (!q) r.fail(qn, fq, "expected a table");
-            r.only_keys(*q, fq, {"ask", "event", "match", "field", "choices", "reveals"});
+            r.only_keys(*q, fq, {"ask", "event", "match", "field", "choices"});
             Question question;
             question.line = int(q->source().begin.line);
             question.ask = read_texts(r, q->get("ask"), algo::join(fq, "ask"), languages);
             if (question.ask.empty()) r.fail(q, algo::join(fq, "ask"), "a question needs ask = \"…\"");
             question.answer_event = read_pattern(r, *q, "event", fq);
             question.field = r.text(*q, "field", fq);
-            if (q->contains("reveals")) question.reveals = r.text(*q, "reveals", fq);
             question.choices = r.strings(*q, "choices", fq);
             if (question.choices.size() > 9) r.fail(q->get("choices"), algo::join(fq, "choices"), "at most 9 choices (keys 1 to 9)");
             c.question = std::move(question);

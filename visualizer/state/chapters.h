@@ -17,9 +17,6 @@
 //   match = { endpoint = "p2" }
 //   field = "code"                           # … with this field
 //   choices = ["000000", "000010", "010010"] # optional: offered as buttons (keys 1 … 9)
-//   reveals = "CodesCompared"                # optional: an earlier event kind that already gives the answer away;
-//                                            # while the question is open the player stops before it (else before
-//                                            # the answering event)
 #pragma once
 
 #include <map>
@@ -44,7 +41,6 @@ struct EventPattern {
 struct Question {
     Texts ask;
     EventPattern answer_event;
-    std::optional<std::string> reveals;  // an event kind that gives the answer away before answer_event does
     std::string field;
     std::vector<std::string> choices;
     int line = 0;

@@ -122,6 +122,7 @@ void ColumnFit::arrange(float height, const std::string& lesson, bool result_fir
 void ColumnFit::keep(Box b) { drawn_[std::size_t(b)] = true; }
 
 void ColumnFit::asked(Box b, BoxAsk ask) {
+    if (slots_[std::size_t(b)].h <= 0 && ask.full > 0) moved_ = true;  // drawn out of sight: not settled until placed
     last_[std::size_t(b)] = ask;
     BoxAsk& a = asks_[std::size_t(b)];
     bool& seen = measured_[std::size_t(b)];

@@ -36,8 +36,8 @@ public:
     // chapter, or its end: what it built comes before the pseudocode and the narration.
     void arrange(float height, const std::string& lesson, bool result_first = false);
     BoxSlot slot(Box b) const { return slots_[std::size_t(b)]; }
-    // Whether this frame's arrangement differs from the last one's (a screenshot waits until it does not: ImGui
-    // shows a box's scrollbar a frame after its content outgrew it).
+    // Whether this frame's arrangement differs from the last one's, or a box was drawn that had no room in it yet
+    // (a screenshot waits until neither: ImGui shows a box's scrollbar a frame after its content outgrew it).
     bool moved() const { return moved_; }
     // What the box's content needed this frame (title bar and padding included).
     void asked(Box b, BoxAsk ask);

@@ -28,26 +28,21 @@ LessonScript::LessonScript(const Session& s) {
             if (fits(event(k), ch.question->answer_event)) {
                 p.answered = k + 1;
                 p.answer = event(k).contains(ch.question->field) ? value_text(event(k)[ch.question->field]) : "";
+                // said as the choice that names it ("#0" for polygon 0), the way the question and the picture say it
+                for (const std::string& choice : ch.question->choices)
+                    if (choice != p.answer && choice_is(choice, p.answer)) p.answer = choice;
                 if (!event(k).contains(ch.question->field))
                     for (const auto& [key, value] : event(k).items())
                         if (key != "kind" && key != "text") p.fields.push_back(key);
                 p.because = event(k).value("text", "");
-                p.held = k;
+                // the question waits for its answer where it is asked: a move forward (a step, play, End, the
+                // scrub bar) does not leave the chapter's first step while it is open. Events between it and the
+                // deciding one often give the answer away (a narration's "accepted", a table's row, a highlighted
+                // pseudocode line); the answer then steps on to the deciding event.
+                p.held = *p.starts;
                 break;
             }
-        if (p.answered && ch.question->reveals)
-            for (std::size_t k = *p.starts; k < *p.held; ++k)
-                if (event(k).value("kind", "") == *ch.question->reveals) {
-                    p.held = k;
-                    break;
-                }
     }
-    // A question is asked in its own chapter: when the event that decides it lies beyond the start of the next
-    // chapter, the hold is the chapter's last step (the student answers before the class moves on, and the verdict
-    // gives the deciding event's sentence), never a step where another chapter shows.
-    for (ChapterPlace& p : places_)
-        if (p.held)
-            if (const auto next = next_chapter(*p.starts); next && *p.held >= *places_[*next].starts) p.held = *places_[*next].starts - 1;
 }
 
 std::optional<std::size_t> LessonScript::chapter_at(std::size_t step) const {
@@ -87,8 +82,6 @@ std::vector<std::string> LessonScript::problems(const Lesson& lesson, const std:
         const std::string q = lesson.source + ":" + std::to_string(ch.question->line) + ": chapters[" + std::to_string(c) + "].question";
         if (!known(ch.question->answer_event.kind))
             out.push_back(q + ".event: the machine never tells \"" + ch.question->answer_event.kind + "\"");
-        else if (ch.question->reveals && !known(*ch.question->reveals))
-            out.push_back(q + ".reveals: the machine never tells \"" + *ch.question->reveals + "\"");
         else if (places_[c].starts && !places_[c].answered)
             out.push_back(q + ": no event after the chapter starts answers it");
         else if (places_[c].answered && !places_[c].fields.empty()) {

@@ -14,9 +14,8 @@ namespace hsr::viz {
 struct ChapterPlace {
     std::optional<std::size_t> starts;   // the step after its event (the event has just been shown); none: never
     std::optional<std::size_t> answered; // question: the step after the event that answers it
-    std::optional<std::size_t> held;     // question: where a move forward stops while it is open (before the event
-                                         // that answers it, or before an earlier one that gives the answer away, or
-                                         // at the chapter's last step when the next chapter starts first)
+    std::optional<std::size_t> held;     // question: where a move forward stops while it is open (the chapter's
+                                         // first step, where it is asked: it waits for its answer there)
     std::string answer;                  // the answer's field, as text
     std::string because;                 // the answering event's sentence
     std::vector<std::string> fields;     // the answering event's fields, when it lacks the question's field
