@@ -139,3 +139,15 @@ TEST_CASE("editing in the fat-pixel view: move a vertex on the screen, add and d
     while (s.edited_scene().polygons.size() > 1) REQUIRE(s.delete_polygon(0));
     CHECK_FALSE(s.delete_polygon(0));
 }
+
+TEST_CASE("pixels unlike the ray cast with their centre on a shared edge are told apart from depth errors", "[state][zbuffer]") {
+    // the fill-rule lesson: six triangles whose edges run through pixel centres; the ray cast counts an edge as
+    // inside both triangles, the fill rule gives it to one: every difference is such a tie
+    auto fill_rule = open("11_fill_rule.toml");
+    CHECK(fill_rule->pixels_unlike_ray_cast() > 0);
+    CHECK(fill_rule->unlike_on_edges() == fill_rule->pixels_unlike_ray_cast());
+    // z-fighting at 16 bits: differences well inside the polygons, not on their edges
+    auto fighting = open("08_depth_precision.toml");
+    fighting->set_format(DepthFormat::int16);
+    CHECK(fighting->pixels_unlike_ray_cast() > fighting->unlike_on_edges());
+}

@@ -140,6 +140,9 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     d->AddRectFilled(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(26, 28, 33, 255));
     d->AddRect(screen.o, ImVec2(screen.o.x + screen.size, screen.o.y + screen.size), IM_COL32(110, 114, 122, 255));
     d->AddText(ImVec2(screen.o.x, screen.o.y - 20), text_colour, tr("depth_sort.screen_inset").c_str());
+    // those already drawn faintly in their colours (the inset keeps every polygon's number to the end), those still
+    // in the list as grey outlines, the pair under examination in the roles' colours
+    for (std::uint32_t i : v.drawn) projection(d, screen, v.polygons[i], rgb(v.polygons[i].color, 0.18f), IM_COL32(110, 114, 122, 120), 1);
     for (std::uint32_t i : v.list)
         if (int(i) != v.r && int(i) != v.q) projection(d, screen, v.polygons[i], 0, IM_COL32(110, 114, 122, 200), 1);
     if (v.r >= 0 && v.q >= 0) {
@@ -149,6 +152,7 @@ void screen_inset(const DepthSortSession& s, ImDrawList* d, Screen screen) {
     }
     std::vector<ImVec4> taken;
     for (std::uint32_t i : v.list) number_label(d, screen, v.polygons[i], i, taken);
+    for (std::uint32_t i : v.drawn) number_label(d, screen, v.polygons[i], i, taken);
     if (v.r < 0 || v.q < 0) return;
     const SortPolygon &r = v.polygons[std::size_t(v.r)], &q = v.polygons[std::size_t(v.q)];
     extent_bar(d, screen, r, true, 6, r_colour);

@@ -250,6 +250,8 @@ void zbuffer_state_panel(const ZBufferSession& s, bool in_3d, const PanelLayout&
     }
     wrapped_text(tr("zbuffer.counts", {{"tested", n(v.tested)}, {"written", n(v.written)}, {"unlike", n(s.pixels_unlike_ray_cast())}}),
                  dim_text);
+    if (s.unlike_on_edges() > 0)  // ties, not errors: say so, or a class reads them as the fill's mistakes
+        wrapped_text(tr("zbuffer.unlike_on_edges", {{"edges", n(s.unlike_on_edges())}}), dim_text);
     end_column_box(l, Box::state);
 }
 

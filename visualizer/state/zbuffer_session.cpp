@@ -2,6 +2,8 @@
 #include "state/zbuffer_session.h"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
@@ -40,14 +42,38 @@ ZBufferSession::RunType fill_run(const Scene& scene, Viewport grid, DepthFormat 
     return {zbuffer_fill(*polygons, o), std::move(initial)};
 }
 
+// Whether the centre of pixel (x, y) lies exactly on an edge of the polygon (sub-pixel fixed point: exact).
+bool centre_on_edge(const ScreenPolygon& p, int x, int y) {
+    const std::int64_t cx = std::int64_t(x) * subpixels + subpixels / 2, cy = std::int64_t(y) * subpixels + subpixels / 2;
+    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+        const ScreenVertex& a = p.vertices[i];
+        const ScreenVertex& b = p.vertices[(i + 1) % p.vertices.size()];
+        // clipped to the view volume, the coordinates are within the grid's few thousand × 256: the products fit
+        const std::int64_t cross = (b.x - a.x) * (cy - a.y) - (b.y - a.y) * (cx - a.x);
+        if (cross == 0 && std::min(a.x, b.x) <= cx && cx <= std::max(a.x, b.x) && std::min(a.y, b.y) <= cy && cy <= std::max(a.y, b.y))
+            return true;
+    }
+    return false;
+}
+
 // How many pixels the finished fill shows differently from the ray cast through the same pixel centres (the grid's
-// walk sees what brute force sees, ties included, and a million-triangle city is cast in a moment, not 25 s).
-std::size_t unlike_ray_cast(const Scene& scene, Viewport grid, DepthFormat format) {
-    const FrameDepth z = LongWork::run_to_end(zbuffer_fill(project_polygons(scene, grid), zbuffer_options(scene, grid, format, EventDetail::polygon)));
+// walk sees what brute force sees, ties included, and a million-triangle city is cast in a moment, not 25 s), and
+// how many of those have their centre on an edge of either polygon shown there.
+std::pair<std::size_t, std::size_t> unlike_ray_cast(const Scene& scene, Viewport grid, DepthFormat format) {
+    const auto polygons = project_polygons(scene, grid);
+    const FrameDepth z = LongWork::run_to_end(zbuffer_fill(polygons, zbuffer_options(scene, grid, format, EventDetail::polygon)));
     const RayCastResult r = LongWork::run_to_end(ray_cast(scene, {.viewport = grid, .acceleration = Acceleration::grid, .detail = RayDetail::ray}));
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < z.polygon.size(); ++k) n += z.image.ids[k] != r.image.ids[k];
-    return n;
+    std::size_t n = 0, on_edges = 0;
+    for (std::size_t k = 0; k < z.polygon.size(); ++k) {
+        if (z.image.ids[k] == r.image.ids[k]) continue;
+        ++n;
+        const int x = int(k % std::size_t(grid.width)), y = int(k / std::size_t(grid.width));
+        const bool on_edge = std::any_of(polygons.begin(), polygons.end(), [&](const ScreenPolygon& p) {
+            return p.status == ScreenStatus::drawn && (p.id == z.image.ids[k] || p.id == r.image.ids[k]) && centre_on_edge(p, x, y);
+        });
+        on_edges += on_edge;
+    }
+    return {n, on_edges};
 }
 
 }  // namespace
@@ -61,7 +87,9 @@ ZBufferSession::ZBufferSession(Lesson lesson, PlayerOptions options)
       scene_(grid_scene(lesson)),
       format_(lesson.depth_format),
       options_(options),
-      unlike_ray_cast_(unlike_ray_cast(scene_, lesson.grid, format_)) {}
+      unlike_ray_cast_(0) {
+    std::tie(unlike_ray_cast_, unlike_on_edges_) = unlike_ray_cast(scene_, lesson.grid, format_);
+}
 
 std::optional<glm::dvec3> ZBufferSession::on_screen(const glm::dvec4& world) const {
     const glm::dvec4 c = view_projection(scene_.camera) * glm::dvec4(glm::dvec3(world), 1.0);
@@ -145,7 +173,7 @@ bool ZBufferSession::redo() {
 void ZBufferSession::rerun() {
     auto run = fill_run(scene_, lesson().grid, format_);
     replace_player(PlayerType(std::move(run.machine), std::move(run.initial), options_));
-    unlike_ray_cast_ = unlike_ray_cast(scene_, lesson().grid, format_);
+    std::tie(unlike_ray_cast_, unlike_on_edges_) = unlike_ray_cast(scene_, lesson().grid, format_);
 }
 
 void ZBufferSession::set_format(DepthFormat f) {

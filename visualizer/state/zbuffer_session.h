@@ -30,6 +30,9 @@ public:
     // Pixels where the image differs from the double-precision ray cast through the same centres (z-fighting,
     // mostly), for the finished fill.
     std::size_t pixels_unlike_ray_cast() const { return unlike_ray_cast_; }
+    // Of those, the pixels whose centre lies exactly on an edge of the polygon the fill or the ray cast shows there:
+    // a tie the fill rule settles one way and the ray cast (which counts an edge as inside) may settle the other.
+    std::size_t unlike_on_edges() const { return unlike_on_edges_; }
 
     // Editing the scene in the fat-pixel view, each edit rerunning the fill at the same step: a vertex moved to a
     // point of the screen (pixels, x right and y down) at the window depth it had, a polygon deleted, a triangle
@@ -55,7 +58,7 @@ private:
     algo::Scene scene_;  // the lesson's, with the near and far the user chose
     algo::DepthFormat format_;
     PlayerOptions options_;
-    std::size_t unlike_ray_cast_ = 0;
+    std::size_t unlike_ray_cast_ = 0, unlike_on_edges_ = 0;
     EditHistory<algo::Scene> history_;
     std::optional<std::pair<std::size_t, std::size_t>> last_moved_;  // a drag is one undo step
 };
