@@ -97,6 +97,26 @@ void forms_canvas(const FormsSession& s, float x, float y, float w, float h) {
         const double u = c.pixel_centre(k, in.pixels);
         d->AddLine(fit(along(c, u, c.near)), fit(along(c, u, far_reach)), faint, 1);
     }
+    // each projector's pixel number past its far end, as the image row below numbers them (the questions say "follow
+    // pixel 12's projector"): every one when they are far enough apart for two digits, else every 2nd or 5th
+    if (in.pixels >= 2) {
+        ImFont* font = ImGui::GetFont();
+        const float small = ImGui::GetFontSize() * 0.75f, two = font->CalcTextSizeA(small, 1e9f, 0, "00").x + 2;
+        const ImVec2 p0 = fit(along(c, c.pixel_centre(0, in.pixels), far_reach)), p1 = fit(along(c, c.pixel_centre(1, in.pixels), far_reach));
+        const float apart = std::hypot(p1.x - p0.x, p1.y - p0.y);
+        std::uint32_t every = 1;
+        for (std::uint32_t e : {1u, 2u, 5u, 10u}) {
+            every = e;
+            if (apart * float(e) >= two) break;
+        }
+        for (std::uint32_t k = 0; k < in.pixels; k += every) {
+            const double u = c.pixel_centre(k, in.pixels);
+            const ImVec2 end = fit(along(c, u, far_reach * 1.04));
+            const std::string t = std::to_string(k);
+            const ImVec2 text = font->CalcTextSizeA(small, 1e9f, 0, t.c_str());
+            d->AddText(font, small, ImVec2(end.x - text.x / 2, end.y - text.y / 2), IM_COL32(170, 170, 170, 255), t.c_str());
+        }
+    }
     // The pixel whose projector is cast, to its closest hit; its hits so far.
     if (v.pixel && !v.finished) {
         const double u = c.pixel_centre(*v.pixel, in.pixels);

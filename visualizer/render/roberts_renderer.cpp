@@ -64,10 +64,16 @@ void draw_roberts_view(const RobertsView& v, const algo::Scene& scene, LineBatch
         }
         if (at < 1) out.bold.line(glm::vec3(e.a + at * (e.b - e.a)), glm::vec3(e.b), shown);
     }
-    // the edge under test named as the narration names it, at its middle
+    // the edge under test named as the narration names it, at its middle, and the next one to be tested (a question
+    // asks about it before its turn), dimmer
     if (v.edge >= 0) {
         const algo::BodyEdge& e = in.edges[std::size_t(v.edge)];
         labels.push_back({glm::vec3((e.a + e.b) * 0.5), std::to_string(v.edge), palette::current_edge});
+        for (std::size_t i = std::size_t(v.edge) + 1; i < in.edges.size(); ++i)
+            if (!v.edges[i].removed && !v.edges[i].finished) {
+                labels.push_back({glm::vec3((in.edges[i].a + in.edges[i].b) * 0.5), std::to_string(i), body_colour(in.edges[i].body, 0.9f)});
+                break;
+            }
     }
     // each body's number at its centre
     for (std::size_t b = 0; b < in.bodies.size(); ++b) {
