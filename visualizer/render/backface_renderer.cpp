@@ -57,13 +57,4 @@ void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBat
     labels.push_back({glm::vec3(v.eye), tr("view.eye"), palette::eye});
 }
 
-void backface_view_bounds(const BackfaceView& v, glm::vec3& centre, float& radius) {
-    Vec3 lo(1e300), hi(-1e300);
-    for (const auto& f : v.faces)
-        for (const Vec3& x : *f.vertices) lo = glm::min(lo, x), hi = glm::max(hi, x);
-    lo = glm::min(lo, v.eye), hi = glm::max(hi, v.eye);
-    centre = glm::vec3((lo + hi) * 0.5);
-    radius = std::max(0.5f, float(glm::length(hi - lo) * 0.5));
-}
-
 }  // namespace hsr::viz

@@ -13,6 +13,5 @@
 namespace hsr::viz {
 
 void draw_backface_view(const BackfaceView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
-void backface_view_bounds(const BackfaceView& view, glm::vec3& centre, float& radius);
 
 }  // namespace hsr::viz

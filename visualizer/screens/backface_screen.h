@@ -14,10 +14,12 @@ template <>
 class Screen<BackfaceSession> : public ScreenDefaults {
 public:
     void frame(const BackfaceSession& s, OrbitCamera& camera) const {
-        glm::vec3 centre(0);
-        float radius = 1;
-        backface_view_bounds(s.view(), centre, radius);
-        frame_left_of_side_box(camera, centre, radius, faces_box_share);  // the faces' table is in the view's right part
+        // the faces' corners and the eye, as large as the part left of the faces' table allows (a sphere round their
+        // box left the models a sixth of the view, their face numbers piled on each other)
+        std::vector<glm::vec3> points{glm::vec3(s.view().eye)};
+        for (const auto& face : s.view().faces)
+            for (const algo::Vec3& x : *face.vertices) points.emplace_back(x);
+        frame_points_in_part(camera, points, {0, 1 - faces_box_share, 1});
     }
     void draw_scene(const BackfaceSession& s, SceneFrame& f) const {
         draw_backface_view(s.view(), s.lesson().scene, f.batches, f.labels);
