@@ -23,8 +23,9 @@ const ImVec4 equation_colour(0.95f, 0.70f, 0.20f, 1.0f);  // the orange of the i
 
 void outcode_table(const ClipView& v) {
     const int columns = algo::plane_count(v.space);
-    // the lecture's bit order, bit 1 first; each header names the plane the bit says a point is outside of
-    static constexpr const char* headers[] = {"z>", "z<", "y>", "y<", "x>", "x<", "w<ε"};
+    // the lecture's bit order, bit 1 first; each header names the plane the bit says a point is outside of, as the
+    // narration, the pipeline and the questions name it ("x max": outside x ≤ w)
+    static constexpr const char* headers[] = {"z max", "z min", "y max", "y min", "x max", "x min", "w<ε"};
     if (!ImGui::BeginTable("outcodes", columns + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame))
         return;
     ImGui::TableSetupColumn("bit", ImGuiTableColumnFlags_WidthFixed, 44);
