@@ -3,6 +3,7 @@
 // the head or is cut into parts, the screen (x, y) with the projections of R and Q and their extents, and the
 // image painted so far, translucent polygons composited "over" what lies behind them.
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -129,7 +130,10 @@ void number_label(ImDrawList* d, const Screen& screen, const SortPolygon& p, std
     if (p.vertices.empty()) return;
     std::vector<ImVec2> corners;
     for (const auto& v : p.vertices) corners.push_back(screen(v.x, v.y));
-    const std::string text = "#" + std::to_string(i);
+    // a translucent pane's α beside its number: C = αF + (1 − α)B is worked with it
+    char alpha[24] = "";
+    if (p.opacity < 1) std::snprintf(alpha, sizeof alpha, "  α = %.2g", p.opacity);
+    const std::string text = "#" + std::to_string(i) + alpha;
     const ImVec4 b = place_name(corners, ImGui::CalcTextSize(text.c_str()), 2, {0.45f, 0.7f}, true, taken);
     d->AddRectFilled(ImVec2(b.x, b.y), ImVec2(b.z, b.w), IM_COL32(26, 28, 33, 215), 2);
     d->AddText(ImVec2(b.x + 2, b.y + 1), text_colour, text.c_str());
