@@ -56,8 +56,12 @@ void draw_tree(const BspView& v) {
     // the branches' legend, as many of its three parts to a line as fit
     const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     ImGui::PushTextWrapPos(0);  // a part wider than the box wraps
-    const std::pair<ImVec4, std::string> legend[] = {{front_branch, tr("bsp.left")}, {dim_text, tr("bsp.normal_side")}, {back_branch, tr("bsp.right")}};
-    for (std::size_t k = 0; k < 3; ++k) {
+    // and, once DisplayBSP has classified the eye, what the letter under a node says
+    const bool sides = std::any_of(v.nodes.begin(), v.nodes.end(), [](const BspNodeView& n) { return n.eye_side.has_value(); });
+    const std::pair<ImVec4, std::string> legend[] = {{front_branch, tr("bsp.left")}, {dim_text, tr("bsp.normal_side")}, {back_branch, tr("bsp.right")},
+                                                     {dim_text, sides ? tr("bsp.sides_legend") : std::string()}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        if (legend[k].second.empty()) continue;
         if (k > 0) {
             ImGui::SameLine();
             if (ImGui::GetCursorScreenPos().x + ImGui::CalcTextSize(legend[k].second.c_str()).x > right_edge) ImGui::NewLine();
