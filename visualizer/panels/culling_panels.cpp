@@ -300,6 +300,12 @@ void zpyramid_canvas(const CullingView& v, const std::vector<std::uint32_t>& dep
                 d->AddRectFilled(ImVec2(left + c * float(px), top + c * float(py)), ImVec2(left + c * float(px + 1), top + c * float(py + 1)),
                                  IM_COL32(k, k, k, 255));
             }
+        // a coarse level's texels outlined: each holds the farthest depth of the 2 × 2 below it, and is seen to be larger
+        if (c >= 6) {
+            const float right = left + c * float(pyramid.width(l)), bottom = top + c * float(pyramid.height(l));
+            for (int px = 1; px < pyramid.width(l); ++px) d->AddLine(ImVec2(left + c * float(px), top), ImVec2(left + c * float(px), bottom), IM_COL32(60, 62, 68, 255));
+            for (int py = 1; py < pyramid.height(l); ++py) d->AddLine(ImVec2(left, top + c * float(py)), ImVec2(right, top + c * float(py)), IM_COL32(60, 62, 68, 255));
+        }
         left += c * float(pyramid.width(l)) + 16;
     }
     ImGui::End();
