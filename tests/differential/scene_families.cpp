@@ -2,12 +2,16 @@
 #include "scene_families.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 #include <glm/geometric.hpp>
 
 #include "scene/generated_scenes.h"
+#include "scene/load_scene.h"
 #include "scene/random_scene.h"
 
 namespace hsr::test {
@@ -206,6 +210,49 @@ Scene t_junctions(std::uint32_t seed, double aspect) {
     return m.done();
 }
 
+// A mesh as modellers export it, read through the OBJ loader: a UV sphere written as quads whose pole quads repeat a
+// point (each ring of the pole is one point written once per slice), a face of welded vertices and one of three
+// points on a line (left out, with a note), an octagon kept whole, CRLF line ends.
+Scene obj_meshes(std::uint32_t seed, double aspect) {
+    Maker m(seed, aspect, "OBJ meshes");
+    std::ostringstream obj;
+    obj << "# a modeller's export\r\no sphere\r\n";
+    const dvec3 c = m.point(1.5);
+    const double r = m.uniform(1, 3);
+    const int slices = m.between(6, 14), stacks = m.between(4, 9);
+    for (int i = 0; i <= stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            const double theta = std::numbers::pi * i / stacks, phi = 2 * std::numbers::pi * j / slices;
+            const dvec3 p = c + r * dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            obj << "v " << p.x << ' ' << p.y << ' ' << p.z << "\r\n";
+        }
+    const auto index = [&](int i, int j) { return i * slices + (j % slices) + 1; };
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j)
+            obj << "f " << index(i, j) << ' ' << index(i, j + 1) << ' ' << index(i + 1, j + 1) << ' ' << index(i + 1, j) << "\r\n";
+    obj << "f 1 1 " << index(1, 0) << "\r\n";  // welded
+    const int first = (stacks + 1) * slices;
+    const dvec3 a = m.point(3), d = m.direction();
+    for (int k = 0; k < 3; ++k) obj << "v " << (a + d * double(k)).x << ' ' << (a + d * double(k)).y << ' ' << (a + d * double(k)).z << "\r\n";
+    obj << "f " << first + 1 << ' ' << first + 2 << ' ' << first + 3 << "\r\n";  // three points on a line
+    obj << "g floor\r\nusemtl grey\r\n";
+    const double floor_y = c.y - r - m.uniform(0.1, 1), floor_r = m.uniform(3, 6);
+    for (int k = 0; k < 8; ++k)
+        obj << "v " << floor_r * std::cos(k * std::numbers::pi / 4) << ' ' << floor_y << ' ' << floor_r * std::sin(k * std::numbers::pi / 4) - 2 << "\r\n";
+    obj << "f";
+    for (int k = 8; k >= 1; --k) obj << ' ' << -k;
+    obj << "\r\n";
+    const auto dir = std::filesystem::temp_directory_path() / ("hsrviz_obj_family_" + std::to_string(seed));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "m.obj", std::ios::binary) << obj.str();
+    Scene s = algo::load_scene_text((dir / "s.toml").string(),
+                                    "[camera]\neye = [0, 0, 10]\ntarget = [0, 0, 0]\nfov = 60\nnear = 1\nfar = 20\n[[meshes]]\nfile = \"m.obj\"\n");
+    std::filesystem::remove_all(dir);
+    s.name = m.scene.name, s.source = m.scene.source;
+    s.camera.aspect = aspect;
+    return s;
+}
+
 // The ordinary case: random triangles, some piercing.
 Scene random_triangles(std::uint32_t seed, double aspect) {
     Scene s = algo::random_triangles({.count = 50, .seed = seed, .size = 2.5});
@@ -227,6 +274,7 @@ const std::vector<SceneFamily>& scene_families() {
         {"behind-eye", "clipping at the near plane and w = 0", behind_the_eye},
         {"closed-meshes", "shared edges, back faces", closed_meshes},
         {"t-junctions", "cracks at T-junctions", t_junctions},
+        {"obj-meshes", "a modeller's OBJ: points repeated at the poles, faces of no area", obj_meshes},
         {"random", "the ordinary case", random_triangles},
     };
     return families;
