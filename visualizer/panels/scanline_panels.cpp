@@ -47,8 +47,13 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
     }
     std::vector<ImVec4> taken;  // the words placed so far: the polygons' names keep off the edges' numbers
     // each active edge's number, as the edge table and the questions name it, low on the edge: the top, where edges
-    // meet at a triangle's tip and the line's in/out words stand, is crowded
-    for (std::uint32_t e : v.active) {
+    // meet at a triangle's tip and the line's in/out words stand, is crowded. The edges the current line is about
+    // to enter are named too: a question asks about them before they are in the table.
+    std::vector<std::uint32_t> named = v.active;
+    if (v.line >= 0)
+        for (std::uint32_t e = 0; e < v.edges->size(); ++e)
+            if ((*v.edges)[e].first_row == v.line && std::find(named.begin(), named.end(), e) == named.end()) named.push_back(e);
+    for (std::uint32_t e : named) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
         const ImVec2 a = on_grid(o, cell, edge.a), b = on_grid(o, cell, edge.b);
         const std::string text = tr("scanline.edge_label", {{"edge", std::to_string(e)}});
