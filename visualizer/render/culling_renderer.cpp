@@ -93,8 +93,15 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
                 const glm::vec3 at = h.kind == algo::HierarchyKind::octree ? glm::vec3(box.centre().x, box.hi.y, box.centre().z) : glm::vec3(box.centre());
                 labels.push_back({at, tr(b.node == 0 ? "culling.label_root" : "culling.label_node", {{"n", std::to_string(b.node)}}), c});
             }
-    // the primitives the narration and the questions name, by their numbers
-    for (std::uint32_t p : named_primitives(v)) {
+    // the primitives the narration and the questions name, by their numbers; a planar occluder that is one of them
+    // carries both names in one label (two labels on one face piled up at the walls' seam)
+    std::vector<std::uint32_t> named = named_primitives(v);
+    std::vector<std::uint8_t> named_with_occluder(scene.polygons.size(), 0);
+    for (const auto& o : v.occluders)
+        if (o.shape == algo::OccluderKind::planar && std::find(named.begin(), named.end(), o.polygon) != named.end())
+            named_with_occluder[o.polygon] = 1;
+    for (std::uint32_t p : named) {
+        if (named_with_occluder[p]) continue;
         glm::dvec4 sum(0);  // the mean of its corners (homogeneous, w = 1)
         for (const auto& q : scene.polygons[p].vertices) sum += q;
         labels.push_back({glm::vec3(sum / double(scene.polygons[p].vertices.size())), "#" + std::to_string(p), palette::working});
@@ -114,7 +121,9 @@ void draw_culling_view(const CullingView& v, LineBatches& out, std::vector<Label
         }
         const char* key = o.shape == algo::OccluderKind::solid ? "culling.label_solid" : o.shape == algo::OccluderKind::proxy ? "culling.label_proxy" : "culling.label_occluder";
         // numbered from 0, as the machine's sentences number them
-        labels.push_back({glm::vec3(algo::centroid(o.outline)), tr(key, {{"n", std::to_string(k)}}), palette::intersection});
+        std::string name = tr(key, {{"n", std::to_string(k)}});
+        if (o.shape == algo::OccluderKind::planar && named_with_occluder[o.polygon]) name += " = #" + std::to_string(o.polygon);
+        labels.push_back({glm::vec3(algo::centroid(o.outline)), name, palette::intersection});
     }
 }
 
