@@ -166,7 +166,13 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches&
             if (auto at = world(p.input[0])) labels.push_back({*at, std::to_string(p.id), colors(p.id, 0.9f)});
         if (!active) continue;
         if (p.kind == PrimitiveKind::segment) draw_active_segment(view, p, world, out, labels, tween);
-        if (p.kind == PrimitiveKind::polygon) draw_active_polygon(view, colors, p, world, out);
+        if (p.kind == PrimitiveKind::polygon) {
+            draw_active_polygon(view, colors, p, world, out);
+            // the stage's vertices named as the narration and the questions name them ("the edge v0 → v1")
+            if (view.stage_input.size() <= 12)
+                for (std::size_t k = 0; k < view.stage_input.size(); ++k)
+                    if (auto at = world(view.stage_input[k])) labels.push_back({*at, "v" + std::to_string(k), palette::current_edge});
+        }
     }
     for (std::size_t k = 0; k < view.intersections.size(); ++k)
         if (auto at = world(view.intersections[k])) {
@@ -175,20 +181,25 @@ void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches&
         }
 }
 
-void clip_view_bounds(const ClipView&, const algo::Scene& scene, glm::vec3& centre, float& radius) {
+std::vector<glm::vec3> clip_view_points(const ClipView& view, const algo::Scene& scene) {
     const ToWorld world(scene.camera);
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    auto grow = [&](glm::vec3 p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    };
+    std::vector<glm::vec3> volume;
     for (int x = -1; x <= 1; x += 2)
         for (int y = -1; y <= 1; y += 2)
             for (int z = -1; z <= 1; z += 2)
-                if (auto p = world(corner(x, y, z))) grow(*p);
-    grow(glm::vec3(scene.camera.eye));
-    centre = (lo + hi) * 0.5f;
-    radius = std::max(0.5f, glm::length(hi - lo) * 0.5f);
+                if (auto p = world(corner(x, y, z))) volume.push_back(*p);
+    volume.emplace_back(scene.camera.eye);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec3& p : volume) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const glm::vec3 centre = (lo + hi) * 0.5f;
+    const float reach = 0.8f * std::max(0.5f, glm::length(hi - lo));
+    // the polygons too (one beside the volume was cut off under the panels), those within its size (not the extreme
+    // cases' 1e307); segments may run off the picture, what is clipped of them lies in the volume
+    std::vector<glm::vec3> points = volume;
+    for (const PrimitiveState& p : view.primitives)
+        for (const auto& q : p.kind == PrimitiveKind::polygon ? p.input : std::vector<Vec4>{})
+            if (auto at = world(q); at && glm::length(*at - centre) < reach) points.push_back(*at);
+    return points;
 }
 
 }  // namespace hsr::viz

@@ -27,7 +27,7 @@ struct Tween {
 void draw_clip_view(const ClipView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels,
                     Tween tween = {}, bool outcode_regions = false);
 
-// A sphere holding the clip volume and the scene, for framing the viewer's camera.
-void clip_view_bounds(const ClipView& view, const algo::Scene& scene, glm::vec3& centre, float& radius);
+// The points the viewer's camera frames: the clip volume's corners, the eye and the primitives near them.
+std::vector<glm::vec3> clip_view_points(const ClipView& view, const algo::Scene& scene);
 
 }  // namespace hsr::viz

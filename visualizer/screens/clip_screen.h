@@ -14,10 +14,11 @@ template <>
 class Screen<ClipSession> : public ScreenDefaults {
 public:
     void frame(const ClipSession& s, OrbitCamera& camera) {
-        glm::vec3 centre(0);
-        float radius = 1;
-        clip_view_bounds(s.view(), s.lesson().scene, centre, radius);
-        frame_bounds(camera, centre, radius);
+        // a sphere round the view volume, the eye and the primitives near them (a polygon beside the volume was cut
+        // off under the panels when only the volume was framed)
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (const glm::vec3& p : clip_view_points(s.view(), s.lesson().scene)) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        frame_bounds(camera, (lo + hi) * 0.5f, std::max(0.5f, glm::length(hi - lo) * 0.5f));
         before_.reset(), shown_.reset(), tween_ = 1;
     }
     void draw_scene(const ClipSession& s, SceneFrame& f) const {
