@@ -45,8 +45,13 @@ void display_list(const DepthSortSession& s, ChipPlaces& anim, ImDrawList* d, Im
     const std::string heading = tr(v.front_to_back ? "depth_sort.heading_front" : "depth_sort.heading", {{"moves", std::to_string(v.moves)}, {"splits", std::to_string(v.splits)}});
     d->AddText(at, dim_colour, heading.c_str());
     const float list_x0 = at.x + float(v.drawn.size()) * (chip + 4) + (v.drawn.empty() ? 0 : gap);
-    d->AddText(ImVec2(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.y), dim_colour,
-               tr("depth_sort.display_list").c_str());
+    // over the list's head, while there is a list: kept inside the canvas (12 chips pushed it past the view's edge)
+    if (!v.list.empty()) {
+        const std::string list_words = tr("depth_sort.display_list");
+        const float words = ImGui::CalcTextSize(list_words.c_str()).x;
+        const float x = std::min(std::max(list_x0, at.x + ImGui::CalcTextSize(heading.c_str()).x + 18), at.x + w - words);
+        d->AddText(ImVec2(x, at.y), dim_colour, list_words.c_str());
+    }
     const float y = at.y + 22;
     struct Note {
         float x;
