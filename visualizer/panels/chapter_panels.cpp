@@ -82,7 +82,7 @@ void question_panel(const Session& s, const Classroom& room, const CourseLesson*
             const std::string number = std::to_string(i + 1);
             const std::string& choice = q->choices[i];
             const std::string shown = window_strings().word(choice);  // "entering" in the student's language
-            const bool numbered = choice.rfind(number + ".", 0) == 0;
+            const bool numbered = choice.rfind(number + ". ", 0) == 0;  // "1. x extents apart", not "1.0"
             // a choice numbered otherwise by the notes ("3'. Q wholly behind R's plane", the seventh choice) keeps its
             // own number in front and its key after it, in brackets: not two numbers side by side
             const std::size_t dot = choice.find(". ");

@@ -99,7 +99,8 @@ std::vector<std::string> LessonScript::problems(const Lesson& lesson, const std:
 
 // "#0" rather than "0": the keys 1, 2, 3 then do not read as the numbers 0, 1, 2 they choose.
 bool choice_is(const std::string& choice, const std::string& answer) {
-    return choice == answer || (choice.size() > 1 && choice[0] == '#' && choice.substr(1) == answer);
+    // a numbered thing named as the picture names it: "#3" for polygon 3, "P1" for point 1
+    return choice == answer || (choice.size() > 1 && (choice[0] == '#' || choice[0] == 'P') && choice.substr(1) == answer);
 }
 
 Verdict judge(const ChapterPlace& place, const std::string& given) { return {choice_is(given, place.answer), place.answer, place.because}; }
