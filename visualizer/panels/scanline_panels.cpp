@@ -100,13 +100,15 @@ namespace {
 
 // The current scan line, or a dash before the first and after the last (where the view's line is −1).
 std::string line_number(const ScanView& v) { return v.line < 0 ? "–" : std::to_string(v.line); }
+// The active edges counted on a line; none once the last line is done (the table keeps its last line's edges)
+std::string active_count(const ScanView& v) { return std::to_string(v.line < 0 ? 0 : v.active.size()); }
 
 // The classic's tables as the Brown notes draw them: ET entry (x, y_max, Δx, ID), PT entry (ID, plane eq., in-out).
 void classic_tables(const ScanLineSession& s, UiActions& out) {
     const ScanView& v = s.view();
     bool piercings = s.finds_piercings();
     if (ImGui::Checkbox((tr("scanline.find_piercings") + "###piercings").c_str(), &piercings)) out.find_piercings = piercings;
-    wrapped_text(tr("scanline.classic_summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
+    wrapped_text(tr("scanline.classic_summary", {{"line", line_number(v)}, {"active", active_count(v)},
                                                  {"compared", std::to_string(v.compared)}, {"piercings", std::to_string(v.piercings)}}),
                  dim_text);
     const auto width = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
@@ -175,7 +177,7 @@ namespace {
 void tables(const ScanLineSession& s, UiActions& out) {
     const ScanView& v = s.view();
     if (v.classic) return classic_tables(s, out);
-    wrapped_text(tr("scanline.summary", {{"line", line_number(v)}, {"active", std::to_string(v.active.size())},
+    wrapped_text(tr("scanline.summary", {{"line", line_number(v)}, {"active", active_count(v)},
                                          {"spans", std::to_string(v.spans)}}),
                  dim_text);
     // columns as wide as their words at any scale; the polygon named as the machine's sentences name it (#0 first).
