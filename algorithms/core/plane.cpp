@@ -17,13 +17,6 @@ Side classify(const Plane& plane, const Vec3& p, Tolerance tol) {
     return s > tol.epsilon ? Side::front : s < -tol.epsilon ? Side::back : Side::on;
 }
 
-Tolerance Tolerance::for_points(std::span<const Vec3> a, std::span<const Vec3> b) {
-    double largest = 0;
-    for (const auto points : {a, b})
-        for (const Vec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    return for_extent(largest);
-}
-
 namespace {
 
 double largest_coordinate(std::span<const Vec3> points) {
@@ -44,6 +37,11 @@ double size_of(std::span<const Vec3> points) {
 }
 
 }  // namespace
+
+Tolerance Tolerance::for_points(std::span<const Vec3> a, std::span<const Vec3> b) {
+    return for_extent(std::max(largest_coordinate(a), largest_coordinate(b)));
+}
+
 
 Tolerance Tolerance::for_pair(std::span<const Vec3> planar, std::span<const Vec3> tested) {
     // 32 ulps of the largest number in the sum n · x + d: Newell's normal, d and the dot product each round a few times
@@ -96,8 +94,7 @@ namespace {
 // 0, refused as "no area" by the BSP alone. Scaling by a power of two is exact, so the unit normal of every polygon
 // within 2^±400 is bit for bit what it was; only those beyond are scaled.
 double unit_scale(std::span<const Vec3> polygon) {
-    double largest = 0;
-    for (const Vec3& v : polygon) largest = std::max({largest, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    const double largest = largest_coordinate(polygon);
     if (!(largest > 0) || !std::isfinite(largest)) return 1;
     const int e = std::ilogb(largest);
     return e < -400 || e > 400 ? std::ldexp(1.0, -e) : 1.0;

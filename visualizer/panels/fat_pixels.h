@@ -12,6 +12,7 @@
 
 #include "raster/image.h"
 #include "panels/name_placement.h"
+#include "panels/panel_style.h"
 #include "raster/screen_polygon.h"
 
 namespace hsr::viz {
@@ -47,18 +48,12 @@ void pixel_grid(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp, Fil
 // The pixels' numbers along a grid, x under it and y left of it, in small dim type: the questions and the narration
 // name pixels by them ("pixel (15, 13)"). Every pixel's when the cells are wide enough for two digits, else every
 // 2nd, 5th or 10th. They take the line under the grid and the canvas's margin left of it.
-inline float grid_number_size() { return ImGui::GetFontSize() * 0.75f; }
 inline void grid_numbers(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp) {
     ImFont* font = ImGui::GetFont();
-    const float size = grid_number_size();
+    const float size = axis_number_size();
     const ImU32 dim = IM_COL32(170, 170, 170, 255);
     const auto width = [&](const std::string& t) { return font->CalcTextSizeA(size, 1e9f, 0, t.c_str()).x; };
-    const float two = width("00") + 3;
-    int step = 1;
-    for (int s : {1, 2, 5, 10, 20, 50, 100}) {
-        step = s;
-        if (cell * float(s) >= two && cell * float(s) >= size) break;
-    }
+    const int step = axis_number_step(cell);
     const float bottom = origin.y + cell * float(vp.height) + 1;
     for (int x = 0; x < vp.width; x += step) {
         const std::string t = std::to_string(x);

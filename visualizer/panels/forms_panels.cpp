@@ -101,14 +101,9 @@ void forms_canvas(const FormsSession& s, float x, float y, float w, float h) {
     // pixel 12's projector"): every one when they are far enough apart for two digits, else every 2nd or 5th
     if (in.pixels >= 2) {
         ImFont* font = ImGui::GetFont();
-        const float small = ImGui::GetFontSize() * 0.75f, two = font->CalcTextSizeA(small, 1e9f, 0, "00").x + 2;
+        const float small = axis_number_size();
         const ImVec2 p0 = fit(along(c, c.pixel_centre(0, in.pixels), far_reach)), p1 = fit(along(c, c.pixel_centre(1, in.pixels), far_reach));
-        const float apart = std::hypot(p1.x - p0.x, p1.y - p0.y);
-        std::uint32_t every = 1;
-        for (std::uint32_t e : {1u, 2u, 5u, 10u}) {
-            every = e;
-            if (apart * float(e) >= two) break;
-        }
+        const auto every = std::uint32_t(axis_number_step(std::hypot(p1.x - p0.x, p1.y - p0.y)));
         for (std::uint32_t k = 0; k < in.pixels; k += every) {
             const double u = c.pixel_centre(k, in.pixels);
             const ImVec2 end = fit(along(c, u, far_reach * 1.04));

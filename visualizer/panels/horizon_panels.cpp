@@ -63,7 +63,7 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
         kx += kw + gap;
     }
     const float legend_h = key_at.back().y + line;
-    const float small = ImGui::GetFontSize() * 0.75f, numbers_h = small + canvas_px(2);  // the columns' numbers under the screen
+    const float small = axis_number_size(), numbers_h = small + canvas_px(2);  // the columns' numbers under the screen
     const ScreenMap map{x + margin + axis, y + margin + line, legend_w, h - 2 * margin - line - legend_h - numbers_h - canvas_px(6), v.columns,
                         v.y_min, v.y_max};
     const int rows = v.terrain->rows;
@@ -77,12 +77,7 @@ void horizon_canvas(const HorizonSession& s, float x, float y, float w, float h)
             d->AddLine(ImVec2(px, map.top), ImVec2(px, map.top + map.height), IM_COL32(60, 64, 72, 120));
         }
         ImFont* font = ImGui::GetFont();
-        const float column_w = map.width / float(v.columns), two = font->CalcTextSizeA(small, 1e9f, 0, "00").x + 3;
-        int step = 1;
-        for (int every : {1, 2, 5, 10, 20}) {
-            step = every;
-            if (column_w * float(every) >= two) break;
-        }
+        const int step = axis_number_step(map.width / float(v.columns));
         for (int c = 0; c < v.columns; c += step) {
             const std::string t = std::to_string(c);
             d->AddText(font, small, ImVec2(map.x(c + 0.5) - font->CalcTextSizeA(small, 1e9f, 0, t.c_str()).x / 2, map.top + map.height + 1),

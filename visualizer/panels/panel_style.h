@@ -30,6 +30,16 @@ inline float& type_scale() {
 }
 inline float canvas_px(float n) { return n * type_scale(); }
 
+// Numbers along an axis (a grid's pixels, the horizon's columns, the projectors): small type, and every 1st, 2nd,
+// 5th, 10th … of them, the first step at which two-digit numbers `spacing` points apart do not touch.
+inline float axis_number_size() { return ImGui::GetFontSize() * 0.75f; }
+inline int axis_number_step(float spacing) {
+    const float two_digits = ImGui::GetFont()->CalcTextSizeA(axis_number_size(), 1e9f, 0, "00").x + 3;
+    for (int step : {1, 2, 5, 10, 20, 50})
+        if (spacing * float(step) >= two_digits) return step;
+    return 100;
+}
+
 // The second font loaded by the app, if any: monospace, for pseudocode.
 inline ImFont* monospace_font() {
     ImFontAtlas* atlas = ImGui::GetIO().Fonts;

@@ -191,7 +191,7 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
     for (const algo::ScreenPolygon& p : *v.polygons) polygon_name(d, frame, cell, p, tr("zbuffer.polygon_label", {{"id", std::to_string(p.id)}}), taken);
     under_way(d, frame, cell, v);
     under_way(d, depth, cell, v);
-    const float diagram_top = frame.y + cell * float(v.viewport.height) + 16 + grid_number_size();  // under the x numbers
+    const float diagram_top = frame.y + cell * float(v.viewport.height) + 16 + axis_number_size();  // under the x numbers
     precision_diagram(d, ImVec2(x + margin, diagram_top), w - 2 * margin, v);
     const float close_top = diagram_top + 26 + 10 + ImGui::GetTextLineHeight() + canvas_px(24);  // under the diagram's words
     close_up(d, ImVec2(x + margin, close_top), w - 2 * margin, y + h - margin - close_top, v);

@@ -196,9 +196,11 @@ std::vector<glm::vec3> clip_view_points(const ClipView& view, const algo::Scene&
     // the polygons too (one beside the volume was cut off under the panels), those within its size (not the extreme
     // cases' 1e307); segments may run off the picture, what is clipped of them lies in the volume
     std::vector<glm::vec3> points = volume;
-    for (const PrimitiveState& p : view.primitives)
-        for (const auto& q : p.kind == PrimitiveKind::polygon ? p.input : std::vector<Vec4>{})
+    for (const PrimitiveState& p : view.primitives) {
+        if (p.kind != PrimitiveKind::polygon) continue;
+        for (const auto& q : p.input)
             if (auto at = world(q); at && glm::length(*at - centre) < reach) points.push_back(*at);
+    }
     return points;
 }
 
