@@ -49,7 +49,7 @@ glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Lab
         return lp.camera.view_projection(view_w / view_h);
     }
     // the family's 3D view and caption, drawn in the space left of the panels and above the timeline
-    SceneFrame scene{lines, labels, "", std::nullopt, lp.second_view, view_w, view_h, {}};
+    SceneFrame scene{lines, labels, "", std::nullopt, lp.second_view, view_w, view_h, {}, lp.camera.eye()};
     lp.with_family_screen([&](auto& session, auto& screen) { screen.draw_scene(session, scene); });
     const glm::mat4 vp = scene.view_projection.value_or(lp.camera.view_projection(view_w / view_h));
     draw_labels(labels, vp, 0, 0, view_w, view_h, scene.covered);

@@ -84,3 +84,7 @@ TEST_CASE("an occluder's orange stays apart from the marks an occlusion lesson s
 TEST_CASE("IntersectionTest's volumes (at work, met, missed, a false alarm) are told apart under every colour blindness", "[colours]") {
     every_pair_apart(intersection_colours::all, 15);
 }
+
+TEST_CASE("back-face culling's marks (under test, culled, culled though seen) are told apart under every colour blindness", "[colours]") {
+    every_pair_apart(backface_colours::all, 15);
+}

@@ -8,11 +8,14 @@
 #include "panels/panel_style.h"
 #include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
+#include "state/state_colours.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
-const ImVec4 wrong(1.0f, 0.35f, 0.45f, 1);  // a face culled that the eye sees: the test was wrong for it
+// the verdicts in the view's colours (its legend says what they are)
+const ImVec4 wrong(backface_colours::culled_seen.r, backface_colours::culled_seen.g, backface_colours::culled_seen.b, 1);  // culled, yet seen
+const ImVec4 culled(backface_colours::culled.r, backface_colours::culled.g, backface_colours::culled.b, 1);
 int scrolled_to = -1;                        // the row the table last scrolled to
 
 // Every face: its id, the test's value, what the ray cast saw of it, and the verdict.
@@ -58,7 +61,7 @@ void faces_table(const BackfaceView& v) {
             if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
             if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
             // wrapped in its cell at spaces only ("behalten · trotzdem verdeckt" is wider than the column)
-            wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : bit_set);
+            wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : culled);
         }
         ImGui::EndTable();
     }

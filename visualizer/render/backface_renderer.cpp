@@ -7,15 +7,17 @@
 
 #include "render/palette.h"
 #include "render/scene_color.h"
+#include "state/state_colours.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
 
 using algo::Vec3;
 
-constexpr glm::vec4 culled_seen_edge{1.0f, 0.35f, 0.45f, 1};  // as the table's "but seen!"
+glm::vec4 opaque(const StateColour& c) { return {c.r, c.g, c.b, 1}; }
 
-void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBatches& out, std::vector<Label>& labels) {
+void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, glm::vec3 camera_eye, LineBatches& out,
+                        std::vector<Label>& labels) {
     const SceneColors colors(scene);
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
         const FaceView& f = v.faces[i];
@@ -29,16 +31,20 @@ void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, LineBat
             out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
         // against the ray cast: a culled face the eye sees is drawn in the warning colour, bold
         const bool culled_but_seen = f.facing && !kept && f.seen && *f.seen > 0;
-        const glm::vec4 edge = current           ? palette::current_edge
-                               : culled_but_seen ? culled_seen_edge
-                               : f.facing && !kept ? palette::outside
+        const glm::vec4 edge = current             ? opaque(backface_colours::under_test)
+                               : culled_but_seen   ? opaque(backface_colours::culled_seen)
+                               : f.facing && !kept ? opaque(backface_colours::culled)
                                                    : colors(f.id, 1);
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current || culled_but_seen ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
-        // every face numbered as the table and the questions name it, just off its outer side
+        // every face numbered as the table and the questions name it, just off its outer side; in brackets and dim
+        // when the camera sees it from behind
         const Vec3 c = algo::centroid(vs);
-        labels.push_back({glm::vec3(c + f.plane.n * 0.04), std::to_string(f.id),
-                          current ? palette::current_edge : glm::vec4(0.85f, 0.86f, 0.9f, f.facing && !kept ? 0.55f : 1.0f)});
+        const bool from_behind = glm::dot(camera_eye - glm::vec3(c), glm::vec3(f.plane.n)) < 0;
+        const std::string number = from_behind ? "(" + std::to_string(f.id) + ")" : std::to_string(f.id);
+        const float alpha = from_behind ? 0.5f : f.facing && !kept ? 0.7f : 1.0f;
+        labels.push_back({glm::vec3(c + f.plane.n * 0.04), number,
+                          current ? palette::current_edge : glm::vec4(0.85f, 0.86f, 0.9f, alpha)});
         if (!current) continue;
         // the test's vectors: the outward normal at the centroid, and the view vector from the eye to vertex 0
         const double size = glm::length(vs[0] - c) + 0.2;

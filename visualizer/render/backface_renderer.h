@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Draws a back-face culling view: faces kept in their colour, culled faces dark, untested faces faint; for the
-// face just tested, its normal and the view vector from the eye (or the eye-to-plane distance).
+// face just tested, its normal and the view vector from the eye (or the eye-to-plane distance). A face the camera
+// (`camera_eye`, not the test's eye) sees from behind has its number dim and in brackets: drawn over the faces in
+// front of it, a plain number would seem to name one of them.
 #pragma once
 
 #include <vector>
@@ -12,6 +14,7 @@
 
 namespace hsr::viz {
 
-void draw_backface_view(const BackfaceView& view, const algo::Scene& scene, LineBatches& batches, std::vector<Label>& labels);
+void draw_backface_view(const BackfaceView& view, const algo::Scene& scene, glm::vec3 camera_eye, LineBatches& batches,
+                        std::vector<Label>& labels);
 
 }  // namespace hsr::viz

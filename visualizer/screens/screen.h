@@ -50,6 +50,7 @@ struct SceneFrame {
     float view_w = 1, view_h = 1;              // the 3D view's size
     float aspect() const { return view_w / view_h; }
     std::vector<ViewRect> covered;             // parts of the view the screen's canvases draw over: labels keep off
+    glm::vec3 camera_eye{0, 0, 0};             // where the orbit camera looks from: which faces it sees from behind
 };
 
 // What draw_panels draws into, after the 3D view.
