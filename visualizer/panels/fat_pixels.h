@@ -78,17 +78,56 @@ inline void outline(ImDrawList* d, ImVec2 origin, float cell, const algo::Screen
 
 // A polygon's name on a dark backing inside it, in the polygon's colour: the name the tables, the narration and the
 // questions use, found in the picture. At the middle of its outline, or, where an earlier name sits there (two
-// crossing triangles share a middle), part way towards one of its corners. `taken`: the names placed so far.
-inline void polygon_name(ImDrawList* d, ImVec2 origin, float cell, const algo::ScreenPolygon& p, const std::string& text, std::vector<ImVec4>& taken) {
+// crossing triangles share a middle), part way towards one of its corners, or beside it on the grid. `taken`: the
+// names placed so far, and what else they keep off.
+inline void polygon_name(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport viewport, const algo::ScreenPolygon& p,
+                         const std::string& text, std::vector<ImVec4>& taken) {
     if (p.status != algo::ScreenStatus::drawn || p.vertices.empty()) return;
     std::vector<ImVec2> corners;
     for (const auto& q : p.vertices) corners.push_back(on_grid(origin, cell, q));
-    const ImVec4 b = place_name(corners, ImGui::CalcTextSize(text.c_str()), 3, {0.4f, 0.6f}, false, taken);
+    const ImVec4 grid(origin.x, origin.y, origin.x + cell * float(viewport.width), origin.y + cell * float(viewport.height));
+    const ImVec4 b = place_name(corners, ImGui::CalcTextSize(text.c_str()), 3, {0.4f, 0.6f}, true, taken, &grid);
     // a light backing, so that the pixels under a name still show their colour (a fill-rule lesson is about single
     // pixels); white words, never the colour of the pixels under them, and the polygon's colour in a bar beside them
     d->AddRectFilled(ImVec2(b.x - 4, b.y), ImVec2(b.z, b.w), IM_COL32(20, 22, 26, 165), 3);
     d->AddRectFilled(ImVec2(b.x - 4, b.y + 1), ImVec2(b.x - 1, b.w - 1), rgb(p.color));
     d->AddText(ImVec2(b.x + 3, b.y + 1), IM_COL32(245, 245, 245, 255), text.c_str());
+}
+
+// The pixels along each edge the polygon being filled shares with another (the same line, overlapping): where a fill-rule lesson looks (which polygon writes a pixel whose centre is on the edge), so the
+// polygons' names keep off them.
+inline std::vector<ImVec4> shared_edge_strips(const std::vector<algo::ScreenPolygon>& polygons, int filled, ImVec2 origin, float cell) {
+    using V = algo::ScreenVertex;
+    const auto turn = [](const V& a, const V& b, const V& c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); };
+    std::vector<ImVec4> strips;
+    if (filled < 0 || filled >= int(polygons.size())) return strips;
+    const auto& p = polygons[std::size_t(filled)].vertices;
+    for (std::size_t j = 0; j < polygons.size(); ++j) {
+        const auto& q = polygons[j].vertices;
+        if (int(j) == filled || polygons[j].status != algo::ScreenStatus::drawn) continue;
+        for (std::size_t e = 0; e < p.size(); ++e)
+            for (std::size_t f = 0; f < q.size(); ++f) {
+                const V &a = p[e], &b = p[(e + 1) % p.size()], &c = q[f], &d = q[(f + 1) % q.size()];
+                if (a == b || turn(a, b, c) != 0 || turn(a, b, d) != 0) continue;  // not on one line (exact: integers)
+                // the overlap, along the edge's longer axis
+                const bool along_x = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
+                const auto key = [&](const V& v) { return along_x ? v.x : v.y; };
+                const auto [p0, p1] = std::minmax({a, b}, [&](const V& u, const V& v) { return key(u) < key(v); });
+                const auto [q0, q1] = std::minmax({c, d}, [&](const V& u, const V& v) { return key(u) < key(v); });
+                const V& from = key(p0) > key(q0) ? p0 : q0;
+                const V& to = key(p1) < key(q1) ? p1 : q1;
+                if (key(from) >= key(to)) continue;  // they touch at a point, or not at all
+                // each pixel the shared part runs through (sampled at half a pixel)
+                const ImVec2 s = on_grid(origin, cell, from), t = on_grid(origin, cell, to);
+                const int samples = 2 * int(std::max(std::abs(t.x - s.x), std::abs(t.y - s.y)) / cell) + 1;
+                for (int k = 0; k <= samples; ++k) {
+                    const float u = float(k) / float(samples);
+                    const float px = std::floor((s.x + (t.x - s.x) * u - origin.x) / cell), py = std::floor((s.y + (t.y - s.y) * u - origin.y) / cell);
+                    strips.push_back(ImVec4(origin.x + px * cell, origin.y + py * cell, origin.x + (px + 1) * cell, origin.y + (py + 1) * cell));
+                }
+            }
+    }
+    return strips;
 }
 
 // An image (painted so far, say) stretched over the box from `o` of `size` points, with a frame: runs of one colour

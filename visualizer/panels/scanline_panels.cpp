@@ -63,9 +63,11 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         d->AddText(at, IM_COL32(255, 255, 255, 255), text.c_str());
         taken.push_back(ImVec4(at.x - 2, at.y, at.x + size.x + 2, at.y + size.y));
     }
-    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_name(d, o, cell, (*v.polygons)[k], "#" + std::to_string(k), taken);
+    // the names keep off the line being scanned, its crossings' words and the pixels a question there asks about
+    const float ly = o.y + (float(v.line) + 0.5f) * cell, word_band = 9 + ImGui::GetTextLineHeight();
+    if (v.line >= 0) taken.push_back(ImVec4(o.x, ly - std::max(word_band, cell / 2), o.x + cell * float(v.viewport.width), ly + std::max(word_band, cell / 2)));
+    for (std::size_t k = 0; k < v.polygons->size(); ++k) polygon_name(d, o, cell, v.viewport, (*v.polygons)[k], "#" + std::to_string(k), taken);
     if (v.line >= 0) {
-        const float ly = o.y + (float(v.line) + 0.5f) * cell;
         d->AddLine(ImVec2(o.x - 8, ly), ImVec2(o.x + cell * float(v.viewport.width) + 8, ly), IM_COL32(255, 230, 90, 255), canvas_px(2));
         // each crossing's word above the line, or below it where it would run into the word before it
         float above_end = -1e30f, below_end = -1e30f;

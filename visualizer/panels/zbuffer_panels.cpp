@@ -181,14 +181,14 @@ void zbuffer_canvas(const ZBufferSession& s, float x, float y, float w, float h)
         return ImGui::GetColorU32(ImVec4(0.15f + 0.85f * g, 0.12f + 0.6f * g, 0.25f * (1 - g) + 0.1f, 1));
     });
     // each polygon named in the frame buffer as the machine's sentences and the questions name it (its scene id)
-    std::vector<ImVec4> taken;  // not over the span or the pixel under test
+    std::vector<ImVec4> taken = shared_edge_strips(*v.polygons, v.polygon, frame, cell);  // not over a shared edge, the span or the pixel under test
     if (v.span_y >= 0)
         taken.push_back(ImVec4(frame.x + float(v.span_begin) * cell - 2, frame.y + float(v.span_y) * cell - 2, frame.x + float(v.span_end) * cell + 2,
                                frame.y + float(v.span_y + 1) * cell + 2));
     if (v.pixel_x >= 0)
         taken.push_back(ImVec4(frame.x + float(v.pixel_x) * cell - 3, frame.y + float(v.pixel_y) * cell - 3, frame.x + float(v.pixel_x + 1) * cell + 3,
                                frame.y + float(v.pixel_y + 1) * cell + 3));
-    for (const algo::ScreenPolygon& p : *v.polygons) polygon_name(d, frame, cell, p, tr("zbuffer.polygon_label", {{"id", std::to_string(p.id)}}), taken);
+    for (const algo::ScreenPolygon& p : *v.polygons) polygon_name(d, frame, cell, v.viewport, p, tr("zbuffer.polygon_label", {{"id", std::to_string(p.id)}}), taken);
     under_way(d, frame, cell, v);
     under_way(d, depth, cell, v);
     const float diagram_top = frame.y + cell * float(v.viewport.height) + 16 + axis_number_size();  // under the x numbers
