@@ -47,6 +47,7 @@ public:
     explicit ABufferSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::ABufferMachine) { return true; }  // every ABufferMachine (state/family_contract.h)
     static std::string sentence_of(const algo::ABufferEvent& e, const ABufferView& view);  // describe(e)
 
 private:

@@ -13,6 +13,7 @@ public:
     explicit BackfaceSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::BackfaceTest) { return true; }  // every BackfaceTest (state/family_contract.h)
     static std::string sentence_of(const algo::CullEvent& e, const BackfaceView& view);  // describe(e), as the view after it names things
 
 private:

@@ -19,6 +19,7 @@ public:
     explicit BspSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::BspMachine) { return true; }  // every BspMachine (state/family_contract.h)
     static std::string sentence_of(const algo::BspEvent& e, const BspView& view);  // describe(e), as the view after it names things
     algo::BspMachine kind() const { return kind_; }
     // Build statistics of the same tree built once more, timed (the player's own run is stepped, not timed).

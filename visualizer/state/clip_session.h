@@ -19,6 +19,7 @@ public:
     explicit ClipSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::ClipAlgorithm) { return true; }  // every ClipAlgorithm (state/family_contract.h)
     static std::string sentence_of(const algo::ClipEvent& e, const ClipView& view);  // describe(e), as the view after it names things
     algo::ClipAlgorithm algorithm() const { return algorithm_; }
     algo::ClipSpace space() const { return view().space; }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "culling/hiz.h"
@@ -106,6 +107,13 @@ public:
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static std::string sentence_of(const Event& e, const CullingView& view);  // describe(e)
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::CullingMachine m) {  // the machines whose events are Event (frustum and detail share theirs)
+        using M = algo::CullingMachine;
+        if constexpr (std::is_same_v<Event, algo::HierarchyEvent>) return m == M::bounds;
+        else if constexpr (std::is_same_v<Event, algo::HierarchyCullEvent>) return m == M::frustum || m == M::detail;
+        else if constexpr (std::is_same_v<Event, algo::OcclusionEvent>) return m == M::occluders;
+        else return m == M::hiz;
+    }
     const CullingView& culling_view() const override { return this->view(); }
     algo::CullingMachine culling_machine() const override { return machine_; }
 

@@ -37,6 +37,7 @@ public:
     explicit DepthSortSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::DepthSortMachine) { return true; }  // every DepthSortMachine (state/family_contract.h)
     static std::string sentence_of(const algo::DepthSortEvent& e, const DepthSortView& view);  // describe(e), as the view after it names things
 
 private:

@@ -3,21 +3,19 @@
 // session type (with_family). Code that needs a family's own knowledge (its screen, its trace, its presets) visits
 // the variant; code that does not (timeline, narration, pseudocode, questions) takes the common Session.
 //
-// Each session type S provides, beside the Session interface:
-//   S(Lesson, PlayerOptions)                           plays the lesson
-//   static S::RunType machine(const Lesson&)           the lesson's machine and first view (wired once, here)
-//   static std::string sentence_of(const Event&, const View&)    the sentence of an event, the view after it
-//   static FamilyFacts facts                          what the presets and the report need (below)
+// What a session type provides is state/family_contract.h's FamilySessionType, checked on the list below: a new
+// family is its own files, one line here (the include and the list), one in screens/screens.h, and its sources.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
 
-#include "core/overloaded.h"
+#include "state/family_contract.h"
 #include "state/abuffer_session.h"
 #include "state/backface_session.h"
 #include "state/bsp_session.h"
@@ -44,12 +42,20 @@ struct Family {
     using Session = S;
 };
 
-// The session types, in one list: the variant below and the window's screens are made from it.
+// The session types, in one list: the variant below and the window's screens are made from it. Each must meet the
+// family contract (a member missing is a compile error here that names it), and each machine of the registry must
+// be played by one of them (checked below the list).
+template <FamilySessionType S>
+constexpr bool meets_the_family_contract() { return true; }  // called with a type that does not: the error names what is missing
+
 template <class... S>
 struct SessionTypes {
+    static_assert((meets_the_family_contract<S>() && ...));
     using Variant = std::variant<std::unique_ptr<S>...>;
     template <template <class> class Of>
     using Tuple = std::tuple<Of<S>...>;
+    template <class M>
+    static constexpr bool some_plays = (PlaysMachineType<S, M> || ...);
 };
 using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBufferSession, RayCastSession, ScanLineSession,
                                  ZMergeSession, DepthSortSession, PvsSession, PortalRenderSession, BoundsSession,
@@ -57,41 +63,30 @@ using AllSessions = SessionTypes<ClipSession, BspSession, BackfaceSession, ZBuff
                                  CompositeSession, RobertsSession, PerspectiveSession, ABufferSession, FormsSession,
                                  IntersectionSession>;
 
+template <class Variant>
+struct EveryMachinePlayed;
+template <class... M>
+struct EveryMachinePlayed<std::variant<M...>> : std::bool_constant<(AllSessions::some_plays<M> && ...)> {};
+static_assert(EveryMachinePlayed<algo::Machine>::value,
+              "a machine type of algo::Machine (registry.h) that no session type declares `static bool plays(M)` for");
+
+namespace detail {
+template <class F, class S, class... Rest>
+decltype(auto) with_first_that_plays(const algo::AlgorithmInfo& algorithm, F& f, SessionTypes<S, Rest...>*) {
+    if constexpr (sizeof...(Rest) == 0) {
+        if (!session_plays<S>(algorithm.machine)) throw std::logic_error("no session type plays " + std::string(algorithm.id));
+        return f(Family<S>{});
+    } else {
+        if (session_plays<S>(algorithm.machine)) return f(Family<S>{});
+        return with_first_that_plays(algorithm, f, static_cast<SessionTypes<Rest...>*>(nullptr));
+    }
+}
+}  // namespace detail
+
 // Calls f(Family<S>{}) with the session type that plays `algorithm`: the one place an algorithm becomes a type.
 template <class F>
 decltype(auto) with_family(const algo::AlgorithmInfo& algorithm, F&& f) {
-    using namespace algo;
-    return std::visit(overloaded{
-                          [&](ClipAlgorithm) { return f(Family<ClipSession>{}); },
-                          [&](BspMachine) { return f(Family<BspSession>{}); },
-                          [&](BackfaceTest) { return f(Family<BackfaceSession>{}); },
-                          [&](ZBufferMachine) { return f(Family<ZBufferSession>{}); },
-                          [&](Acceleration) { return f(Family<RayCastSession>{}); },
-                          [&](ScanLineMachine) { return f(Family<ScanLineSession>{}); },
-                          [&](ZMergeMachine) { return f(Family<ZMergeSession>{}); },
-                          [&](HorizonMachine) { return f(Family<HorizonSession>{}); },
-                          [&](CompositeMachine) { return f(Family<CompositeSession>{}); },
-                          [&](RobertsMachine) { return f(Family<RobertsSession>{}); },
-                          [&](PerspectiveMachine) { return f(Family<PerspectiveSession>{}); },
-                          [&](ABufferMachine) { return f(Family<ABufferSession>{}); },
-                          [&](FormsMachine) { return f(Family<FormsSession>{}); },
-                          [&](IntersectionMachine) { return f(Family<IntersectionSession>{}); },
-                          [&](DepthSortMachine) { return f(Family<DepthSortSession>{}); },
-                          [&](PortalMachine m) {
-                              return m == PortalMachine::pvs ? f(Family<PvsSession>{}) : f(Family<PortalRenderSession>{});
-                          },
-                          [&](CullingMachine m) {
-                              switch (m) {
-                                  case CullingMachine::bounds: return f(Family<BoundsSession>{});
-                                  case CullingMachine::frustum:
-                                  case CullingMachine::detail: return f(Family<HierarchyCullSession>{});
-                                  case CullingMachine::occluders: return f(Family<OccluderSession>{});
-                                  case CullingMachine::hiz: break;
-                              }
-                              return f(Family<HizSession>{});
-                          },
-                      },
-                      algorithm.machine);
+    return detail::with_first_that_plays(algorithm, f, static_cast<AllSessions*>(nullptr));
 }
 
 // A lesson being played, as its family's own type; `->` and `*` give the common Session.

@@ -47,6 +47,7 @@ public:
     explicit FormsSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);
     static const FamilyFacts facts;
+    static bool plays(algo::FormsMachine) { return true; }  // every FormsMachine (state/family_contract.h)
     static std::string sentence_of(const algo::FormsEvent& e, const FormsView& view);
 
 private:

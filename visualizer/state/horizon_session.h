@@ -38,6 +38,7 @@ public:
     explicit HorizonSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::HorizonMachine) { return true; }  // every HorizonMachine (state/family_contract.h)
     static std::string sentence_of(const algo::HorizonEvent& e, const HorizonView& view);  // describe(e)
 
 private:

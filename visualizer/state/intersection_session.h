@@ -44,6 +44,7 @@ public:
     explicit IntersectionSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);
     static const FamilyFacts facts;
+    static bool plays(algo::IntersectionMachine) { return true; }  // every IntersectionMachine (state/family_contract.h)
     static std::string sentence_of(const algo::IntersectionEvent& e, const IntersectionView& view);
 
 private:

@@ -43,6 +43,7 @@ public:
     explicit PerspectiveSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::PerspectiveMachine) { return true; }  // every PerspectiveMachine (state/family_contract.h)
     static std::string sentence_of(const algo::TransformEvent& e, const PerspectiveView& view);  // describe(e)
 
 private:

@@ -76,6 +76,7 @@ public:
     explicit PvsSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::PortalMachine m) { return m == algo::PortalMachine::pvs; }
     static std::string sentence_of(const algo::PvsEvent& e, const PvsView& view);  // describe(e) naming the cells
 
 private:
@@ -89,6 +90,7 @@ public:
     explicit PortalRenderSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::PortalMachine m) { return m != algo::PortalMachine::pvs; }  // with narrowing or bounding-box frusta
     static std::string sentence_of(const algo::PortalEvent& e, const PortalView& view);  // describe(e) naming the cells
     bool bounding_box_frusta() const { return bbox_; }
     // Stand the eye at a new plan point (keeping its height and view direction) and rerun portal_render.

@@ -14,6 +14,7 @@ public:
     explicit RayCastSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::Acceleration) { return true; }  // every Acceleration (state/family_contract.h)
     static std::string sentence_of(const algo::RayCastEvent& e, const RayView& view);  // describe(e), as the view after it names things
     const algo::Scene& scene() const { return scene_; }  // the lesson's, with the grid's aspect
     const algo::OctreeOptions& octree_options() const { return lesson().octree; }

@@ -17,6 +17,7 @@ public:
     // where polygons pierce each other
     static RunType machine(const Lesson& lesson, bool find_piercings = true);
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::ScanLineMachine) { return true; }  // every ScanLineMachine (state/family_contract.h)
     static std::string sentence_of(const algo::ScanLineEvent& e, const ScanView& view);  // describe(e), as the view after it names things
 
     bool classic() const { return machine_of<algo::ScanLineMachine>(lesson()) == algo::ScanLineMachine::classic; }

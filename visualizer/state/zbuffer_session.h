@@ -21,6 +21,7 @@ public:
     explicit ZBufferSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::ZBufferMachine) { return true; }  // every ZBufferMachine (state/family_contract.h)
     static std::string sentence_of(const algo::ZBufferEvent& e, const ZView& view);  // describe(e)
 
     algo::DepthFormat format() const { return view().format; }

@@ -34,6 +34,7 @@ public:
     explicit ZMergeSession(Lesson lesson, PlayerOptions options = {});
     static RunType machine(const Lesson& lesson);  // the lesson's machine and the view it starts from
     static const FamilyFacts facts;  // for the presets and the report
+    static bool plays(algo::ZMergeMachine) { return true; }  // every ZMergeMachine (state/family_contract.h)
     static std::string sentence_of(const algo::ZMergeEvent& e, const ZMergeView& view);  // describe(e), as the view after it names things
 
 private:
