@@ -5,6 +5,7 @@
 
 #include "catch.h"
 #include "clipping/clip_test_helpers.h"
+#include "event_strings.h"
 #include "state/clip_view.h"
 #include "state/event_log.h"
 #include "state/lesson.h"
@@ -53,6 +54,13 @@ TEST_CASE("the event log returns each event as it was pushed", "[state][log]") {
     for (const auto& e : events) log.push(e);
     REQUIRE(log.size() == events.size());
     for (std::size_t k = 0; k < events.size(); ++k) CHECK(log.at(k) == events[k]);
+}
+
+TEST_CASE("a failing comparison of events prints each as its trace line, not as bytes", "[state][log]") {
+    const ClipEvent e = EdgeClassified{ClipPlane::y_max, EdgeCase::out_in, true, 7, 0.5, -0.25, {1, 2, 3, 4}};
+    const std::string printed = Catch::Detail::stringify(e);
+    CHECK_THAT(printed, Catch::Contains("\"kind\":\"EdgeClassified\""));
+    CHECK_THAT(printed, Catch::Contains("\"plane\":\"y max\""));  // the fields by name, in words
 }
 
 TEST_CASE("seek(k) equals a fold of the first k events for every k", "[state][player]") {
