@@ -8,6 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "frame_drawing.h"
+#include "lesson_play.h"
+
 namespace hsr::viz {
 namespace {
 
@@ -100,6 +103,31 @@ void push_file_drop(const std::string& path) {
     e.type = SDL_DROPFILE;
     e.drop.file = SDL_strdup(path.c_str());
     if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
+}
+
+bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer& r, bool& shift_held) {
+    const auto input = parse_scripted_input(text);
+    if (!input) return false;
+    SDL_Event e;
+    if (input->kind == ScriptedInput::Kind::key) {
+        key_event(input->key, e);
+        SDL_PushEvent(&e);
+        return true;
+    }
+    if (input->kind == ScriptedInput::Kind::drop) {
+        for (const std::string& file : input->files) push_file_drop(file);
+        return true;
+    }
+    const glm::vec2 a = gesture_window_point(lp, r, input->from), b = gesture_window_point(lp, r, input->to);
+    const auto ax = int(std::lround(a.x)), ay = int(std::lround(a.y)), bx = int(std::lround(b.x)), by = int(std::lround(b.y));
+    const bool right = input->kind == ScriptedInput::Kind::right_click;
+    const Uint8 button = right ? SDL_BUTTON_RIGHT : SDL_BUTTON_LEFT;
+    shift_held = input->kind == ScriptedInput::Kind::shift_drag;
+    if (shift_held) SDL_SetModState(KMOD_LSHIFT);
+    for (SDL_Event m : {mouse_motion_event(ax, ay, 0, 0, false), mouse_button_event(true, button, ax, ay),
+                        mouse_motion_event(bx, by, bx - ax, by - ay, !right), mouse_button_event(false, button, bx, by)})
+        SDL_PushEvent(&m);
+    return true;
 }
 
 }  // namespace hsr::viz
