@@ -6,7 +6,7 @@
 // page's script asks), remembered_settings, scripted_input.
 //
 // Family-blind: what a family draws, frames, edits and how it takes gestures is its screen's (screens/), reached
-// through Lessonplay::with_family_screen; the lesson's update is lesson_play.cpp's, the window's setup window.cpp's.
+// through LessonPlay::with_family_screen; the lesson's update is lesson_play.cpp's, the window's setup window.cpp's.
 #include "app.h"
 
 #include <SDL.h>
@@ -53,7 +53,7 @@ int run_app(const AppOptions& o) {
     int exit_code = 0;
     {
         // The lesson, as the options and the settings say
-        Lessonplay lp;
+        LessonPlay lp;
         std::size_t next_key = 0;  // of --keys
         bool quit = false;         // the window was closed while long work ran
         lp.show_work = [&](const algo::WorkProgress& p) { work_frame(p, w, lp, o, next_key, quit); };

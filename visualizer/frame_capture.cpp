@@ -18,7 +18,7 @@
 
 namespace hsr::viz {
 
-bool FrameCapture::begin(Lessonplay& lp, const AppOptions& o, int& exit_code) {
+bool FrameCapture::begin(LessonPlay& lp, const AppOptions& o, int& exit_code) {
     frame_start_ = SDL_GetPerformanceCounter();
     bool runs = true;
     if (o.gif && lp.session()) {
@@ -34,7 +34,7 @@ bool FrameCapture::begin(Lessonplay& lp, const AppOptions& o, int& exit_code) {
     return runs;
 }
 
-void FrameCapture::after_draw(Lessonplay& lp, const AppOptions& o, std::uint64_t frame, int width, int height, bool keys_pressed,
+void FrameCapture::after_draw(LessonPlay& lp, const AppOptions& o, std::uint64_t frame, int width, int height, bool keys_pressed,
                               bool& running, int& exit_code) {
     if (o.record_dir) {
         char name[64];
@@ -90,7 +90,7 @@ void FrameCapture::after_swap(const AppOptions& o) {
     frame_start_ = now;
 }
 
-void FrameCapture::finish(const Lessonplay& lp, const AppOptions& o, std::uint64_t frames, int& exit_code) {
+void FrameCapture::finish(const LessonPlay& lp, const AppOptions& o, std::uint64_t frames, int& exit_code) {
     if (o.frame_log && !frame_ms_.empty()) {
         std::ofstream log(*o.frame_log);
         for (double ms : frame_ms_) log << ms << '\n';

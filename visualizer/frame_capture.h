@@ -18,15 +18,15 @@ class FrameCapture {
 public:
     // Before the first frame: --gif's first step sought, --record's folder made. False: nothing to run (said why;
     // `exit_code` set).
-    bool begin(Lessonplay& lp, const AppOptions& o, int& exit_code);
+    bool begin(LessonPlay& lp, const AppOptions& o, int& exit_code);
     // After frame number `frame` (from 1) is drawn into the drawable of width × height pixels; `keys_pressed`: every
     // scripted key was pressed. Clears `running` when the run has written all it was asked to.
-    void after_draw(Lessonplay& lp, const AppOptions& o, std::uint64_t frame, int width, int height, bool keys_pressed, bool& running,
+    void after_draw(LessonPlay& lp, const AppOptions& o, std::uint64_t frame, int width, int height, bool keys_pressed, bool& running,
                     int& exit_code);
     // After the frame is on the screen: its time, for --frame-log.
     void after_swap(const AppOptions& o);
     // At the end: the frame log written, the GIF closed, what was written said.
-    void finish(const Lessonplay& lp, const AppOptions& o, std::uint64_t frames, int& exit_code);
+    void finish(const LessonPlay& lp, const AppOptions& o, std::uint64_t frames, int& exit_code);
 
 private:
     std::optional<GifWriter> gif_;  // half the drawable's size with --gif-half (made at the first frame)

@@ -7,14 +7,14 @@
 
 namespace hsr::viz {
 
-ViewGeometry geometry_now(const Lessonplay& lp, const Renderer& r) {
+ViewGeometry geometry_now(const LessonPlay& lp, const Renderer& r) {
     ViewGeometry g = r.geometry;
     g.overlay_open = lp.show_presets || lp.show_keys || lp.show_report || lp.show_menu;
     g.second_view = lp.second_view;
     return g;
 }
 
-void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions) {
+void draw_frame(LessonPlay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions) {
     const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
     const auto px = [&](float points) { return GLsizei(points * scale); };
     glViewport(0, 0, px(layout.width), px(layout.height));
@@ -31,7 +31,7 @@ void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float sc
     glViewport(0, 0, px(layout.width), px(layout.height));
 }
 
-glm::vec2 gesture_window_point(Lessonplay& lp, const Renderer& r, glm::dvec2 p) {
+glm::vec2 gesture_window_point(LessonPlay& lp, const Renderer& r, glm::dvec2 p) {
     const ViewGeometry g = geometry_now(lp, r);
     if (!lp.family) return g.to_window({p, 0.0});
     return lp.with_family_screen([&](auto& s, auto& screen) { return screen.gesture_point(s, p, g); });

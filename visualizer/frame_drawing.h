@@ -24,11 +24,11 @@ struct Renderer {
 };
 
 // The 3D view as the last frame drew it, with the overlays and the second view as they are now.
-ViewGeometry geometry_now(const Lessonplay& lp, const Renderer& r);
+ViewGeometry geometry_now(const LessonPlay& lp, const Renderer& r);
 // `layout` is in ImGui's units (window points); `scale` turns them into framebuffer pixels (2 on a HiDPI display).
-void draw_frame(Lessonplay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions);
+void draw_frame(LessonPlay& lp, Renderer& r, const PanelLayout& layout, float scale, UiActions& actions);
 // Where a gesture's point is in the window: a gesture names points as its family's view does (the fat pixels take
 // grid pixels, the others the plane z = 0).
-glm::vec2 gesture_window_point(Lessonplay& lp, const Renderer& r, glm::dvec2 p);
+glm::vec2 gesture_window_point(LessonPlay& lp, const Renderer& r, glm::dvec2 p);
 
 }  // namespace hsr::viz

@@ -19,7 +19,7 @@ namespace hsr::viz {
 namespace {
 
 // The lesson's last chapter shows, or its last step: the result comes first in the column.
-bool at_last_chapter(const Lessonplay& lp) {
+bool at_last_chapter(const LessonPlay& lp) {
     const Session* s = lp.session();
     if (!s) return false;
     if (s->complete() && s->cursor() >= s->known()) return true;
@@ -29,7 +29,7 @@ bool at_last_chapter(const Lessonplay& lp) {
 
 }  // namespace
 
-PanelLayout arrange_frame(Lessonplay& lp, float width, float height) {
+PanelLayout arrange_frame(LessonPlay& lp, float width, float height) {
     lp.side = clamp_side(lp.side, width);
     // the column and the timeline grow with the type (the column's width is remembered unscaled)
     PanelLayout layout{width, height, clamp_side(lp.side * lp.scale, width), 96 * lp.scale};
@@ -38,7 +38,7 @@ PanelLayout arrange_frame(Lessonplay& lp, float width, float height) {
     return layout;
 }
 
-glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Label>& labels, const PanelLayout& layout,
+glm::mat4 draw_frame_content(LessonPlay& lp, LineBatches& lines, std::vector<Label>& labels, const PanelLayout& layout,
                              UiActions& actions) {
     const float view_w = layout.width - layout.side, view_h = layout.height - layout.bottom;
     lines.faint.clear();
@@ -57,7 +57,7 @@ glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Lab
     return vp;
 }
 
-void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
+void draw_frame_panels(LessonPlay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions) {
     // the window's own words follow the student's choice (L) where a catalogue has it, even when the lesson's narration
     // does not

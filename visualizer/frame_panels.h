@@ -20,15 +20,15 @@ namespace hsr::viz {
 
 // The frame's layout in a window of width × height points: the column as wide as the lesson's side and scale say
 // (within the window), the timeline under the view, the column's boxes arranged to their content.
-PanelLayout arrange_frame(Lessonplay& lp, float width, float height);
+PanelLayout arrange_frame(LessonPlay& lp, float width, float height);
 
 // The 3D view of the lesson playing into `lines` and `labels` (cleared first; the labels drawn), then every panel.
 // Returns the view-projection the lines are to be drawn with (the family's own camera, else the orbit camera).
-glm::mat4 draw_frame_content(Lessonplay& lp, LineBatches& lines, std::vector<Label>& labels, const PanelLayout& layout,
+glm::mat4 draw_frame_content(LessonPlay& lp, LineBatches& lines, std::vector<Label>& labels, const PanelLayout& layout,
                              UiActions& actions);
 
 // `detail`: the caption the family's draw_scene gave; view_w × view_h: the 3D view the canvases cover.
-void draw_frame_panels(Lessonplay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
+void draw_frame_panels(LessonPlay& lp, const std::string& detail, float view_w, float view_h, const PanelLayout& layout,
                        UiActions& actions);
 
 }  // namespace hsr::viz

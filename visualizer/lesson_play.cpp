@@ -38,7 +38,7 @@ std::string seconds_said(const algo::WorkMeter& meter) {  // "3.1 s"
 
 }  // namespace
 
-void Lessonplay::load(const AppOptions& o) {
+void LessonPlay::load(const AppOptions& o) {
     // A reload stays at its step where it still exists, also through a failed reload (a file saved half-written).
     const std::size_t keep = session() ? session()->cursor() : place_before_error.value_or(0);
     const bool fresh = !session() && !place_before_error;
@@ -93,7 +93,7 @@ void Lessonplay::load(const AppOptions& o) {
     }
 }
 
-algo::WorkMeter Lessonplay::work_meter(const std::string& what) {
+algo::WorkMeter LessonPlay::work_meter(const std::string& what) {
     stop_work = false;
     // the window draws a frame every 0.2 s while it works (Esc is read there), the first after 0.3 s: short work
     // shows nothing
@@ -102,7 +102,7 @@ algo::WorkMeter Lessonplay::work_meter(const std::string& what) {
     return meter;
 }
 
-void Lessonplay::failed_to_load(const std::string& why, std::vector<std::string> watched, const std::string& at_fault) {
+void LessonPlay::failed_to_load(const std::string& why, std::vector<std::string> watched, const std::string& at_fault) {
     if (session()) place_before_error = session()->cursor();
     family.reset();
     error = algo::printable(why, 2000);
@@ -115,7 +115,7 @@ void Lessonplay::failed_to_load(const std::string& why, std::vector<std::string>
     std::fprintf(stderr, "hsrviz: %s\n", error.c_str());
 }
 
-void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
+void LessonPlay::choose_preset(const UiActions& a, const AppOptions& o) {
     if (a.back_to_lesson) {
         path = home, algorithm = home == o.lesson_path ? o.algorithm : std::nullopt;
     } else if (a.preset && *a.preset >= 0 && std::size_t(*a.preset) < presets.size()) {
@@ -141,7 +141,7 @@ void Lessonplay::choose_preset(const UiActions& a, const AppOptions& o) {
          algorithm ? tr("notes.playing_with", {{"file", path}, {"algorithm", *algorithm}}) : tr("notes.playing", {{"file", path}}));
 }
 
-void Lessonplay::toggle_practice(const AppOptions& o) {
+void LessonPlay::toggle_practice(const AppOptions& o) {
     practice.open = !practice.open;
     if (practice.open) {
         show_presets = show_menu = show_report = false;
@@ -158,7 +158,7 @@ void Lessonplay::toggle_practice(const AppOptions& o) {
     load(o);
 }
 
-void Lessonplay::play_exercise(const AppOptions& o) {
+void LessonPlay::play_exercise(const AppOptions& o) {
     const practice::Exercise* e = nullptr;
     try {
         e = &practice.next();
@@ -188,7 +188,7 @@ void Lessonplay::play_exercise(const AppOptions& o) {
                 (unsigned long long)(e->index + 1), e->question.c_str());
 }
 
-bool Lessonplay::practice_input(const UiActions& a, const AppOptions& o) {
+bool LessonPlay::practice_input(const UiActions& a, const AppOptions& o) {
     if (a.practice_choice) {
         practice.choose(a.practice_choice->topic, practice::Level(a.practice_choice->level), a.practice_choice->series);
         play_exercise(o);
@@ -219,7 +219,7 @@ bool Lessonplay::practice_input(const UiActions& a, const AppOptions& o) {
     return a.digit || a.typed || a.enter || a.answer;
 }
 
-void Lessonplay::switch_lesson(int step, const AppOptions& o) {
+void LessonPlay::switch_lesson(int step, const AppOptions& o) {
     const std::vector<std::string> lessons = shipped_lessons();
     if (lessons.empty()) return;
     const std::string now = std::filesystem::path(home).filename().string();
@@ -229,7 +229,7 @@ void Lessonplay::switch_lesson(int step, const AppOptions& o) {
     open_lesson(lessons[std::size_t(k)], o);
 }
 
-void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
+void LessonPlay::open_lesson(const std::string& lesson, const AppOptions& o) {
     home = path = lesson, algorithm.reset();
     practice.open = false;  // its exercise stays, unanswered, for X to come back to
     place_before_error.reset();
@@ -244,14 +244,14 @@ void Lessonplay::open_lesson(const std::string& lesson, const AppOptions& o) {
     std::printf("hsrviz: lesson %s\n", path.c_str());  // the lesson box and the title say it in the window
 }
 
-const CourseLesson* Lessonplay::next_in_course() const {
+const CourseLesson* LessonPlay::next_in_course() const {
     const std::string now = std::filesystem::path(home).filename().string();
     for (std::size_t k = 0; k + 1 < course.size(); ++k)
         if (course[k].file == now) return &course[k + 1];
     return nullptr;
 }
 
-void Lessonplay::toggle_report(const std::string& scenes_dir) {
+void LessonPlay::toggle_report(const std::string& scenes_dir) {
     show_report = !show_report;
     if (!show_report) return cancel_report();
     if (!session() || !report.empty() || measuring.running()) return;
@@ -259,7 +259,7 @@ void Lessonplay::toggle_report(const std::string& scenes_dir) {
     measuring.start([playing, scenes_dir](analysis::Progress& p) { return family_report(playing, scenes_dir, &p); }, can_start_threads());
 }
 
-void Lessonplay::collect_report() {
+void LessonPlay::collect_report() {
     std::optional<BackgroundMeasurement::Outcome> done = measuring.take();
     if (!done) return;
     if (!done->error.empty())
@@ -271,19 +271,19 @@ void Lessonplay::collect_report() {
          tr("notes.measured", {{"rows", std::to_string(report.size())}}));
 }
 
-void Lessonplay::cancel_report() {
+void LessonPlay::cancel_report() {
     if (!measuring.running()) return;
     measuring.stop();  // a cancel is seen before the next timed run: a moment at most
     collect_report();
 }
 
-void Lessonplay::tell(const std::string& text, const std::string& shown) {
+void LessonPlay::tell(const std::string& text, const std::string& shown) {
     std::printf("hsrviz: %s\n", algo::printable(text, 2000).c_str());
     std::fflush(stdout);  // seen at once by whoever reads the terminal or a log (a watched reload, a test)
     toasts.say(algo::printable(shown.empty() ? text : shown, 2000), seconds_now());
 }
 
-void Lessonplay::save_edited(const algo::Scene& scene) {
+void LessonPlay::save_edited(const algo::Scene& scene) {
     const std::string folder = output_folder("hsrviz-export");
     const std::string file = folder + "/" + std::filesystem::path(path).stem().string() + "-edited.toml";
     const bool ok = make_folder(folder) && static_cast<bool>(std::ofstream(file) << algo::scene_toml(scene) << std::flush);
@@ -291,18 +291,23 @@ void Lessonplay::save_edited(const algo::Scene& scene) {
     if (ok) offer_download(file);
 }
 
-void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) {
-    // In a screen's drive mode the arrows move the eye (and the machine's whole run is shown); else they step.
+// In a screen's drive mode the arrows move the eye (and the machine's whole run is shown); in a walk they walk,
+// leaving the lesson where it stands and its question hidden; else they step.
+UiActions LessonPlay::arrows_as_the_screen_takes_them(const UiActions& keyed) {
     UiActions a = keyed;
     bool drives = false, walking = false;
     if (session()) with_family_screen([&](auto& s, auto& screen) { drives = screen.drives(s, second_view), walking = screen.walking(s); });
     if ((drives || walking) && !show_menu) {
         a.step = a.step_back = a.micro_step = a.micro_step_back = false;
-        if (!walking) a.to_end = a.to_end || a.forward || a.left;  // a walk leaves the lesson where it stands
-        if (walking) a.digit.reset(), a.answer.reset();          // and its question, hidden while it walks
+        if (!walking) a.to_end = a.to_end || a.forward || a.left;
+        if (walking) a.digit.reset(), a.answer.reset();
     } else {
         a.forward = a.left = 0;
     }
+    return a;
+}
+
+bool LessonPlay::around_the_lesson(const UiActions& a, double dt, const AppOptions& o) {
     if (a.reload || watch.changed(dt)) {
         load(o);
         tell(error.empty() ? "reloaded " + path : "could not reload " + path + " (its error is shown)",
@@ -315,16 +320,16 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         for (std::size_t k = 0; k < course.size(); ++k)
             if (course[k].file == now) menu_cursor = k;  // the menu opens on the lesson playing
     }
-    if (a.open_lesson) return open_lesson(*a.open_lesson, o);
+    if (a.open_lesson) return open_lesson(*a.open_lesson, o), true;
     if (show_menu) {  // the menu takes ↑ ↓ and Enter, and the stepping keys do not move the lesson behind it
         if (a.up_down && !course.empty())
             menu_cursor = std::size_t(std::clamp<long>(long(menu_cursor) + a.up_down, 0, long(course.size()) - 1));
-        if (a.enter && menu_cursor < course.size()) return open_lesson(course[menu_cursor].path, o);
+        if (a.enter && menu_cursor < course.size()) return open_lesson(course[menu_cursor].path, o), true;
         if (a.close_overlays) show_menu = false;
-        return;
+        return true;
     }
     if (a.toggle_practice) toggle_practice(o);
-    if (practice.open && practice_input(a, o)) return;  // its keys are its own while it shows
+    if (practice.open && practice_input(a, o)) return true;  // its keys are its own while it shows
     if (a.toggle_presets) show_presets = !show_presets;
     if (a.toggle_report) toggle_report(data_dir() + "/assets/scenes");
     if (a.cancel_measurement) cancel_report();
@@ -334,14 +339,16 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         if (a.digit && *a.digit >= 1) pick.preset = *a.digit - 1;
         if (a.digit && *a.digit == 0) pick.random_scene = true;
         choose_preset(pick, o);
-        if (show_presets && a.digit) return;
+        if (show_presets && a.digit) return true;
     } else if (a.preset || a.random_scene || a.back_to_lesson) {
         choose_preset(a, o);
     }
     if (a.next_lesson) switch_lesson(a.next_lesson, o);
-    if (!session()) return;
-    Session& p = *session();
-    // the classroom: a number answers the open question (and does nothing else), chapters, language
+    return false;
+}
+
+void LessonPlay::classroom_and_window_keys(Session& p, const UiActions& a) {
+    // a number answers the open question (and does nothing else)
     std::optional<std::string> answer = a.answer;
     if (a.digit)
         if (const Question* q = classroom.open_question(p); q && *a.digit >= 1 && std::size_t(*a.digit) <= q->choices.size())
@@ -367,6 +374,52 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
         show_keys = show_presets = show_report = show_menu = false;
     }
     if (a.toggle_3d) second_view = !second_view;
+}
+
+void LessonPlay::move(Session& p, const UiActions& a, double dt) {
+    if (a.speed) playback.speed = *a.speed;
+    const std::size_t cursor = p.cursor();
+    const bool waiting = questions_hold && classroom.hold(cursor) == cursor;  // a question waits for its answer here
+    if (a.toggle_play) playback.playing = !playback.playing && !p.at_end() && !waiting;
+    if (a.step) p.step();
+    if (a.step_back) p.step_back();
+    if (a.micro_step) p.micro_step();
+    if (a.micro_step_back) p.micro_step_back();
+    if (a.to_start) p.seek(0);
+    if (a.to_end) p.seek_end();
+    if (a.seek) p.seek(*a.seek);
+    if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek) playback.playing = false;
+    if (playback.playing) {
+        playback.since_step += dt;
+        if (playback.since_step >= 1.0 / playback.speed) {
+            playback.since_step = 0;
+            p.step();
+            if (p.at_end()) playback.playing = false;
+        }
+    }
+    hold_where_asked(p, cursor, a.step || a.micro_step || playback.playing);
+}
+
+void LessonPlay::hold_where_asked(Session& p, std::size_t from, bool stepping_forward) {
+    // a step forward stops where a chapter pauses, so that its question is asked before the events answer it,
+    // and no move forward (a step, play, End, the scrub bar) leaves the step where an open question is asked
+    if (const auto stop = classroom.stop_forward(p, from, stepping_forward, questions_hold)) {
+        p.seek(*stop);
+        playback.playing = false;
+    }
+    // nor, in practice, the event that decides the exercise before it is answered
+    if (path == practice_scene)
+        if (const auto hold = practice.hold(); hold && p.cursor() > *hold) {
+            p.seek(*hold);
+            playback.playing = false;
+        }
+}
+
+void LessonPlay::update(const UiActions& keyed, double dt, const AppOptions& o) {
+    const UiActions a = arrows_as_the_screen_takes_them(keyed);
+    if (around_the_lesson(a, dt, o) || !session()) return;
+    Session& p = *session();
+    classroom_and_window_keys(p, a);
     // Long work (End on a run of millions of events, an edit that reruns a huge machine) shows the window busy, and
     // Esc stops it between two events: the lesson stays where the work got to.
     std::size_t cursor = p.cursor();
@@ -384,38 +437,7 @@ void Lessonplay::update(const UiActions& keyed, double dt, const AppOptions& o) 
                               a.to_start || a.to_end || a.seek || playback.playing;
         if (animate && may_move) with_family_screen([](auto& s, auto& screen) { screen.before_step(s); });
         cursor = p.cursor();
-        if (a.speed) playback.speed = *a.speed;
-        const bool waiting = questions_hold && classroom.hold(cursor) == cursor;  // a question waits for its answer here
-        if (a.toggle_play) playback.playing = !playback.playing && !p.at_end() && !waiting;
-        if (a.step) p.step();
-        if (a.step_back) p.step_back();
-        if (a.micro_step) p.micro_step();
-        if (a.micro_step_back) p.micro_step_back();
-        if (a.to_start) p.seek(0);
-        if (a.to_end) p.seek_end();
-        if (a.seek) p.seek(*a.seek);
-        if (a.step || a.step_back || a.micro_step || a.micro_step_back || a.to_start || a.to_end || a.seek)
-            playback.playing = false;
-        if (playback.playing) {
-            playback.since_step += dt;
-            if (playback.since_step >= 1.0 / playback.speed) {
-                playback.since_step = 0;
-                p.step();
-                if (p.at_end()) playback.playing = false;
-            }
-        }
-        // a step forward stops where a chapter pauses, so that its question is asked before the events answer it,
-        // and no move forward (a step, play, End, the scrub bar) leaves the step where an open question is asked
-        if (const auto stop = classroom.stop_forward(p, cursor, a.step || a.micro_step || playback.playing, questions_hold)) {
-            p.seek(*stop);
-            playback.playing = false;
-        }
-        // nor, in practice, the event that decides the exercise before it is answered
-        if (path == practice_scene)
-            if (const auto hold = practice.hold(); hold && p.cursor() > *hold) {
-                p.seek(*hold);
-                playback.playing = false;
-            }
+        move(p, a, dt);
         meter.finish();
     } catch (const algo::WorkStopped&) {
         playback.playing = false;

@@ -26,7 +26,7 @@
 
 namespace hsr::viz {
 
-struct Lessonplay {
+struct LessonPlay {
     std::optional<FamilySession> family;  // the lesson being played, as its family's type
     Screens screens;                      // one per family
     std::string error;                    // why the lesson could not be loaded ("" when it could)
@@ -104,8 +104,22 @@ struct Lessonplay {
     void cancel_report();
     // A meter for long work named `what`, shown by the window and stopped by stop_work (reset here).
     algo::WorkMeter work_meter(const std::string& what);
-    // One frame's actions and dt seconds of playing.
+    // One frame's actions and dt seconds of playing: the parts below, in this order.
     void update(const UiActions& a, double dt, const AppOptions& o);
+
+private:
+    // The arrows as the family's screen takes them: stepping, driving the eye, or walking.
+    UiActions arrows_as_the_screen_takes_them(const UiActions& keyed);
+    // What is around the lesson: a reload, the menu, practice, the presets, the report, another lesson. True when
+    // the frame's input was theirs (or the lesson changed) and the lesson does not move.
+    bool around_the_lesson(const UiActions& a, double dt, const AppOptions& o);
+    // The classroom's keys (an answer, a chapter, the language) and the window's (keys, column, type size, export,
+    // Esc, V).
+    void classroom_and_window_keys(Session& p, const UiActions& a);
+    // The player moved: a step, play, Home, End, the scrub bar; then held where a question is asked.
+    void move(Session& p, const UiActions& a, double dt);
+    // Where a move forward from `from` must stop: a chapter's pause or open question, practice's deciding event.
+    void hold_where_asked(Session& p, std::size_t from, bool stepping_forward);
 };
 
 }  // namespace hsr::viz

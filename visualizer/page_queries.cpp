@@ -11,7 +11,7 @@
 
 namespace hsr::viz {
 
-std::string player_state(const Lessonplay& lp) {
+std::string player_state(const LessonPlay& lp) {
     const Session* s = lp.session();
     if (!s) return {};
     return "step " + std::to_string(s->cursor()) + " of " + std::to_string(s->known()) + (s->complete() ? "" : "+") + ", " +
@@ -19,7 +19,7 @@ std::string player_state(const Lessonplay& lp) {
            (lp.show_menu ? ", lesson menu open" : s->complete() && s->cursor() >= s->known() ? ", end of the lesson" : "");
 }
 
-std::string page_answer(Lessonplay& lp, const Renderer& r, const std::string& question) {
+std::string page_answer(LessonPlay& lp, const Renderer& r, const std::string& question) {
     if (question == "lesson") return lp.path;
     if (question == "error") return lp.error;
     if (question == "language") return lp.classroom.language();

@@ -10,7 +10,7 @@
 
 namespace hsr::viz {
 
-WindowSettings settings_now(const WindowSettings& before, const Lessonplay& lp, const Window& w, const AppOptions& o, bool with_place) {
+WindowSettings settings_now(const WindowSettings& before, const LessonPlay& lp, const Window& w, const AppOptions& o, bool with_place) {
     WindowSettings keep = before;
     keep.side = lp.side;
     keep.language = lp.classroom.chosen_language();

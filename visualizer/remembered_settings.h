@@ -14,7 +14,7 @@ namespace hsr::viz {
 
 // The column, the language, the practice scores and the type's size always; the window's size and place
 // (`with_place`) at the end of a run a person sized it in.
-WindowSettings settings_now(const WindowSettings& before, const Lessonplay& lp, const Window& w, const AppOptions& o, bool with_place);
+WindowSettings settings_now(const WindowSettings& before, const LessonPlay& lp, const Window& w, const AppOptions& o, bool with_place);
 // Writes `now` to `path` when it differs from `saved` (saying once why it could not), and keeps it as `saved`.
 void remember(const std::string& path, WindowSettings& saved, const WindowSettings& now);
 

@@ -105,7 +105,7 @@ void push_file_drop(const std::string& path) {
     if (SDL_PushEvent(&e) != 1) SDL_free(e.drop.file);
 }
 
-bool push_scripted_input(const std::string& text, Lessonplay& lp, const Renderer& r, bool& shift_held) {
+bool push_scripted_input(const std::string& text, LessonPlay& lp, const Renderer& r, bool& shift_held) {
     const auto input = parse_scripted_input(text);
     if (!input) return false;
     SDL_Event e;

@@ -37,10 +37,10 @@ SDL_Event mouse_motion_event(int x, int y, int dx, int dy, bool left_held);
 // A file dropped on the window, pushed as SDL tells of one (SDL_DROPFILE; the window frees the name).
 void push_file_drop(const std::string& path);
 
-struct Lessonplay;
+struct LessonPlay;
 struct Renderer;
 // The next --keys token pushed through SDL's queue as a person's key or gesture would be (a gesture's points through
 // the view the last frame drew; `shift_held` when it holds Shift down, to let go after the frame). False: unknown.
-bool push_scripted_input(const std::string& token, Lessonplay& lp, const Renderer& r, bool& shift_held);
+bool push_scripted_input(const std::string& token, LessonPlay& lp, const Renderer& r, bool& shift_held);
 
 }  // namespace hsr::viz

@@ -22,7 +22,7 @@ bool offscreen_driver() {
     return driver && std::string(driver) == "offscreen";
 }
 
-void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const AppOptions& o, std::size_t& next_key, bool& quit) {
+void work_frame(const algo::WorkProgress& p, Window& w, LessonPlay& lp, const AppOptions& o, std::size_t& next_key, bool& quit) {
     if (p.finished) {  // the last word: how long it took, on the terminal
         std::printf("hsrviz: %s\n", p.sentence().c_str());
         std::fflush(stdout);

@@ -14,7 +14,7 @@
 
 namespace hsr::viz {
 
-void work_frame(const algo::WorkProgress& p, Window& w, Lessonplay& lp, const AppOptions& o, std::size_t& next_key, bool& quit);
+void work_frame(const algo::WorkProgress& p, Window& w, LessonPlay& lp, const AppOptions& o, std::size_t& next_key, bool& quit);
 
 // SDL's offscreen driver: no display paces the frames (the window finishes each frame's GL work itself).
 bool offscreen_driver();

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer: any text as a lesson or scene file, played in the window's panels with no window and no GL. The file is
-// loaded as the window loads it (Lessonplay::load: its error is shown instead when it fails), then a few frames are
+// loaded as the window loads it (LessonPlay::load: its error is shown instead when it fails), then a few frames are
 // drawn, each one stepping on: the family's 3D view filled (its line batches and labels), every panel drawn through
 // Dear ImGui (the same draw_frame_panels the window calls), the frame ended with ImGui::Render. A crash, a sanitizer
 // report, or draw data the GL backend would read past (an index beyond its vertices, a command beyond its indices)
@@ -89,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     AppOptions o;
     o.lesson_path = path;
     if (const std::size_t pick = data[0] & 31u; pick < all.size()) o.algorithm = std::string(all[pick].id);
-    Lessonplay lp;
+    LessonPlay lp;
     lp.animate = false;
     lp.load(o);
     lp.show_keys = data[0] & 32u, lp.show_presets = data[0] & 64u, lp.show_menu = data[0] & 128u;
