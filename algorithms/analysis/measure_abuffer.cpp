@@ -71,4 +71,7 @@ std::vector<Measurement> measure_abuffer(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection abuffer_report{measure_abuffer, {{"A-buffer", "A-buffer: colour error against supersampled rays, per mask size"}}};
+
 }  // namespace hsr::analysis

@@ -174,4 +174,7 @@ std::vector<Measurement> measure_clipping(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection clipping_report{measure_clipping, {{"clipping", "Clipping: error against GMP rationals"}}};
+
 }  // namespace hsr::analysis

@@ -106,4 +106,7 @@ std::vector<Measurement> measure_complexity(const ReportOptions& o) {
     return rows;
 }
 
+// Its sections of the report (analysis/measurement.h report_sections)
+const ReportSection complexity_report{measure_complexity, {{"complexity (P)", "The complexity table: run time against the primitives P (log–log)"}, {"complexity (p)", "The complexity table: run time against the pixels p (log–log)"}}};
+
 }  // namespace hsr::analysis

@@ -159,4 +159,7 @@ std::vector<Measurement> measure_compositing(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection compositing_report{measure_compositing, {{"compositing", "Alpha compositing: colour error against GMP rationals, per storage and order"}}};
+
 }  // namespace hsr::analysis

@@ -136,17 +136,7 @@ std::vector<Measurement> measure_culling(const ReportOptions& o) {
     return rows;
 }
 
-std::vector<MeasureFamily> report_families() {
-    return {measure_clipping, measure_zbuffer, measure_hidden_surfaces, measure_portals, measure_culling, measure_horizon, measure_compositing, measure_roberts, measure_perspective, measure_abuffer, measure_intersection, measure_complexity};
-}
-
-std::vector<Measurement> measure_all(const ReportOptions& o) {
-    std::vector<Measurement> rows;
-    for (auto* family : report_families()) {
-        auto part = family(o);
-        rows.insert(rows.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
-    }
-    return rows;
-}
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection culling_report{measure_culling, {{"culling", "Culling pipeline: pixels lost, per scene"}}};
 
 }  // namespace hsr::analysis

@@ -70,4 +70,7 @@ std::vector<Measurement> measure_horizon(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection horizon_report{measure_horizon, {{"horizon", "Floating horizon: the curves' length drawn wrong, per screen resolution"}}};
+
 }  // namespace hsr::analysis

@@ -106,4 +106,7 @@ std::vector<Measurement> measure_intersection(const ReportOptions& o) {
     return rows;
 }
 
+// Its sections of the report (analysis/measurement.h report_sections)
+const ReportSection intersection_report{measure_intersection, {{"ray casting", "Ray casting: every primitive, the grid, the octree and the BVH, primitive tests per ray"}, {"bounding volumes", "Bounding volumes: IntersectionTest(M) per kind of volume, false alarms per ray"}}};
+
 }  // namespace hsr::analysis

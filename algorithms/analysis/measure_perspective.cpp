@@ -92,4 +92,7 @@ std::vector<Measurement> measure_perspective(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection perspective_report{measure_perspective, {{"perspective transform", "Occluding pairs: before and after the perspective transform, against GMP rationals"}}};
+
 }  // namespace hsr::analysis

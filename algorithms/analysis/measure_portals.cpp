@@ -51,4 +51,7 @@ std::vector<Measurement> measure_portals(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection portals_report{measure_portals, {{"portals", "Cells and portals: PVS and frustum slack, missed cells and polygons"}}};
+
 }  // namespace hsr::analysis

@@ -154,4 +154,10 @@ float Progress::fraction() const {
     return p <= 0 ? 0.f : std::clamp(float(d) / float(p), 0.f, 1.f);
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection zbuffer_report{measure_zbuffer, {{"zbuffer", "Z-buffer: pixels differing from the ray cast, per depth format and far/near ratio"}}};
+
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection hidden_surfaces_report{measure_hidden_surfaces, {{"hsr", "BSP and depth sort: pixels differing from the ray cast"}}};
+
 }  // namespace hsr::analysis

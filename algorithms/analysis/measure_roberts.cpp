@@ -58,4 +58,7 @@ std::vector<Measurement> measure_roberts(const ReportOptions& o) {
     return rows;
 }
 
+// Its section of the report (analysis/measurement.h report_sections)
+const ReportSection roberts_report{measure_roberts, {{"hidden lines", "Roberts' hidden lines: sampled edge points against rays in world space"}}};
+
 }  // namespace hsr::analysis

@@ -9,8 +9,11 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hsr::analysis {
@@ -69,10 +72,20 @@ std::vector<Measurement> measure_intersection(const ReportOptions& o);
 std::vector<Measurement> measure_complexity(const ReportOptions& o);
 // The least-squares slope of log10 y against log10 x (the measured exponent of y = c·x^k); 0 with fewer than 2 points.
 double fitted_slope(const std::vector<std::pair<double, double>>& xy);  // occluding pairs before and after the transform, against GMP
-// Every family's measurement, in the report's order (the command line's report and measure_all run these).
+// A family's part of the report: how it is measured, and the title of each section its rows make (a row's family
+// name → the title; one measurement may make two, as the complexity table's P and p). Each is defined beside its
+// measurement, and report_sections lists them in the report's order: the one list the command line's report and
+// the section titles read (R in the window measures the lesson's family alone: its session's facts).
 using MeasureFamily = std::vector<Measurement> (*)(const ReportOptions&);
-std::vector<MeasureFamily> report_families();
-std::vector<Measurement> measure_all(const ReportOptions& o);
+struct ReportSection {
+    MeasureFamily measure;
+    std::vector<std::pair<std::string_view, std::string_view>> titles;
+};
+extern const ReportSection clipping_report, zbuffer_report, hidden_surfaces_report, portals_report, culling_report, horizon_report,
+    compositing_report, roberts_report, perspective_report, abuffer_report, intersection_report, complexity_report;
+std::span<const ReportSection> report_sections();
+// The title of the section of rows whose family is `family` ("Other" for a family no section names: a test fails).
+std::string_view section_title(std::string_view family);
 
 // The median wall time of `repeats` calls of f, in milliseconds.
 double median_ms(int repeats, const std::function<void()>& f);

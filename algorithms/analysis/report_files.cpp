@@ -32,23 +32,6 @@ std::string xml_text(const std::string& s) {
     return out;
 }
 
-const char* family_title(const std::string& f) {
-    if (f == "clipping") return "Clipping: error against GMP rationals";
-    if (f == "zbuffer") return "Z-buffer: pixels differing from the ray cast, per depth format and far/near ratio";
-    if (f == "hsr") return "BSP and depth sort: pixels differing from the ray cast";
-    if (f == "portals") return "Cells and portals: PVS and frustum slack, missed cells and polygons";
-    if (f == "culling") return "Culling pipeline: pixels lost, per scene";
-    if (f == "horizon") return "Floating horizon: the curves' length drawn wrong, per screen resolution";
-    if (f == "compositing") return "Alpha compositing: colour error against GMP rationals, per storage and order";
-    if (f == "hidden lines") return "Roberts' hidden lines: sampled edge points against rays in world space";
-    if (f == "perspective transform") return "Occluding pairs: before and after the perspective transform, against GMP rationals";
-    if (f == "A-buffer") return "A-buffer: colour error against supersampled rays, per mask size";
-    if (f == "ray casting") return "Ray casting: every primitive, the grid, the octree and the BVH, primitive tests per ray";
-    if (f == "bounding volumes") return "Bounding volumes: IntersectionTest(M) per kind of volume, false alarms per ray";
-    if (f == "complexity (P)") return "The complexity table: run time against the primitives P (log–log)";
-    if (f == "complexity (p)") return "The complexity table: run time against the pixels p (log–log)";
-    return "Other";
-}
 
 }  // namespace
 
@@ -64,7 +47,7 @@ std::string report_markdown(const std::vector<Measurement>& rows) {
     for (const std::string& family : families_of(rows)) {
         const auto first = std::find_if(rows.begin(), rows.end(), [&](const Measurement& m) { return m.family == family; });
         const bool sweep = first->size > 0;  // a chart of run time against size, else of error against run time
-        md += "## " + std::string(family_title(family)) + "\n\nError: " + first->error_name + ". ![" +
+        md += "## " + std::string(section_title(family)) + "\n\nError: " + first->error_name + ". ![" +
               (sweep ? "run time against size" : "error against run time") + "](" + family + ".svg)\n\n| method | setting | median ms | error | " +
               (first->wrong_name.empty() ? std::string("—") : first->wrong_name) + " | notes |\n|---|---|---:|---:|---:|---|\n";
         for (const Measurement& m : rows) {
@@ -159,7 +142,7 @@ std::string error_chart_svg(const std::vector<Measurement>& rows, const std::str
     std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
                       std::to_string(height) + "\" font-family=\"sans-serif\" font-size=\"12\">\n"
                       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(family_title(family)) + "</text>\n";
+    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(std::string(section_title(family))) + "</text>\n";
     for (double t = t_lo; t <= t_hi + 1e-9; t += 1) {
         const double x = x_of(t);
         svg += "<line x1=\"" + number(x) + "\" y1=\"" + std::to_string(top) + "\" x2=\"" + number(x) + "\" y2=\"" +
@@ -222,7 +205,7 @@ std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::st
     const bool against_P = family.find("(P)") != std::string::npos;
     std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" + std::to_string(height) +
                       "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(family_title(family)) + "</text>\n";
+    svg += "<text x=\"" + std::to_string(left) + "\" y=\"22\" font-size=\"14\">" + xml_text(std::string(section_title(family))) + "</text>\n";
     for (double x = x_lo; x <= x_hi + 1e-9; x += 1)
         svg += "<line x1=\"" + number(x_of(x)) + "\" y1=\"" + std::to_string(top) + "\" x2=\"" + number(x_of(x)) + "\" y2=\"" +
                std::to_string(height - bottom) + "\" stroke=\"#ddd\"/><text x=\"" + number(x_of(x)) + "\" y=\"" + std::to_string(height - bottom + 16) +

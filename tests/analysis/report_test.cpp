@@ -9,6 +9,9 @@
 
 #include <cstdio>
 
+#include <set>
+#include <string_view>
+
 #include "catch.h"
 #include "analysis/measurement.h"
 #include "analysis/report_files.h"
@@ -264,4 +267,20 @@ TEST_CASE("the complexity table: the fitted slope is the exponent, and the sweep
         CHECK(polylines == 4);
     }
     CHECK(analysis::report_markdown(rows).find("## The complexity table: run time against the primitives P") != std::string::npos);
+}
+
+TEST_CASE("the report's one list of sections names each family once, with a title of its own", "[analysis]") {
+    std::set<std::string_view> families, titles;
+    std::set<analysis::MeasureFamily> measures;
+    for (const analysis::ReportSection& s : analysis::report_sections()) {
+        CHECK(measures.insert(s.measure).second);  // each measurement once
+        REQUIRE_FALSE(s.titles.empty());
+        for (const auto& [family, title] : s.titles) {
+            CHECK(families.insert(family).second);
+            CHECK(titles.insert(title).second);
+            CHECK(analysis::section_title(family) == title);
+        }
+    }
+    CHECK(measures.size() == 12);
+    CHECK(analysis::section_title("no such family") == "Other");
 }

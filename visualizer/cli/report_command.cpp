@@ -36,8 +36,8 @@ int measure_and_write(const ReportOptions& o) {
             throw std::runtime_error(algo::printable(why) + "; nothing measured");
     const analysis::ReportOptions options{.quick = o.quick, .repeats = o.quick ? 3 : o.repeats, .scenes_dir = data_dir() + "/assets/scenes"};
     std::vector<analysis::Measurement> rows;
-    for (auto* family : analysis::report_families()) {
-        auto part = family(options);
+    for (const analysis::ReportSection& section : analysis::report_sections()) {
+        auto part = section.measure(options);
         std::printf("%s: %zu rows\n", part.empty() ? "?" : part.front().family.c_str(), part.size());
         std::fflush(stdout);
         rows.insert(rows.end(), part.begin(), part.end());
