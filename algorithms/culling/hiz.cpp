@@ -112,9 +112,11 @@ constexpr Saying occluded{"hiz.occluded",
                           "Node {node}: occluded ({texels} pyramid {texels?texel|texels} tested); its {primitives} {primitives?primitive is|primitives are} left out."};
 constexpr Saying visible{"hiz.visible",
                          "Node {node}: visible after {texels} {texels?texel|texels}; {rendered} {rendered?primitive|primitives} rendered, the pyramid updated."};
+constexpr Saying visible_empty{"hiz.visible_empty",
+                               "Node {node}: visible after {texels} {texels?texel|texels}; it renders no primitive of its own (the pyramid is unchanged)."};
 constexpr Saying done{"hiz.done",
                       "Done: {nodes} nodes, {occluded} occluded; {rendered} {rendered?primitive|primitives} rendered, {left_out} left out."};
-constexpr Saying all[] = {outside, occluded, visible, done};
+constexpr Saying all[] = {outside, occluded, visible, visible_empty, done};
 }  // namespace say
 }  // namespace
 
@@ -126,6 +128,7 @@ Phrase phrase(const HizEvent& event) {
                           [&](const HizNodeTested& e) {
                               const Saying& saying = e.outcome == HizOutcome::outside_frustum ? say::outside
                                                      : e.outcome == HizOutcome::occluded      ? say::occluded
+                                                     : e.primitives_rendered == 0             ? say::visible_empty
                                                                                               : say::visible;
                               return Phrase(saying, {{"node", n(e.node)}, {"texels", n(e.texels_tested)},
                                                      {"primitives", n(e.subtree_primitives)}, {"rendered", n(e.primitives_rendered)}});

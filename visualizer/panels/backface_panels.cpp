@@ -16,6 +16,7 @@ namespace {
 // the verdicts in the view's colours (its legend says what they are)
 const ImVec4 wrong(backface_colours::culled_seen.r, backface_colours::culled_seen.g, backface_colours::culled_seen.b, 1);  // culled, yet seen
 const ImVec4 culled(backface_colours::culled.r, backface_colours::culled.g, backface_colours::culled.b, 1);
+const ImVec4 kept_word(0.35f, 0.8f, 0.55f, 1);  // the kept fill's bluish green, lighter: a word on the dark table
 int scrolled_to = -1;                        // the row the table last scrolled to
 
 // Every face: its id, the test's value, what the ray cast saw of it, and the verdict.
@@ -61,7 +62,7 @@ void faces_table(const BackfaceView& v) {
             if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
             if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
             // wrapped in its cell at spaces only ("behalten · trotzdem verdeckt" is wider than the column)
-            wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? ImVec4(0.35f, 0.8f, 0.55f, 1) : culled);
+            wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? kept_word : culled);
         }
         ImGui::EndTable();
     }

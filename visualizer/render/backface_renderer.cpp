@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "render/palette.h"
-#include "render/scene_color.h"
 #include "state/state_colours.h"
 #include "state/strings.h"
 
@@ -16,25 +15,25 @@ using algo::Vec3;
 
 glm::vec4 opaque(const StateColour& c) { return {c.r, c.g, c.b, 1}; }
 
-void draw_backface_view(const BackfaceView& v, const algo::Scene& scene, glm::vec3 camera_eye, LineBatches& out,
-                        std::vector<Label>& labels) {
-    const SceneColors colors(scene);
+void draw_backface_view(const BackfaceView& v, glm::vec3 camera_eye, LineBatches& out, std::vector<Label>& labels) {
+    // the faces are coloured by their verdict alone (the scene's own colours would clash with the legend's)
+    const glm::vec4 untested_outline{0.72f, 0.74f, 0.78f, 1};
     for (std::size_t i = 0; i < v.faces.size(); ++i) {
         const FaceView& f = v.faces[i];
         const std::vector<Vec3>& vs = *f.vertices;
         const bool current = int(i) == v.current;
         const bool kept = f.facing == algo::Facing::front;
-        const glm::vec4 fill = !f.facing ? colors(f.id, 0.25f)
-                               : kept    ? colors(f.id, 0.85f)
-                                         : glm::vec4(0.35f, 0.12f, 0.08f, 0.35f);
+        const glm::vec4 fill = !f.facing ? glm::vec4(0.55f, 0.58f, 0.64f, 0.18f)
+                               : kept    ? glm::vec4(opaque(backface_colours::kept).x, opaque(backface_colours::kept).y, opaque(backface_colours::kept).z, 0.75f)
+                                         : glm::vec4(0.12f, 0.12f, 0.14f, 0.45f);
         for (std::size_t k = 1; k + 1 < vs.size(); ++k)
             out.faint.triangle(glm::vec3(vs[0]), glm::vec3(vs[k]), glm::vec3(vs[k + 1]), fill);
-        // against the ray cast: a culled face the eye sees is drawn in the warning colour, bold
+        // against the ray cast: a culled face the eye sees is drawn in its own colour, bold
         const bool culled_but_seen = f.facing && !kept && f.seen && *f.seen > 0;
         const glm::vec4 edge = current             ? opaque(backface_colours::under_test)
                                : culled_but_seen   ? opaque(backface_colours::culled_seen)
                                : f.facing && !kept ? opaque(backface_colours::culled)
-                                                   : colors(f.id, 1);
+                                                   : untested_outline;
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current || culled_but_seen ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
         // every face numbered as the table and the questions name it, just off its outer side; in brackets and dim

@@ -23,8 +23,8 @@ public:
         frame_points_in_part(camera, points, {0, 1 - faces_box_share, 1});
     }
     void draw_scene(const BackfaceSession& s, SceneFrame& f) const {
-        draw_backface_view(s.view(), s.lesson().scene, f.camera_eye, f.batches, f.labels);
-        f.detail = tr("backface.caption", {{"test", window_strings().say(algo::term(s.view().test))}});
+        draw_backface_view(s.view(), f.camera_eye, f.batches, f.labels);
+        f.detail = tr("backface.caption", {{"test", window_strings().say(algo::term(s.view().test))}}) + " · " + tr("backface.bracketed");
         f.covered.push_back(view_legend_rect(legend_width(f.view_w), f.view_h, legend(s.view())));
     }
     void draw_panels(const BackfaceSession& s, PanelFrame& f) const {
@@ -38,7 +38,7 @@ private:
     static float legend_width(float view_w) { return side_box_fits(view_w, faces_box_share) ? view_w * (1 - faces_box_share) : view_w; }
     // the marks the view shows: "culled though seen" only where the ray cast ran
     static std::vector<StateColour> legend(const BackfaceView& v) {
-        std::vector<StateColour> shown{backface_colours::under_test, backface_colours::culled};
+        std::vector<StateColour> shown{backface_colours::kept, backface_colours::under_test, backface_colours::culled};
         if (!v.faces.empty() && v.faces.front().seen) shown.push_back(backface_colours::culled_seen);
         return shown;
     }

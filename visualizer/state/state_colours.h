@@ -50,11 +50,12 @@ inline constexpr StateColour false_alarm{"intersection.mark_alarm", 0.90f, 0.62f
 inline constexpr std::array all{at_work, met, missed, false_alarm};
 }  // namespace intersection_colours
 
-namespace backface_colours {  // back-face culling's faces, by the test's verdict (a kept face keeps its own colour)
+namespace backface_colours {  // back-face culling's faces, by the test's verdict (not the scene's colours: they would clash)
+inline constexpr StateColour kept{"backface.mark_kept", 0.0f, 0.62f, 0.45f};               // bluish green fill, as the table's word
 inline constexpr StateColour under_test{"backface.mark_under_test", 0.94f, 0.89f, 0.26f};  // yellow, as palette::current_edge
-inline constexpr StateColour culled{"backface.mark_culled", 0.84f, 0.37f, 0.0f};           // vermillion, as palette::outside
+inline constexpr StateColour culled{"backface.mark_culled", 0.84f, 0.37f, 0.0f};           // vermillion outline, dark fill
 inline constexpr StateColour culled_seen{"backface.mark_culled_seen", 0.80f, 0.475f, 0.655f};  // reddish purple: culled, yet the ray cast saw it
-inline constexpr std::array all{under_test, culled, culled_seen};
+inline constexpr std::array all{kept, under_test, culled, culled_seen};
 }  // namespace backface_colours
 
 namespace transform_colours {  // the perspective transform's view: what a point's or a line's colour says
