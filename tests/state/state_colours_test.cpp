@@ -88,3 +88,7 @@ TEST_CASE("IntersectionTest's volumes (at work, met, missed, a false alarm) are 
 TEST_CASE("back-face culling's marks (under test, culled, culled though seen) are told apart under every colour blindness", "[colours]") {
     every_pair_apart(backface_colours::all, 15);
 }
+
+TEST_CASE("z-merge's frames (the nearer part, the farther) are told apart under every colour blindness", "[colours]") {
+    every_pair_apart(zmerge_colours::all, 15);
+}

@@ -6,16 +6,16 @@
 #include <imgui.h>
 
 #include "panels/panel_style.h"
+#include "panels/state_legend.h"
 #include "panels/view_side_box.h"
 #include "panels/wrapped_text.h"
-#include "state/state_colours.h"
 #include "state/strings.h"
 
 namespace hsr::viz {
 namespace {
 // the verdicts in the view's colours (its legend says what they are)
-const ImVec4 wrong(backface_colours::culled_seen.r, backface_colours::culled_seen.g, backface_colours::culled_seen.b, 1);  // culled, yet seen
-const ImVec4 culled(backface_colours::culled.r, backface_colours::culled.g, backface_colours::culled.b, 1);
+const ImVec4 wrong = colour_of(backface_colours::culled_seen);  // culled, yet seen
+const ImVec4 culled = colour_of(backface_colours::culled);
 const ImVec4 kept_word(0.35f, 0.8f, 0.55f, 1);  // the kept fill's bluish green, lighter: a word on the dark table
 int scrolled_to = -1;                        // the row the table last scrolled to
 

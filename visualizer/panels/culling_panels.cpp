@@ -286,7 +286,10 @@ void zpyramid_canvas(const CullingView& v, const std::vector<std::uint32_t>& dep
     const float cell = 2;
     float left = x + 12;
     const float top = y + h - 20 - cell * float(o.viewport.height);
-    d->AddText(ImVec2(left, top - 20), IM_COL32(220, 220, 220, 255), tr("culling.pyramid").c_str());
+    const std::string caption = tr("culling.pyramid");
+    const ImVec2 at(left, top - 6 - ImGui::GetTextLineHeight()), size = ImGui::CalcTextSize(caption.c_str());  // above the frames, at any type size
+    d->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + size.x + 3, at.y + size.y + 1), IM_COL32(20, 22, 26, 200), 3);  // over the scene's lines
+    d->AddText(at, IM_COL32(220, 220, 220, 255), caption.c_str());
     for (std::size_t l = 0; l < std::min<std::size_t>(4, pyramid.levels()); ++l) {
         const float c = cell * float(1 << l);
         d->AddRectFilled(ImVec2(left - 2, top - 2), ImVec2(left + c * float(pyramid.width(l)) + 2, top + c * float(pyramid.height(l)) + 2),

@@ -48,6 +48,11 @@ void pixel_grid(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp, Fil
 // The pixels' numbers along a grid, x under it and y left of it, in small dim type: the questions and the narration
 // name pixels by them ("pixel (15, 13)"). Every pixel's when the cells are wide enough for two digits, else every
 // 2nd, 5th or 10th. They take the line under the grid and the canvas's margin left of it.
+// The room grid_numbers takes left of a grid: its widest row number and the gap before the grid.
+inline float grid_number_room(algo::Viewport vp) {
+    return ImGui::GetFont()->CalcTextSizeA(axis_number_size(), 1e9f, 0, std::to_string(std::max(vp.height - 1, 0)).c_str()).x + 3;
+}
+
 inline void grid_numbers(ImDrawList* d, ImVec2 origin, float cell, algo::Viewport vp) {
     ImFont* font = ImGui::GetFont();
     const float size = axis_number_size();

@@ -16,9 +16,11 @@
 
 namespace hsr::viz {
 
+inline ImVec4 colour_of(const StateColour& c, float alpha = 1) { return ImVec4(c.r, c.g, c.b, alpha); }
+
 // A square of the colour, outlined so that a dark one shows on the dark background.
 inline void swatch(ImDrawList* d, ImVec2 at, float side, const StateColour& c) {
-    d->AddRectFilled(at, ImVec2(at.x + side, at.y + side), ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)));
+    d->AddRectFilled(at, ImVec2(at.x + side, at.y + side), ImGui::GetColorU32(colour_of(c)));
     d->AddRect(at, ImVec2(at.x + side, at.y + side), IM_COL32(200, 203, 210, 255));
 }
 

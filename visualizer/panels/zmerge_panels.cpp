@@ -7,6 +7,7 @@
 
 #include "panels/fat_pixels.h"
 #include "panels/panel_style.h"
+#include "panels/state_legend.h"
 #include "panels/wrapped_text.h"
 #include "state/strings.h"
 
@@ -36,10 +37,11 @@ struct DepthShade {
 void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
     const ZMergeView& v = s.view();
     ImDrawList* d = begin_canvas("##zmerge canvas", x, y, w, h);
-    const float margin = 20, title = ImGui::GetTextLineHeightWithSpacing() + 4;
-    const float W = float(v.viewport.width), H = float(v.viewport.height);
+    // room for the row numbers left of each grid (two digits on a projector), and for the frames' legend below
+    const float margin = std::max(20.0f, grid_number_room(v.viewport) + 6), title = ImGui::GetTextLineHeightWithSpacing() + 4;
+    const float W = float(v.viewport.width), H = float(v.viewport.height), legend = legend_height();
     const auto cell_for = [&](float columns, float rows) {
-        return std::min((w - (columns + 1) * margin) / (columns * W), (h - (rows + 1) * margin - rows * title) / (rows * H));
+        return std::min((w - (columns + 1) * margin) / (columns * W), (h - legend - (rows + 1) * margin - rows * title) / (rows * H));
     };
     const bool wide = cell_for(3, 2) >= cell_for(2, 3);  // columns A, B, merged; rows colour, depth (or transposed)
     const float cell = std::max(2.0f, wide ? cell_for(3, 2) : cell_for(2, 3));
@@ -74,9 +76,10 @@ void zmerge_canvas(const ZMergeSession& s, float x, float y, float w, float h) {
                 const bool chosen = part == 2 || (part == 0) == v.from_a;
                 d->AddRect(ImVec2(o.x + float(v.x) * cell - 2, o.y + float(v.y) * cell - 2),
                            ImVec2(o.x + float(v.x + 1) * cell + 1, o.y + float(v.y + 1) * cell + 1),
-                           chosen ? IM_COL32(90, 220, 130, 255) : IM_COL32(240, 80, 60, 255), 0, 0, canvas_px(3));
+                           ImGui::GetColorU32(chosen ? colour_of(zmerge_colours::nearer) : colour_of(zmerge_colours::farther)), 0, 0, canvas_px(3));
             }
         }
+    if (v.x >= 0) canvas_legend(d, x + margin, y + h - 4, zmerge_colours::all);  // what the frames' colours say
     ImGui::End();
 }
 

@@ -58,6 +58,12 @@ inline constexpr StateColour culled_seen{"backface.mark_culled_seen", 0.80f, 0.4
 inline constexpr std::array all{kept, under_test, culled, culled_seen};
 }  // namespace backface_colours
 
+namespace zmerge_colours {  // the frames round the pixel merged last
+inline constexpr StateColour nearer{"zmerge.mark_nearer", 0.0f, 0.62f, 0.45f};  // bluish green: where the merged value came from
+inline constexpr StateColour farther{"zmerge.mark_farther", 0.84f, 0.37f, 0.0f};  // vermillion: the part that lost there
+inline constexpr std::array all{nearer, farther};
+}  // namespace zmerge_colours
+
 namespace transform_colours {  // the perspective transform's view: what a point's or a line's colour says
 inline constexpr StateColour compared{"transform.mark_compared", 0.94f, 0.89f, 0.26f};  // yellow, as palette::current_edge
 inline constexpr StateColour occluding{"transform.mark_occluding", 0.0f, 0.62f, 0.45f}; // bluish green, as palette::inside
