@@ -174,6 +174,109 @@ private:
     std::vector<double> farthest_;         // farthest_[i]: the greatest MAXZ of reversed_[0 … i]
 };
 
+// What tests 1–5, then 3 and 4 with the roles swapped, say of the pair R, Q.
+enum class PairOrder { r_first, q_first, unknown };
+
+// The tests in order of cost: may R be drawn before Q (1–5)? Else must Q be drawn first (3 and 4 with the roles
+// swapped)? Each test tried is an event; the one that settles the pair is counted in decided_by.
+Steps<DepthSortEvent, PairOrder> order_pair(const SortPolygon& r, const Extents& er, const SortPolygon& q, const Extents& eq,
+                                            std::uint64_t (&decided_by)[7]) {
+    for (TestTried t : r_before_q_tests(r, er, q, eq)) {
+        if (t.test == OrderTest::projections) t.passed = !projections_overlap(r.vertices, q.vertices), t.a = !t.passed;
+        co_yield t;
+        if (t.passed) {
+            ++decided_by[int(t.test)];
+            co_return PairOrder::r_first;
+        }
+    }
+    const TestTried swapped[2] = {plane_test(OrderTest::q_behind_r, q.vertices, er, false),
+                                  plane_test(OrderTest::r_in_front_of_q, r.vertices, eq, true)};
+    for (const TestTried& t : swapped) {
+        co_yield t;
+        if (t.passed) {
+            ++decided_by[int(t.test)];
+            co_return PairOrder::q_first;
+        }
+    }
+    co_return PairOrder::unknown;
+}
+
+// What the sort works on beside R and Q: the polygons (the parts of splits appended), their extents, which were
+// moved to the head, the moves since a polygon was last drawn, and the list still to draw.
+struct Sorting {
+    DepthSortResult& out;
+    std::vector<Extents>& ext;
+    std::vector<bool>& moved;
+    std::size_t& moves_since_drawn;
+    DisplayList& list;
+};
+
+// How a pair the tests could not order was resolved.
+enum class Unordered { q_moved, split, too_small_to_cut, bounded };
+
+// R and Q (the k-th of the list) are not in order: Q goes to the head of the list if it must go first and was not
+// moved before; else a cycle, or no order: a polygon is split by another's plane, as the notes say.
+Steps<DepthSortEvent, Unordered> resolve_unordered(Sorting s, std::uint32_t r, std::uint32_t q, std::size_t k, bool q_first,
+                                                   std::uint64_t max_splits) {
+    auto& [out, ext, moved, moves_since_drawn, list] = s;
+    if (q_first && !moved[q]) {  // Q goes to the head of the list
+        moved[q] = true;
+        ++out.moves, ++moves_since_drawn;
+        list.move_to_front(k);
+        co_yield PolygonMoved{q, r};
+        co_return Unordered::q_moved;
+    }
+    // Q was moved before: a cycle, or no order could be shown. As the notes say, split R by Q's plane; if that
+    // plane does not cut R, split Q by R's.
+    std::uint32_t cut = r, by = q;
+    std::optional<Plane> across;  // a plane along the view rays, when no polygon's plane cuts the cycle
+    if (classify(ext[q].plane, out.polygons[r].vertices, tol) != PolygonSide::spanning) cut = q, by = r;
+    if (!cuts(ext[by], out.polygons[cut])) {
+        // Neither cuts the other, and Q must go first: that is an order, not a cycle of these two (Q's mark is
+        // from another R): move it again. But only while this round has moved fewer polygons than the list
+        // holds; beyond that the moves go round a cycle of three or more (each before the next, the last
+        // before the first) in which R's and Q's planes cut neither: the plane of another member of the
+        // cycle must cut one of them, so split that one.
+        if (q_first && moves_since_drawn < list.size()) {
+            ++out.moves, ++moves_since_drawn;
+            list.move_to_front(k);
+            co_yield PolygonMoved{q, r};
+            co_return Unordered::q_moved;
+        }
+        // The cycle's members: the polygons moved to the head of the list since the last was drawn, and Q
+        std::vector<std::uint32_t> cycle = list.head(std::min(moves_since_drawn + 1, k));
+        cycle.push_back(q);
+        if (const auto pair = cut_in_cycle(cycle, out.polygons, ext)) {
+            std::tie(cut, by) = *pair;
+        } else if (const Plane p = across_plane(out.polygons[r]); classify(p, out.polygons[r].vertices, tol) == PolygonSide::spanning) {
+            // No plane of the cycle cuts another member (bars lying each over the next): cut R across its
+            // length by a plane along the view rays, so that each half overlaps fewer of the others
+            cut = by = r, across = p;
+        } else {
+            co_return Unordered::too_small_to_cut;  // nothing orders them better than the list
+        }
+        moves_since_drawn = 0;  // the parts are new polygons: the round starts again
+    }
+    if (q_first) co_yield CycleDetected{q};
+    if (out.splits == max_splits) {
+        out.bounded = true;
+        co_yield SortBoundReached{SortBound::splits, max_splits};
+        co_return Unordered::bounded;
+    }
+    const SplitParts parts = split(across.value_or(ext[by].plane), out.polygons[cut].vertices, tol);
+    const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
+    for (const auto* part : {&parts.front, &parts.back}) {
+        out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part, out.polygons[cut].opacity});
+        ext.push_back(extents_of(out.polygons.back()));
+        moved.push_back(false);
+    }
+    ++out.splits;
+    list.replace(cut, back, front);
+    const DepthSortEvent cut_event = PolygonCut{cut, by, front, back, parts.front, parts.back, across.has_value()};
+    co_yield cut_event;
+    co_return Unordered::split;
+}
+
 }  // namespace
 
 Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polygons, DepthSortOptions o) {
@@ -211,85 +314,16 @@ Steps<DepthSortEvent, DepthSortResult> depth_sort(std::vector<SortPolygon> polyg
                 co_return out;
             }
             co_yield PairExamined{r, q, ext[r].min_z, ext[r].max_z, ext[q].min_z, ext[q].max_z};
-            bool settled = false;
-            for (TestTried t : r_before_q_tests(out.polygons[r], ext[r], out.polygons[q], ext[q])) {
-                if (t.test == OrderTest::projections)
-                    t.passed = !projections_overlap(out.polygons[r].vertices, out.polygons[q].vertices), t.a = !t.passed;
-                co_yield t;
-                if ((settled = t.passed)) {
-                    ++out.decided_by[int(t.test)];
-                    break;
-                }
-            }
-            if (settled) continue;
-            // Swap the roles of R and Q and retry tests 3 and 4: should Q be drawn first?
-            const TestTried swapped[2] = {plane_test(OrderTest::q_behind_r, out.polygons[q].vertices, ext[r], false),
-                                          plane_test(OrderTest::r_in_front_of_q, out.polygons[r].vertices, ext[q], true)};
-            bool q_first = false;
-            for (const TestTried& t : swapped) {
-                co_yield t;
-                if ((q_first = t.passed)) {
-                    ++out.decided_by[int(t.test)];
-                    break;
-                }
-            }
-            draw_r = false;
-            if (q_first && !moved[q]) {  // Q goes to the head of the list
-                moved[q] = true;
-                ++out.moves, ++moves_since_drawn;
-                list.move_to_front(k);
-                co_yield PolygonMoved{q, r};
-                break;
-            }
-            // Q was moved before: a cycle, or no order could be shown. As the notes say, split R by Q's plane; if that
-            // plane does not cut R, split Q by R's.
-            std::uint32_t cut = r, by = q;
-            std::optional<Plane> across;  // a plane along the view rays, when no polygon's plane cuts the cycle
-            if (classify(ext[q].plane, out.polygons[r].vertices, tol) != PolygonSide::spanning) cut = q, by = r;
-            if (!cuts(ext[by], out.polygons[cut])) {
-                // Neither cuts the other, and Q must go first: that is an order, not a cycle of these two (Q's mark is
-                // from another R): move it again. But only while this round has moved fewer polygons than the list
-                // holds; beyond that the moves go round a cycle of three or more (each before the next, the last
-                // before the first) in which R's and Q's planes cut neither: the plane of another member of the
-                // cycle must cut one of them, so split that one.
-                if (q_first && moves_since_drawn < list.size()) {
-                    ++out.moves, ++moves_since_drawn;
-                    list.move_to_front(k);
-                    co_yield PolygonMoved{q, r};
-                    break;
-                }
-                // The cycle's members: the polygons moved to the head of the list since the last was drawn, and Q
-                std::vector<std::uint32_t> cycle = list.head(std::min(moves_since_drawn + 1, k));
-                cycle.push_back(q);
-                if (const auto pair = cut_in_cycle(cycle, out.polygons, ext)) {
-                    std::tie(cut, by) = *pair;
-                } else if (const Plane p = across_plane(out.polygons[r]); classify(p, out.polygons[r].vertices, tol) == PolygonSide::spanning) {
-                    // No plane of the cycle cuts another member (bars lying each over the next): cut R across its
-                    // length by a plane along the view rays, so that each half overlaps fewer of the others
-                    cut = by = r, across = p;
-                } else {
-                    draw_r = true;  // too small to cut: nothing orders them better than the list
-                    continue;
-                }
-                moves_since_drawn = 0;  // the parts are new polygons: the round starts again
-            }
-            if (q_first) co_yield CycleDetected{q};
-            if (out.splits == o.max_splits) {
-                out.bounded = true;
-                co_yield SortBoundReached{SortBound::splits, o.max_splits};
-                co_return out;
-            }
-            const SplitParts parts = split(across.value_or(ext[by].plane), out.polygons[cut].vertices, tol);
-            const auto front = std::uint32_t(out.polygons.size()), back = front + 1;
-            for (const auto* part : {&parts.front, &parts.back}) {
-                out.polygons.push_back({out.polygons[cut].id, out.polygons[cut].color, *part, out.polygons[cut].opacity});
-                ext.push_back(extents_of(out.polygons.back()));
-                moved.push_back(false);
-            }
-            ++out.splits;
-            list.replace(cut, back, front);
-            const DepthSortEvent cut_event = PolygonCut{cut, by, front, back, parts.front, parts.back, across.has_value()};
-            co_yield cut_event;
+            auto tests = order_pair(out.polygons[r], ext[r], out.polygons[q], ext[q], out.decided_by);
+            for (const DepthSortEvent& e : tests) co_yield e;
+            if (tests.result() == PairOrder::r_first) continue;
+            const bool q_first = tests.result() == PairOrder::q_first;
+            auto resolved = resolve_unordered({out, ext, moved, moves_since_drawn, list}, r, q, k, q_first, o.max_splits);
+            for (const DepthSortEvent& e : resolved) co_yield e;
+            if (resolved.result() == Unordered::bounded) co_return out;
+            if (resolved.result() == Unordered::too_small_to_cut) continue;  // on to the next Q
+            draw_r = false;  // Q went to the head, or a polygon was cut: the list's head is tested again
+            break;
         }
         if (!draw_r) continue;
         list.pop_front();
