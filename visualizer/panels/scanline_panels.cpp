@@ -58,10 +58,30 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         const ImVec2 a = on_grid(o, cell, edge.a), b = on_grid(o, cell, edge.b);
         const std::string text = tr("scanline.edge_label", {{"edge", std::to_string(e)}});
         const ImVec2 top = a.y <= b.y ? a : b, bottom = a.y <= b.y ? b : a;
-        const ImVec2 size = ImGui::CalcTextSize(text.c_str()), at(top.x + (bottom.x - top.x) * 0.75f + 6, top.y + (bottom.y - top.y) * 0.75f - size.y / 2);
-        d->AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + size.x + 2, at.y + size.y), IM_COL32(20, 22, 26, 200), 2);
-        d->AddText(at, IM_COL32(255, 255, 255, 255), text.c_str());
-        taken.push_back(ImVec4(at.x - 2, at.y, at.x + size.x + 2, at.y + size.y));
+        const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        // three quarters down the edge, else higher up where another edge's number took that place (two edges
+        // meeting low in a triangle had their numbers side by side, each seeming to name the other)
+        const auto point_at = [&](float t) { return ImVec2(top.x + (bottom.x - top.x) * t, top.y + (bottom.y - top.y) * t); };
+        const auto box_at = [&](float t) {
+            const ImVec2 at(point_at(t).x + 8, point_at(t).y - size.y / 2);
+            return ImVec4(at.x - 2, at.y, at.x + size.x + 2, at.y + size.y);
+        };
+        float along = 0.75f;
+        for (const float t : {0.75f, 0.6f, 0.45f, 0.9f, 0.3f}) {
+            const ImVec4 c = box_at(t);
+            if (std::none_of(taken.begin(), taken.end(), [&](const ImVec4& other) { return c.x < other.z && other.x < c.z && c.y < other.w && other.y < c.w; })) {
+                along = t;
+                break;
+            }
+        }
+        // a dot on its edge, joined to the number: where edges cross, the number says which line it names
+        const ImVec4 box = box_at(along);
+        const ImVec2 on_edge = point_at(along);
+        d->AddLine(on_edge, ImVec2(box.x, (box.y + box.w) / 2), IM_COL32(255, 255, 255, 255), canvas_px(1.5f));
+        d->AddCircleFilled(on_edge, canvas_px(3.5f), IM_COL32(255, 255, 255, 255));
+        d->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), IM_COL32(20, 22, 26, 200), 2);
+        d->AddText(ImVec2(box.x + 2, box.y), IM_COL32(255, 255, 255, 255), text.c_str());
+        taken.push_back(box);
     }
     // the names keep off the line being scanned, its crossings' words and the pixels a question there asks about
     const float ly = o.y + (float(v.line) + 0.5f) * cell, word_band = 9 + ImGui::GetTextLineHeight();
