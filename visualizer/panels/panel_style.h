@@ -93,6 +93,14 @@ inline void end_column_box(const PanelLayout& l, Box b, float need = -1, float f
         if (ImGui::GetCurrentWindow()->ScrollbarX) full += ImGui::GetStyle().ScrollbarSize;
         l.fit->asked(b, {need < 0 ? full : need, full});
     }
+    // a box that scrolls fades out at its foot while more lies below: its last visible line reads as going on under
+    // the edge (beside the scrollbar), not as a line cut in half
+    if (ImGuiWindow* w = ImGui::GetCurrentWindow(); w->ScrollbarY && ImGui::GetScrollY() < ImGui::GetScrollMaxY()) {
+        const ImRect inner = w->InnerClipRect;
+        const float fade = std::min(ImGui::GetTextLineHeight() * 1.3f, inner.GetHeight() / 3);
+        const ImU32 bg = ImGui::GetColorU32(ImGuiCol_WindowBg) | IM_COL32_A_MASK, clear = bg & ~IM_COL32_A_MASK;
+        w->DrawList->AddRectFilledMultiColor(ImVec2(inner.Min.x, inner.Max.y - fade), inner.Max, clear, clear, bg, bg);
+    }
     ImGui::End();
 }
 
