@@ -245,3 +245,26 @@ TEST_CASE("the machines narrate in the language the window speaks, their traces 
     }
     strings.use(before);
 }
+
+TEST_CASE("every question's choice that has words is offered in German (a number, an id or a name stays as it is)", "[strings]") {
+    Strings& strings = window_strings();
+    const std::string before = strings.language();
+    strings.use("de");
+    // words alike in both languages, or names the lessons use as such
+    const std::set<std::string> alike = {"Cohen–Sutherland", "Liang–Barsky"};
+    const std::regex notation(R"(^[xyz] (min|max)$|^(in|out)→(in|out)$)");  // the notes' plane names and edge cases
+    const std::regex no_words(R"(^[#P]?[-0-9.,/ ()]*$|^[a-z]?[0-9]+$|^[A-Z][0-9]*$)");  // "0", "#3", "P2", "1/4", "B1"
+    for (const auto& entry : std::filesystem::directory_iterator(HSR_SOURCE_DIR "/lessons")) {
+        if (entry.path().extension() != ".toml") continue;
+        const Lesson lesson = load_lesson(entry.path().string());
+        for (const auto& chapter : lesson.chapters) {
+            if (!chapter.question) continue;
+            for (const std::string& choice : chapter.question->choices) {
+                if (std::regex_match(choice, no_words) || std::regex_match(choice, notation) || alike.contains(choice)) continue;
+                INFO(entry.path().filename().string() << ": \"" << choice << "\"");
+                CHECK(strings.word(choice) != choice);
+            }
+        }
+    }
+    strings.use(before);
+}
