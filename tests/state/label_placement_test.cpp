@@ -43,15 +43,16 @@ TEST_CASE("labels far apart each keep the usual spot", "[labels]") {
 }
 
 TEST_CASE("in a crowd, labels with no free spot are left out after the first few, which are always shown", "[labels]") {
-    // 60 polygons' labels at one point (a city of thousands seen from afar): eight spots around it are free
+    // 60 polygons' labels at one point (a city of thousands seen from afar): twenty spots around it are free (four
+    // corners, five lines up and down)
     const std::vector<LabelBox> crowd(60, LabelBox{400, 300, 30, 14});
     const auto p = place_labels(crowd, 16);
     REQUIRE(p.size() == crowd.size());
-    for (std::size_t k = 0; k < 16; ++k) CHECK(p[k].shown);  // the first 16: shown, on a free spot or their own
-    for (std::size_t k = 16; k < crowd.size(); ++k) CHECK_FALSE(p[k].shown);
+    for (std::size_t k = 0; k < 20; ++k) CHECK(p[k].shown);  // the free spots, then the always shown on their own
+    for (std::size_t k = 20; k < crowd.size(); ++k) CHECK_FALSE(p[k].shown);
     // those shown on a free spot never overlap one another
-    for (std::size_t i = 0; i < 8; ++i)
-        for (std::size_t j = i + 1; j < 8; ++j) CHECK_FALSE(overlap(crowd[i], p[i], crowd[j], p[j]));
+    for (std::size_t i = 0; i < 20; ++i)
+        for (std::size_t j = i + 1; j < 20; ++j) CHECK_FALSE(overlap(crowd[i], p[i], crowd[j], p[j]));
     // with room around every point, nobody is left out
     std::vector<LabelBox> spread;
     for (int k = 0; k < 60; ++k) spread.push_back({float(40 * (k % 10)), float(40 * (k / 10)), 20, 12});
@@ -74,4 +75,14 @@ TEST_CASE("no label is placed on a part of the view an inset covers, a point und
     CHECK(q.top >= inset.top - 3 * under.height);
     // without the inset, it keeps its usual spot by its point
     CHECK(place_labels({under})[0].top == 500 - 14);
+}
+
+TEST_CASE("a label does not cover another label's point (it would hide what that one names)", "[labels]") {
+    // a long label placed first, whose usual spot (upper right of its point) runs over a small box's point, then the
+    // small box's label
+    const std::vector<LabelBox> two = {{150, 110, 120, 12}, {200, 100, 20, 12}};
+    const auto p = place_labels(two);
+    REQUIRE(p[0].shown);
+    const bool covers = p[0].left <= two[1].x && two[1].x <= p[0].left + two[0].width && p[0].top <= two[1].y && two[1].y <= p[0].top + two[0].height;
+    CHECK_FALSE(covers);
 }

@@ -6,6 +6,7 @@
 #include "panels/lesson_panels.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string_view>
 #include <vector>
@@ -244,6 +245,11 @@ void draw_labels(const std::vector<Label>& labels, const glm::mat4& vp, float x,
         const float pad = canvas_px(2);
         // kept inside the view: a label at its right edge would run under the panel column ("p2 000010" cut)
         const float left = std::clamp(at[k].left, x + pad, std::max(x + pad, x + w - size.x - pad));
+        // a label moved off its point (a crowd around it) is joined to it by a thin line of its colour
+        const float px = boxes[k].x, py = boxes[k].y;
+        const float nx = std::clamp(px, left, left + size.x), ny = std::clamp(py, at[k].top, at[k].top + size.y);
+        if (std::hypot(nx - px, ny - py) > 1.5f * size.y)
+            d->AddLine(ImVec2(px, py), ImVec2(nx, ny), ImGui::GetColorU32(ImVec4(label.color.x, label.color.y, label.color.z, 0.8f)), canvas_px(1));
         d->AddRectFilled(ImVec2(left - pad, at[k].top - pad / 2), ImVec2(left + size.x + pad, at[k].top + size.y + pad / 2),
                          IM_COL32(14, 15, 18, 215), pad);
         d->AddText(ImVec2(left, at[k].top), color, label.text.c_str());

@@ -15,23 +15,31 @@ std::vector<Placed> place_labels(const std::vector<LabelBox>& labels, std::size_
     std::vector<Placed> out;
     std::vector<Rect> taken;
     for (const ViewRect& c : covered) taken.push_back({c.left, c.top, c.right, c.bottom});
-    for (const LabelBox& l : labels) {
+    // every label's own point is kept clear of the others' text: a label there would hide what another one names
+    constexpr float point = 3;
+    for (const LabelBox& l : labels) taken.push_back({l.x - point, l.y - point, l.x + point, l.y + point});
+    for (std::size_t n = 0; n < labels.size(); ++n) {
+        const LabelBox& l = labels[n];
         const float gap = 6, line = l.height;
         // a point under a covered part: its label goes just above that part (the tries then start there)
         float x = l.x, y = l.y;
         for (const ViewRect& c : covered)
             if (x >= c.left && x <= c.right && y >= c.top && y <= c.bottom) y = c.top - gap;
-        // upper right (the usual spot), lower right, upper left, lower left; then a line further up or down
-        const Placed tries[] = {
-            {x + gap, y - line}, {x + gap, y}, {x - gap - l.width, y - line}, {x - gap - l.width, y},
-            {x + gap, y - 2 * line}, {x + gap, y + line}, {x - gap - l.width, y - 2 * line}, {x - gap - l.width, y + line},
-        };
+        // upper right (the usual spot), lower right, upper left, lower left; then the same a line further up or down
+        // each time, up to four (the window draws a leader to a label moved off its point)
+        std::vector<Placed> tries;
+        for (int ring = 0; ring < 5; ++ring) {
+            const float up = y - float(ring + 1) * line, down = y + float(ring) * line;
+            tries.insert(tries.end(), {{x + gap, up}, {x + gap, down}, {x - gap - l.width, up}, {x - gap - l.width, down}});
+        }
         Placed chosen = tries[0];
         chosen.shown = out.size() < always_shown;
+        const Rect own{l.x - point, l.y - point, l.x + point, l.y + point};
         for (const Placed& p : tries) {
             const Rect r{p.left, p.top, p.left + l.width, p.top + l.height};
             bool free = true;
-            for (const Rect& t : taken) free = free && !r.overlaps(t);
+            for (const Rect& t : taken)
+                free = free && (!r.overlaps(t) || (t.left == own.left && t.top == own.top && t.right == own.right && t.bottom == own.bottom));
             if (free) {
                 chosen = p;
                 break;

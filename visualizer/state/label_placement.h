@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Where the labels of a view go so that none covers another: each wants the spot to the upper right of its point;
-// when that spot is taken, it tries the other corners and then spots a line further away, and takes the first free
-// one. If none is free, the first `always_shown` labels take their own spot anyway (what a small scene or the
+// Where the labels of a view go so that none covers another, nor another's point: each wants the spot to the upper
+// right of its point; when that spot is taken, it tries the other corners and then spots a line further away (up to
+// five lines), and takes the first free one. If none is free, the first `always_shown` labels take their own spot anyway (what a small scene or the
 // question is about is never hidden); a later one is not shown (a crowd of them, on a scene of thousands of
 // polygons, would be an unreadable pile). Labels placed first keep their spots: pass the most important first.
 //
