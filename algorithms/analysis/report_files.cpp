@@ -8,6 +8,7 @@
 #include <map>
 
 #include "scene/load_scene.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::analysis {
 namespace {
@@ -24,6 +25,14 @@ std::string csv_field(const std::string& s) {
     std::string q = "\"";
     for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
     return q + "\"";
+}
+
+// A chart's k-th method's colour (Okabe–Ito), as "#rrggbb".
+std::string chart_colour(std::size_t k) {
+    const algo::okabe_ito::Rgb8 c = algo::okabe_ito::chart[k % algo::okabe_ito::chart.size()];
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", c.r, c.g, c.b);
+    return hex;
 }
 
 std::string xml_text(const std::string& s) {
@@ -133,7 +142,6 @@ std::string error_chart_svg(const std::vector<Measurement>& rows, const std::str
     const auto y_of = [&](double e) { return top + (e_hi - e) / (e_hi - zero_line) * (height - top - bottom); };
 
     // One colour per method (Okabe–Ito), a legend on the right.
-    static const char* palette[] = {"#e69f00", "#56b4e9", "#009e73", "#f0e442", "#0072b2", "#d55e00", "#cc79a7", "#000000"};
     std::map<std::string, int> colour;
     std::vector<std::string> methods;
     for (const Measurement* m : pts)
@@ -162,12 +170,12 @@ std::string error_chart_svg(const std::vector<Measurement>& rows, const std::str
         const double x = x_of(std::log10(std::max(m->median_ms, 1e-6)));
         const double y = y_of(m->error > 0 ? std::log10(m->error) : zero_line);
         svg += "<g><title>" + xml_text(m->method + ", " + m->setting) + "</title><circle cx=\"" + number(x) + "\" cy=\"" +
-               number(y) + "\" r=\"5\" fill=\"" + palette[colour[m->method]] + "\" stroke=\"black\" stroke-width=\"0.5\"/></g>\n";
+               number(y) + "\" r=\"5\" fill=\"" + chart_colour(std::size_t(colour[m->method])) + "\" stroke=\"black\" stroke-width=\"0.5\"/></g>\n";
     }
     for (std::size_t k = 0; k < methods.size(); ++k) {
         const int y = top + 8 + int(k) * 18;
         svg += "<circle cx=\"" + std::to_string(width - right + 20) + "\" cy=\"" + std::to_string(y) + "\" r=\"5\" fill=\"" +
-               palette[colour[methods[k]]] + "\" stroke=\"black\" stroke-width=\"0.5\"/><text x=\"" + std::to_string(width - right + 30) +
+               chart_colour(std::size_t(colour[methods[k]])) + "\" stroke=\"black\" stroke-width=\"0.5\"/><text x=\"" + std::to_string(width - right + 30) +
                "\" y=\"" + std::to_string(y + 4) + "\">" + xml_text(methods[k]) + "</text>\n";
     }
     return svg + "</svg>\n";
@@ -201,7 +209,6 @@ std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::st
     const int width = 900, height = 460, left = 70, right = 340, top = 40, bottom = 50;
     const auto x_of = [&](double x) { return left + (x - x_lo) / (x_hi - x_lo) * (width - left - right); };
     const auto y_of = [&](double y) { return top + (y_hi - y) / (y_hi - y_lo) * (height - top - bottom); };
-    static const char* palette[] = {"#e69f00", "#56b4e9", "#009e73", "#d55e00", "#0072b2", "#cc79a7", "#f0e442", "#000000"};
     const bool against_P = family.find("(P)") != std::string::npos;
     std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" + std::to_string(height) +
                       "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -220,7 +227,7 @@ std::string growth_chart_svg(const std::vector<Measurement>& rows, const std::st
            ") rotate(-90)\" text-anchor=\"middle\">median run time (ms, log)</text>\n";
     for (std::size_t k = 0; k < g.lines.size(); ++k) {
         const GrowthLine& line = g.lines[k];
-        const char* colour = palette[k % 8];
+        const std::string colour = chart_colour(k);
         std::string points;
         for (const Measurement* m : line.rows) {
             const double x = x_of(std::log10(m->size)), y = y_of(std::log10(std::max(m->median_ms, 1e-6)));

@@ -8,6 +8,7 @@
 
 #include "core/numeric.h"
 #include "geometry/polygon_2d.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::algo {
 namespace {
@@ -15,9 +16,7 @@ namespace {
 
 // Okabe–Ito, a colour per cell; walls light, floors dark.
 Color cell_color(std::size_t cell, bool floor) {
-    static constexpr std::array<Color, 7> palette = {{{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66},
-                                                      {0, 114, 178}, {213, 94, 0}, {204, 121, 167}}};
-    const Color c = palette[cell % palette.size()];
+    const Color c = okabe_ito::as<Color>(okabe_ito::series[cell % okabe_ito::series.size()]);
     const double k = floor ? 0.45 : 1.0;
     return {std::uint8_t(c.r * k), std::uint8_t(c.g * k), std::uint8_t(c.b * k)};
 }

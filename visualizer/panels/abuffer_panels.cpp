@@ -86,13 +86,13 @@ void abuffer_canvas(const ABufferSession& s, std::optional<std::pair<int, int>> 
         }
     grid_numbers(d, o, cell, vp);
     for (const algo::ScreenPolygon& p : v.input->polygons)
-        outline(d, o, cell, p, v.polygon >= 0 && &p == &v.input->polygons[std::size_t(v.polygon)] ? IM_COL32(240, 228, 66, 255) : IM_COL32(220, 220, 220, 90),
+        outline(d, o, cell, p, v.polygon >= 0 && &p == &v.input->polygons[std::size_t(v.polygon)] ? okabe_ito_u32(algo::okabe_ito::yellow) : IM_COL32(220, 220, 220, 90),
                 canvas_px(v.polygon >= 0 && &p == &v.input->polygons[std::size_t(v.polygon)] ? 2.5f : 1));
     const auto frame = [&](int px, int py, ImU32 colour, float width) {
         d->AddRect(ImVec2(o.x + float(px) * cell - 2, o.y + float(py) * cell - 2), ImVec2(o.x + float(px + 1) * cell + 1, o.y + float(py + 1) * cell + 1),
                    colour, 0, 0, canvas_px(width));
     };
-    if (v.x >= 0) frame(v.x, v.y, IM_COL32(240, 228, 66, 255), 3);
+    if (v.x >= 0) frame(v.x, v.y, okabe_ito_u32(algo::okabe_ito::yellow), 3);
     if (selected) frame(selected->first, selected->second, IM_COL32(255, 255, 255, 255), 2);
 
     // the same image with one sample per pixel (the z-buffer's coverage), beside it

@@ -18,7 +18,7 @@ namespace hsr::viz {
 
 namespace {
 
-const ImU32 yellow = IM_COL32(240, 228, 66, 255), white = IM_COL32(240, 240, 240, 255), red = IM_COL32(213, 94, 0, 255);
+const ImU32 yellow = okabe_ito_u32(algo::okabe_ito::yellow), white = IM_COL32(240, 240, 240, 255), red = okabe_ito_u32(algo::okabe_ito::vermillion);
 const ImU32 faint = IM_COL32(120, 124, 132, 90), wedge = IM_COL32(160, 164, 172, 200), empty_cell = IM_COL32(40, 43, 50, 255);
 
 std::string n(std::uint64_t value) { return std::to_string(value); }

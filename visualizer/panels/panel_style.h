@@ -10,8 +10,12 @@
 
 #include "panels/layout_audit.h"
 #include "panels/lesson_panels.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
+
+// An Okabe–Ito colour (core/okabe_ito.h) for ImGui's draw lists.
+inline ImU32 okabe_ito_u32(algo::okabe_ito::Rgb8 c, unsigned alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 
 constexpr ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                    ImGuiWindowFlags_NoSavedSettings;

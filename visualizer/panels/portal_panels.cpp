@@ -24,10 +24,10 @@ namespace {
 using algo::Vec2;
 
 const ImU32 wall_colour = IM_COL32(200, 203, 210, 255);
-const ImU32 opening_colour = IM_COL32(86, 180, 233, 255);
-const ImU32 eye_colour = IM_COL32(240, 228, 66, 255);
+const ImU32 opening_colour = okabe_ito_u32(algo::okabe_ito::sky_blue);
+const ImU32 eye_colour = okabe_ito_u32(algo::okabe_ito::yellow);
 const ImU32 found_colour = IM_COL32(0, 200, 140, 255);
-const ImU32 blocked_colour = IM_COL32(213, 94, 0, 255);
+const ImU32 blocked_colour = okabe_ito_u32(algo::okabe_ito::vermillion);
 const ImU32 background = IM_COL32(26, 28, 33, 255);
 ImU32 cell_colour(const StateColour& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, 1)); }
 
@@ -158,13 +158,13 @@ void render_plan(const PortalRenderSession& s, ImDrawList* d, const PlanFit& f) 
     const double half = std::atan(std::tan(v.camera.fov_y * M_PI / 360) * v.camera.aspect);
     for (double side : {-half, half})
         long_line(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
-                  IM_COL32(240, 228, 66, 120), canvas_px(1), false);
+                  okabe_ito_u32(algo::okabe_ito::yellow, 120), canvas_px(1), false);
     {
         const double side = half * 0.85;  // f1's name just inside its right edge
         frustum_name(d, f, eye, {look.x * std::cos(side) - look.y * std::sin(side), look.x * std::sin(side) + look.y * std::cos(side)},
-                     230, 1, IM_COL32(240, 228, 66, 255));
+                     230, 1, okabe_ito_u32(algo::okabe_ito::yellow));
     }
-    const ImU32 wedge_colours[] = {IM_COL32(0, 200, 140, 200), IM_COL32(86, 180, 233, 200), IM_COL32(204, 121, 167, 200)};
+    const ImU32 wedge_colours[] = {IM_COL32(0, 200, 140, 200), okabe_ito_u32(algo::okabe_ito::sky_blue, 200), okabe_ito_u32(algo::okabe_ito::reddish_purple, 200)};
     for (std::size_t i = 0; i < v.passed.size(); ++i) {
         double a0 = 1e300, a1 = -1e300;
         Vec2 d0{}, d1{};

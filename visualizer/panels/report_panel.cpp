@@ -9,6 +9,7 @@
 
 #include "analysis/report_files.h"
 #include "state/strings.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
 
@@ -18,8 +19,10 @@ namespace {
 // it: one line per method, the measured slope beside the notes' claim. The report's SVG draws the same lines.
 void growth_chart(const std::vector<analysis::Measurement>& rows, const std::string& family, const std::string& title, float w, float h) {
     const analysis::GrowthLines g = analysis::growth_lines(rows, family);
-    static const ImU32 palette[] = {IM_COL32(230, 159, 0, 255), IM_COL32(86, 180, 233, 255), IM_COL32(0, 158, 115, 255),
-                                    IM_COL32(213, 94, 0, 255), IM_COL32(0, 114, 178, 255), IM_COL32(204, 121, 167, 255)};
+    const auto colour = [](std::size_t k) {  // the report's chart colours, the first six (its yellow and black are thin on the dark panel)
+        const algo::okabe_ito::Rgb8 c = algo::okabe_ito::chart[k % 6];
+        return IM_COL32(c.r, c.g, c.b, 255);
+    };
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w);  // the title wraps inside its chart's width
     ImGui::TextUnformatted(title.c_str());
     ImGui::PopTextWrapPos();
@@ -43,8 +46,8 @@ void growth_chart(const std::vector<analysis::Measurement>& rows, const std::str
     for (std::size_t k = 0; k < g.lines.size(); ++k) {
         std::vector<ImVec2> points;
         for (const analysis::Measurement* m : g.lines[k].rows) points.emplace_back(x_of(std::log10(m->size)), y_of(std::log10(std::max(m->median_ms, 1e-6))));
-        d->AddPolyline(points.data(), int(points.size()), palette[k % 6], 0, 2.5f);
-        for (const ImVec2 p : points) d->AddCircleFilled(p, 3.5f, palette[k % 6]);
+        d->AddPolyline(points.data(), int(points.size()), colour(k), 0, 2.5f);
+        for (const ImVec2 p : points) d->AddCircleFilled(p, 3.5f, colour(k));
     }
     ImGui::Dummy(ImVec2(w, h));
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w);
@@ -54,7 +57,7 @@ void growth_chart(const std::vector<analysis::Measurement>& rows, const std::str
         std::snprintf(slope, sizeof slope, "%.2f", l.rows.front()->error);
         const std::size_t colon = l.claimed.find(": ");
         const std::string claim = colon == std::string::npos ? l.claimed : l.claimed.substr(colon + 2);
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(palette[k % 6]), "%s",
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colour(k)), "%s",
                            tr("runtime.chart_legend", {{"method", l.method}, {"slope", slope}, {"claim", claim}}).c_str());
     }
     // why a slope measured here may not be the notes' exponent: the sizes a class waits for are small

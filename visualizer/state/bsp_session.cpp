@@ -14,6 +14,7 @@
 #include "state/bsp_painting.h"
 #include "state/long_work.h"
 #include "state/strings.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
 namespace {
@@ -220,7 +221,6 @@ algo::Scene BspSession::scene_of_job() const {
     s.camera.eye = job_.eye.at;
     if (view().two_d) s.camera.target = job_.eye.at + heading_;  // the eye looks where it looked, wherever it is dragged
     // Inputs as the edits left them: moved, added (new ids, colours in turn from the palette) or deleted.
-    static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
     // The scene's colour and opacity by id (the last primitive with an id wins), looked up once per input
     std::unordered_map<std::int32_t, algo::Color> color_of;
     std::unordered_map<std::int32_t, double> opacity_of;
@@ -230,7 +230,7 @@ algo::Scene BspSession::scene_of_job() const {
     std::vector<algo::ScenePolygon> polygons;
     for (const algo::BspInput& in : job_.polygons) {
         const auto known = color_of.find(in.id);
-        const algo::Color color = known != color_of.end() ? known->second : palette[std::size_t(in.id) % std::size(palette)];
+        const algo::Color color = known != color_of.end() ? known->second : algo::okabe_ito::as<algo::Color>(algo::okabe_ito::series[std::size_t(in.id) % algo::okabe_ito::series.size()]);
         if (in.vertices.size() == 2) {
             segments.push_back({in.id, color, glm::dvec4(in.vertices[0], 1.0), glm::dvec4(in.vertices[1], 1.0)});
             continue;

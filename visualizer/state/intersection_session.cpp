@@ -6,6 +6,7 @@
 #include "core/overloaded.h"
 #include "scene/random_scene.h"
 #include "state/strings.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
 namespace {
@@ -35,7 +36,7 @@ std::optional<Scene> random_rays(std::uint32_t seed, bool) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> spread(-4, 4);
     for (int i = 0; i < 3; ++i)
-        s.segments.push_back({SceneId(1001 + i), Color{240, 228, 66}, glm::dvec4(spread(rng), spread(rng), 9, 1), glm::dvec4(spread(rng) / 2, spread(rng) / 2, 0, 1)});
+        s.segments.push_back({SceneId(1001 + i), okabe_ito::as<Color>(okabe_ito::yellow), glm::dvec4(spread(rng), spread(rng), 9, 1), glm::dvec4(spread(rng) / 2, spread(rng) / 2, 0, 1)});
     return s;
 }
 

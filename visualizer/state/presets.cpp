@@ -10,14 +10,14 @@
 #include "scene/random_scene.h"
 #include "scene/save_scene.h"
 #include "state/families.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
 namespace {
 
 // Okabe–Ito, as the shipped scenes colour their primitives
 algo::Color colour(int k) {
-    static constexpr algo::Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
-    return palette[std::size_t(k) % std::size(palette)];
+    return algo::okabe_ito::as<algo::Color>(algo::okabe_ito::series[std::size_t(k) % algo::okabe_ito::series.size()]);
 }
 
 const FamilyFacts& facts_of(const algo::AlgorithmInfo& algorithm) {

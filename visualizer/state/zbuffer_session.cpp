@@ -14,6 +14,7 @@
 #include "scene/load_scene.h"
 #include "state/long_work.h"
 #include "state/strings.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz {
 namespace {
@@ -148,11 +149,10 @@ bool ZBufferSession::add_triangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
         for (const auto& v : p.vertices)
             if (const auto s = on_screen(v)) lo = std::min(lo, s->z), hi = std::max(hi, s->z);
     const double depth = lo <= hi ? (lo + hi) / 2 : 0.5;
-    static constexpr Color palette[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}, {240, 228, 66}, {0, 114, 178}, {213, 94, 0}, {204, 121, 167}};
     SceneId id = 1;
     for (const ScenePolygon& p : scene_.polygons) id = std::max(id, p.id + 1);
     Scene edited = scene_;
-    edited.polygons.push_back({id, palette[std::size_t(id) % std::size(palette)], {world_at(a, depth), world_at(b, depth), world_at(c, depth)}});
+    edited.polygons.push_back({id, okabe_ito::as<Color>(okabe_ito::series[std::size_t(id) % okabe_ito::series.size()]), {world_at(a, depth), world_at(b, depth), world_at(c, depth)}});
     return edit(std::move(edited));
 }
 

@@ -11,6 +11,7 @@
 #include "culling/backface.h"
 #include "state/practice/practice.h"
 #include "state/practice/practice_random.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -62,7 +63,7 @@ algo::Scene scene_of(const Drawn& t) {
     scene.camera.target = (t.a + t.b + t.c) / 3.0;
     scene.camera.near = 0.1;
     scene.camera.far = 100;
-    scene.polygons.push_back({1, {86, 180, 233}, {glm::dvec4(t.a, 1), glm::dvec4(t.b, 1), glm::dvec4(t.c, 1)}});
+    scene.polygons.push_back({1, algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue), {glm::dvec4(t.a, 1), glm::dvec4(t.b, 1), glm::dvec4(t.c, 1)}});
     return scene;
 }
 

@@ -12,6 +12,7 @@
 #include "bsp/bsp_scene.h"
 #include "state/practice/practice.h"
 #include "state/practice/practice_random.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -93,7 +94,7 @@ std::optional<std::pair<std::vector<Wall>, dvec2>> draw(Dice& d, Level l) {
 }
 
 algo::Scene scene_of(const std::vector<Wall>& walls, dvec2 eye) {
-    static const algo::Color colours[] = {{86, 180, 233}, {0, 158, 115}, {230, 159, 0}, {204, 121, 167}, {213, 94, 0}, {240, 228, 66}};
+    static const algo::Color colours[] = {algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::bluish_green), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::reddish_purple), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::vermillion), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::yellow)};
     algo::Scene scene;
     scene.name = "walls in a floor plan";
     scene.camera.eye = {eye.x, eye.y, 0};

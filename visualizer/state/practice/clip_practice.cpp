@@ -14,6 +14,7 @@
 #include "clipping/clip_scene.h"
 #include "state/practice/practice.h"
 #include "state/practice/practice_random.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -86,7 +87,7 @@ algo::Scene exercise_scene(ClipSpace s, std::vector<Vec4> primitive, const std::
     scene.camera.projection = s == ClipSpace::cube ? algo::Projection::orthographic : algo::Projection::perspective;
     scene.camera.near = 1;
     scene.camera.far = s == ClipSpace::cube ? 3 : 5;  // the cube drawn as a cube (its box is 2 × 2 wide and high)
-    const algo::Color orange{230, 159, 0};
+    const algo::Color orange = algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange);
     if (primitive.size() == 2) scene.segments.push_back({1, orange, primitive[0], primitive[1]});
     else scene.polygons.push_back({1, orange, std::move(primitive)});
     return scene;

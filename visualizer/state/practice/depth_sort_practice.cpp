@@ -13,6 +13,7 @@
 
 #include "depth_sort/depth_sort.h"
 #include "state/practice/pixel_triangles.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -78,7 +79,7 @@ bool fair(const SortTriangle& a, const SortTriangle& b) {
 }
 
 algo::Scene scene_of(const SortTriangle (&t)[2]) {
-    static const algo::Color colours[] = {{230, 159, 0}, {86, 180, 233}};
+    static const algo::Color colours[] = {algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue)};
     algo::Scene scene = pixel_grid_scene("two triangles for the depth sort");
     for (std::size_t k = 0; k < 2; ++k) {
         algo::ScenePolygon p{algo::SceneId(k + 1), colours[k], {}};

@@ -11,6 +11,7 @@
 #include "culling/hiz.h"
 #include "state/practice/pixel_triangles.h"
 #include "zbuffer/zbuffer_fill.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -66,7 +67,7 @@ algo::Scene scene_of(const std::vector<Rect>& rects) {
     scene.camera.aspect = double(pixel_grid.width) / pixel_grid.height;
     for (std::size_t k = 0; k < rects.size(); ++k) {
         const Rect& r = rects[k];
-        const algo::Color colour = k == 0 ? algo::Color{230, 159, 0} : algo::Color{86, 180, 233};
+        const algo::Color colour = k == 0 ? algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange) : algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue);
         algo::ScenePolygon p{algo::SceneId(k + 1), colour, {}};
         for (const glm::dvec2 c : {glm::dvec2(r.x0, r.y1), glm::dvec2(r.x1, r.y1), glm::dvec2(r.x1, r.y0), glm::dvec2(r.x0, r.y0)})
             p.vertices.push_back(pixel_point(c, r.depth));

@@ -8,6 +8,7 @@
 #include "perspective/perspective_transform.h"
 #include "state/practice/practice.h"
 #include "state/practice/practice_random.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -46,8 +47,8 @@ std::optional<Exercise> occluding_exercise(Dice& d, Level level) {
         scene.camera.projection = algo::Projection::orthographic;
         scene.camera.box[0] = -2.5, scene.camera.box[1] = 2.5, scene.camera.box[2] = -2.5, scene.camera.box[3] = 2.5;
     }
-    scene.points.push_back({1, {230, 159, 0}, glm::dvec4(a, 1)});
-    scene.points.push_back({2, {86, 180, 233}, glm::dvec4(b, 1)});
+    scene.points.push_back({1, algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange), glm::dvec4(a, 1)});
+    scene.points.push_back({2, algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue), glm::dvec4(b, 1)});
     std::vector<algo::TransformEvent> events;
     auto machine = algo::perspective_transform(scene);
     while (const algo::TransformEvent* e = machine.next()) events.push_back(*e);

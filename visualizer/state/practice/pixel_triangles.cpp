@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/polygon_2d.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -51,7 +52,7 @@ algo::Scene pixel_grid_scene(std::string name) {
 glm::dvec4 pixel_point(dvec2 at, double depth) { return {at.x, -at.y, eye_z - depth, 1}; }
 
 algo::Scene pixel_triangle_scene(const std::vector<PixelTriangle>& triangles) {
-    static const algo::Color colours[] = {{230, 159, 0}, {86, 180, 233}, {0, 158, 115}};
+    static const algo::Color colours[] = {algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::bluish_green)};
     algo::Scene scene = pixel_grid_scene("triangles on fat pixels");
     for (std::size_t k = 0; k < triangles.size(); ++k) {
         algo::ScenePolygon p{algo::SceneId(k + 1), colours[k % 3], {}};

@@ -9,6 +9,7 @@
 #include "state/practice/pixel_triangles.h"
 #include "zbuffer/zbuffer_events.h"
 #include "zbuffer/zbuffer_fill.h"
+#include "core/okabe_ito.h"
 
 namespace hsr::viz::practice {
 namespace {
@@ -55,7 +56,7 @@ algo::Scene scene_of(const Drawn& s) {
     scene.camera.near = s.near;
     scene.camera.far = s.far;
     scene.camera.aspect = double(pixel_grid.width) / pixel_grid.height;
-    const algo::Color colours[] = {{230, 159, 0}, {86, 180, 233}};
+    const algo::Color colours[] = {algo::okabe_ito::as<algo::Color>(algo::okabe_ito::orange), algo::okabe_ito::as<algo::Color>(algo::okabe_ito::sky_blue)};
     const double half[] = {0.3, 0.15};  // of the distance: the nearer square is the smaller one on screen
     const double z[] = {s.farther, s.nearer};
     for (std::size_t k = 0; k < 2; ++k) {
