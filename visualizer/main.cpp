@@ -16,6 +16,7 @@
 #include "state/arguments.h"
 #include "state/lesson.h"
 #include "state/trace.h"
+#include "scene/renderer_names.h"
 
 int main(int argc, char** argv) {
     // Command line: the window by default, `trace` for a headless run.
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
     hsr::viz::RenderOptions render;
     CLI::App* render_cmd = cli.add_subcommand("render", "Render a scene headless with a hidden-surface algorithm");
     render_cmd->add_option("scene", render.scene, "Scene file (world coordinates), or a generated scene: city:N, field:N, spheres:N (N triangles)")->required();
-    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: bsp, zbuffer, scanline, scanline-classic, raycast, depth-sort");
+    render_cmd->add_option("--algorithm", render.algorithm, "Hidden-surface algorithm: " + hsr::algo::renderer_list(true, ", "));
     render_cmd->add_option("--format", render.format, "Depth format for zbuffer and scanline: int16, int24 (default), int32, float32, float32-reversed, linear24");
     render_cmd->add_option("--accel", render.acceleration, "Ray cast acceleration: none, grid (default), octree, bvh");
     render_cmd->add_option("--splitter", render.splitter, "BSP splitter rule: first, balanced, fewest-splits, weighted");

@@ -18,6 +18,7 @@
 #include "geometry/exact_collinear.h"
 #include "scene/load_floor_plan.h"
 #include "scene/load_terrain.h"
+#include "scene/renderer_names.h"
 #include "scene/load_mesh.h"
 
 namespace hsr::algo {
@@ -100,12 +101,10 @@ Expect read_expect(const TomlReader& r, const toml::table* t, const FloorPlan& p
     Expect e;
     if (!t) return e;
     r.only_keys(*t, "expect", {"clip", "bsp", "cull", "pvs", "image", "rejects", "horizon"});
-    static const std::vector<std::string> renderers = {"zbuffer", "scanline", "scanline-classic", "bsp", "depth-sort", "raycast"};
     const auto renderer = [&](const toml::table& c, const std::string& f, bool raycast_too) {
         std::string a = r.text(c, "algorithm", f);
-        if (std::find(renderers.begin(), renderers.end() - (raycast_too ? 0 : 1), a) == renderers.end() - (raycast_too ? 0 : 1))
-            r.fail(c.get("algorithm"), join(f, "algorithm"),
-                   std::string("expected zbuffer, scanline, scanline-classic, bsp") + (raycast_too ? ", depth-sort or raycast" : " or depth-sort"));
+        if (!is_renderer(a) || (!raycast_too && a == renderer_names.back()))
+            r.fail(c.get("algorithm"), join(f, "algorithm"), "expected " + renderer_list(raycast_too));
         return a;
     };
     for_each_table(r, *t, "image", [&](const toml::table& c, const std::string& f0) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "catalogue.h"
+#include "scene/renderer_names.h"
 
 namespace bad_inputs {
 
@@ -268,8 +269,8 @@ std::vector<Case> catalogue() {
     {
         Case c{"collinear but for rounding: a sliver", {{"s.toml", with(scene, "vertices =", "vertices = [[0, 0, 0], [1, 1, 1], [3, 3, 3.0000000000001]]")}}, {}, {}};
         c.runs.push_back({{"check", "s.toml"}, 0, {"ok"}, ""});
-        for (const char* a : {"zbuffer", "scanline", "bsp", "depth-sort", "raycast"})
-            c.runs.push_back({{"render", "s.toml", "--algorithm", a, "--out", "o.png", "--size", "64x48"}, 0, {"wrote o.png"}, ""});
+        for (const std::string_view a : hsr::algo::renderer_names)  // every renderer the command line names
+            c.runs.push_back({{"render", "s.toml", "--algorithm", std::string(a), "--out", "o.png", "--size", "64x48"}, 0, {"wrote o.png"}, ""});
         cs.push_back(std::move(c));
     }
     // A polygon of no area beside one with area: left out, and every front door says so (the scene still plays)
@@ -290,8 +291,8 @@ std::vector<Case> catalogue() {
              {"pentagram", "[[0, 1, 0], [0.588, -0.809, 0], [-0.951, 0.309, 0], [0.951, 0.309, 0], [-0.588, -0.809, 0]]", "crosses itself"}}) {
         Case c{name, {{"s.toml", with(scene, "vertices =", "vertices = " + vertices)}}, {}, {}};
         c.runs.push_back({{"check", "s.toml"}, 0, {"warn", "s.toml:11:", says}, ""});
-        for (const char* a : {"zbuffer", "scanline", "bsp", "depth-sort", "raycast"})
-            c.runs.push_back({{"render", "s.toml", "--algorithm", a, "--out", "o.png", "--size", "64x48"}, 1, {"s.toml:11:", says}, "o.png"});
+        for (const std::string_view a : hsr::algo::renderer_names)
+            c.runs.push_back({{"render", "s.toml", "--algorithm", std::string(a), "--out", "o.png", "--size", "64x48"}, 1, {"s.toml:11:", says}, "o.png"});
         cs.push_back(c);
     }
     // ── TOML that is not TOML, and fields that do not exist ─────────────────────────────────────────────────────

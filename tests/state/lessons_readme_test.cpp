@@ -18,6 +18,7 @@
 #include "bsp/bsp_events.h"
 #include "registry.h"
 #include "state/lesson.h"
+#include "scene/renderer_names.h"
 
 using hsr::viz::Lesson;
 
@@ -79,14 +80,14 @@ TEST_CASE("lessons/README.md lists every lesson as its file says it is", "[lesso
 // (lesson 04 once sent students to `--algorithm` for the splitter rules, which it refuses).
 TEST_CASE("the command lines the lessons quote name real algorithms and splitter rules", "[lesson]") {
     const std::regex algorithm_option(R"((render[^.;"]*?)?--algorithm\s+([a-z_-]+))"), splitter_option(R"(--splitter\s+([a-z_-]+))");
-    const std::set<std::string> render_algorithms = {"bsp", "zbuffer", "scanline", "raycast", "depth-sort"};
+
     int quoted = 0;
     for (const std::string& file : hsr::viz::shipped_lessons()) {
         std::ifstream in(file);
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         for (auto m = std::sregex_iterator(text.begin(), text.end(), algorithm_option); m != std::sregex_iterator(); ++m, ++quoted) {
             INFO(file << ": " << m->str());
-            if ((*m)[1].matched) CHECK(render_algorithms.contains((*m)[2].str()));
+            if ((*m)[1].matched) CHECK(hsr::algo::is_renderer((*m)[2].str()));
             else CHECK(hsr::algo::find_algorithm((*m)[2].str()).has_value());
         }
         for (auto m = std::sregex_iterator(text.begin(), text.end(), splitter_option); m != std::sregex_iterator(); ++m, ++quoted) {

@@ -35,6 +35,7 @@
 #include "zbuffer/classic_scanline.h"
 #include "zbuffer/scanline.h"
 #include "zbuffer/zbuffer_fill.h"
+#include "scene/renderer_names.h"
 
 namespace hsr::viz {
 namespace {
@@ -264,7 +265,7 @@ int run_render(const RenderOptions& o) {
                       {"raycast", render_raycast}, {"depth-sort", render_depth_sort}};
         const auto renderer = renderers.find(o.algorithm);
         if (renderer == renderers.end())
-            throw std::runtime_error("unknown algorithm \"" + o.algorithm + "\" for render; expected bsp, zbuffer, scanline, scanline-classic, raycast or depth-sort");
+            throw std::runtime_error("unknown algorithm \"" + algo::printable(o.algorithm, 60) + "\" for render; expected " + algo::renderer_list());
         StopOnInterrupt ctrl_c;
         algo::WorkMeter meter(progress_on_stderr, &ctrl_c.asked);
         const algo::Image image = renderer->second(scene, o, {w, h}, meter);
