@@ -12,6 +12,9 @@
 
 namespace hsr::viz {
 
+// Whether two boxes (x0, y0, x1, y1) overlap.
+inline bool boxes_overlap(const ImVec4& a, const ImVec4& b) { return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w; }
+
 // The box (x0, y0, x1, y1) of a name of `size` points for the polygon with these screen corners: at their middle, or
 // part way towards a corner (each fraction of `towards`), or, with `beside`, next to a polygon too small for it —
 // the first that overlaps none of `taken` and, given `within`, lies inside it (else the one that covers least of

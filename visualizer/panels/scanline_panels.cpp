@@ -69,7 +69,7 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         float along = 0.75f;
         for (const float t : {0.75f, 0.6f, 0.45f, 0.9f, 0.3f}) {
             const ImVec4 c = box_at(t);
-            if (std::none_of(taken.begin(), taken.end(), [&](const ImVec4& other) { return c.x < other.z && other.x < c.z && c.y < other.w && other.y < c.w; })) {
+            if (std::none_of(taken.begin(), taken.end(), [&](const ImVec4& other) { return boxes_overlap(c, other); })) {
                 along = t;
                 break;
             }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "state/label_placement.h"
 
+#include <algorithm>
+
 namespace hsr::viz {
 namespace {
 
@@ -17,7 +19,8 @@ std::vector<Placed> place_labels(const std::vector<LabelBox>& labels, std::size_
     for (const ViewRect& c : covered) taken.push_back({c.left, c.top, c.right, c.bottom});
     // every label's own point is kept clear of the others' text: a label there would hide what another one names
     constexpr float point = 3;
-    for (const LabelBox& l : labels) taken.push_back({l.x - point, l.y - point, l.x + point, l.y + point});
+    std::vector<Rect> points;
+    for (const LabelBox& l : labels) points.push_back({l.x - point, l.y - point, l.x + point, l.y + point});
     for (std::size_t n = 0; n < labels.size(); ++n) {
         const LabelBox& l = labels[n];
         const float gap = 6, line = l.height;
@@ -34,12 +37,11 @@ std::vector<Placed> place_labels(const std::vector<LabelBox>& labels, std::size_
         }
         Placed chosen = tries[0];
         chosen.shown = out.size() < always_shown;
-        const Rect own{l.x - point, l.y - point, l.x + point, l.y + point};
         for (const Placed& p : tries) {
             const Rect r{p.left, p.top, p.left + l.width, p.top + l.height};
-            bool free = true;
-            for (const Rect& t : taken)
-                free = free && (!r.overlaps(t) || (t.left == own.left && t.top == own.top && t.right == own.right && t.bottom == own.bottom));
+            bool free = std::none_of(taken.begin(), taken.end(), [&](const Rect& t) { return r.overlaps(t); });
+            // its own point it may touch (and another label's at the same place)
+            for (std::size_t k = 0; k < points.size() && free; ++k) free = (labels[k].x == l.x && labels[k].y == l.y) || !r.overlaps(points[k]);
             if (free) {
                 chosen = p;
                 break;
