@@ -226,7 +226,8 @@ TEST_CASE("the machines narrate in the language the window speaks, their traces 
     strings.use("de");
     CHECK(strings.word("entering") == "eintretend");
     CHECK(strings.word("rejected") == "verworfen");
-    CHECK(strings.word("0.5") == "0.5");
+    CHECK(strings.word("0.5") == "0,5");  // a number with the language's decimal separator
+    CHECK(strings.word("#3") == "#3");
     CHECK(strings.word("true") == "wahr");  // the catalogue's own [words]
     strings.use("en");
     CHECK(strings.word("entering") == "entering");
@@ -244,6 +245,23 @@ TEST_CASE("the machines narrate in the language the window speaks, their traces 
         CHECK(test);
     }
     strings.use(before);
+}
+
+TEST_CASE("numbers are written with the language's decimal separator, and nothing else is", "[strings]") {
+    const Strings strings = Strings::from_texts({{"en", "language = \"English\"\ndecimal_separator = \".\"\n[a]\nb = \"{x} px\"\n"},
+                                                 {"de", "language = \"Deutsch\"\ndecimal_separator = \",\"\n[a]\nb = \"{x} Pixel\"\n"}});
+    CHECK(strings.problems().empty());
+    for (const auto& [written, german] : std::vector<std::pair<std::string, std::string>>{
+             {"11.1", "11,1"}, {"-0.25", "-0,25"}, {"1.5e-3", "1,5e-3"}, {"2", "2"}, {"0.9.1", "0.9.1"},
+             {"(1.5, 2)", "(1.5, 2)"}, {"x.5", "x.5"}, {"1.", "1."}, {".5", ".5"}, {"scene.toml", "scene.toml"}}) {
+        INFO(written);
+        CHECK(strings.number("de", written) == german);
+        CHECK(strings.number("en", written) == written);
+        CHECK(strings.text_in("de", "a.b", {{"x", written}}) == german + " Pixel");
+    }
+    // the shipped German catalogue writes a decimal comma, the English one a point
+    CHECK(window_strings().number("de", "4.7") == "4,7");
+    CHECK(window_strings().number("en", "4.7") == "4.7");
 }
 
 TEST_CASE("every question's choice that has words is offered in German (a number, an id or a name stays as it is)", "[strings]") {

@@ -35,7 +35,33 @@ const std::string* entry(const std::map<std::string, std::map<std::string, std::
     return it == catalogue->second.end() ? nullptr : &it->second;
 }
 
+// Is `value` one number written with a decimal point ("11.1", "-0.25", "1.5e-3"), and nothing else? Such a value is
+// written with the language's decimal separator; a tuple, a name or a version ("0.9.1") is left as it is.
+bool is_decimal_number(std::string_view value) {
+    std::size_t i = value.starts_with('-') ? 1 : 0;
+    const auto digits = [&] {
+        const std::size_t from = i;
+        while (i < value.size() && value[i] >= '0' && value[i] <= '9') ++i;
+        return i > from;
+    };
+    if (!digits() || i == value.size() || value[i] != '.') return false;
+    ++i;
+    if (!digits()) return false;
+    if (i < value.size() && (value[i] == 'e' || value[i] == 'E')) {
+        ++i;
+        if (i < value.size() && (value[i] == '-' || value[i] == '+')) ++i;
+        if (!digits()) return false;
+    }
+    return i == value.size();
+}
+
 }  // namespace
+
+std::string Strings::number(std::string_view language, std::string value) const {
+    const std::string* separator = entry(catalogues_, language, "decimal_separator");
+    if (separator && *separator != "." && is_decimal_number(value)) value.replace(value.find('.'), 1, *separator);
+    return value;
+}
 
 void Strings::add(const std::string& language, const std::string& path, std::string_view text) {
     try {
@@ -122,7 +148,11 @@ std::string Strings::text(std::string_view key, StringValues values) const { ret
 std::string Strings::text_in(std::string_view wanted, std::string_view key, StringValues values) const {
     // that language, else English, else the key itself (a missing key shows, it does not crash)
     for (const std::string_view language : {wanted, std::string_view("en")})
-        if (const std::string* t = entry(catalogues_, language, std::string(key))) return fill(*t, values);
+        if (const std::string* t = entry(catalogues_, language, std::string(key))) {
+            std::vector<algo::NamedValue> written(values);
+            for (auto& [name, value] : written) value = number(wanted, std::move(value));
+            return fill(*t, written);
+        }
     return std::string(key);
 }
 
@@ -136,6 +166,7 @@ std::string Strings::say(const algo::Saying& term) const { return std::string(pa
 
 std::string Strings::word(std::string_view english) const {
     if (language_ == "en") return std::string(english);
+    if (is_decimal_number(english)) return number(language_, std::string(english));  // "0,5" in German
     // the catalogue's own [words] first (true, false), then the machines' terms
     if (const std::string* t = entry(catalogues_, language_, "words." + std::string(english))) return *t;
     for (const auto family : algo::machine_sayings())
@@ -152,6 +183,7 @@ std::string Strings::name(std::string_view english) const {
 std::string Strings::say(const algo::Phrase& phrase) const {
     if (!phrase.saying) return {};
     std::vector<algo::NamedValue> values = phrase.values;
+    for (auto& [name, value] : values) value = number(language_, std::move(value));
     for (const auto& [name, term] : phrase.terms) values.emplace_back(name, say(*term));
     return fill(pattern("machine", *phrase.saying), values);
 }

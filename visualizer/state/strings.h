@@ -55,6 +55,9 @@ public:
     // catalogue's [names], else as written.
     std::string name(std::string_view english) const;
     std::string english(std::string_view key) const;            // the English template as written ("" if none)
+    // A value as `language` writes it: a decimal number with the catalogue's `decimal_separator` ("11,1" in German),
+    // anything else as given. text() and say() write every value so.
+    std::string number(std::string_view language, std::string value) const;
     std::vector<std::string> keys(const std::string& language) const;  // a catalogue's keys, sorted
     // Does the catalogue hold the key in English?
     bool has(std::string_view key) const;
