@@ -36,11 +36,12 @@ void draw_backface_view(const BackfaceView& v, glm::vec3 camera_eye, LineBatches
                                                    : untested_outline;
         for (std::size_t k = 0; k < vs.size(); ++k)
             (current || culled_but_seen ? out.bold : out.faint).line(glm::vec3(vs[k]), glm::vec3(vs[(k + 1) % vs.size()]), edge);
-        // every face numbered as the table and the questions name it, just off its outer side; in brackets and dim
-        // when the camera sees it from behind
+        // every face numbered as the table and the questions name it, just off its outer side; dim when this view
+        // (the window's camera, not the eye under test) sees it from behind. Not in brackets: a class read brackets
+        // as "culled", which only the eye's test decides
         const Vec3 c = algo::centroid(vs);
         const bool from_behind = glm::dot(camera_eye - glm::vec3(c), glm::vec3(f.plane.n)) < 0;
-        const std::string number = from_behind ? "(" + std::to_string(f.id) + ")" : std::to_string(f.id);
+        const std::string number = std::to_string(f.id);
         const float alpha = from_behind ? 0.5f : f.facing && !kept ? 0.7f : 1.0f;
         labels.push_back({glm::vec3(c + f.plane.n * 0.04), number,
                           current ? palette::current_edge : glm::vec4(0.85f, 0.86f, 0.9f, alpha)});

@@ -24,7 +24,7 @@ public:
     }
     void draw_scene(const BackfaceSession& s, SceneFrame& f) const {
         draw_backface_view(s.view(), f.camera_eye, f.batches, f.labels);
-        f.detail = tr("backface.caption", {{"test", window_strings().say(algo::term(s.view().test))}}) + " · " + tr("backface.bracketed");
+        f.detail = tr("backface.caption", {{"test", window_strings().say(algo::term(s.view().test))}}) + " · " + tr("backface.dim_number");
         f.covered.push_back(view_legend_rect(legend_width(f.view_w), f.view_h, legend(s.view())));
     }
     void draw_panels(const BackfaceSession& s, PanelFrame& f) const {
