@@ -42,24 +42,23 @@ void draw_roberts_view(const RobertsView& v, const algo::Scene& scene, LineBatch
     for (std::size_t i = 0; i < in.edges.size(); ++i) {
         const algo::BodyEdge& e = in.edges[i];
         const RobertsEdgeView& state = v.edges[i];
-        if (int(i) == v.edge && !state.finished) {  // under test: bold, its hidden parts so far in orange dashes
-            out.bold.line(glm::vec3(e.a), glm::vec3(e.b), palette::current_edge);
-            for (const auto& [t0, t1] : state.hidden) dashes(out.bold, e.a, e.b, t0, t1, palette::intersection);
-            continue;
-        }
+        const bool under_test = int(i) == v.edge && !state.finished;
         if (state.removed) {
             dashes(out.faint, e.a, e.b, 0, 1, glm::vec4(0.6f, 0.6f, 0.65f, 0.25f));
             continue;
         }
-        if (!state.finished) {  // not yet compared: faint
+        if (!state.finished && !under_test) {  // not yet compared: faint
             out.faint.line(glm::vec3(e.a), glm::vec3(e.b), body_colour(e.body, 0.3f));
             continue;
         }
+        // drawn where visible, dashed where hidden: the edge under test in yellow with its hidden parts so far dashed
+        // bold (one mark for "hidden" everywhere; orange dashes beside the vermillion body read as that body)
         const glm::vec4 shown = int(i) == v.edge ? palette::current_edge : body_colour(e.body, 1);
         double at = 0;
         for (const auto& [t0, t1] : state.hidden) {
             if (t0 > at) out.bold.line(glm::vec3(e.a + at * (e.b - e.a)), glm::vec3(e.a + t0 * (e.b - e.a)), shown);
-            dashes(out.faint, e.a, e.b, t0, t1, glm::vec4(0.75f, 0.75f, 0.8f, 0.45f));
+            if (under_test) dashes(out.bold, e.a, e.b, t0, t1, glm::vec4(0.85f, 0.85f, 0.9f, 0.9f));
+            else dashes(out.faint, e.a, e.b, t0, t1, glm::vec4(0.75f, 0.75f, 0.8f, 0.45f));
             at = t1;
         }
         if (at < 1) out.bold.line(glm::vec3(e.a + at * (e.b - e.a)), glm::vec3(e.b), shown);
