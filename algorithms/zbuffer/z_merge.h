@@ -32,7 +32,8 @@ struct PixelMerged {
 };
 struct MergeFinished {
     static constexpr std::string_view kind = "MergeFinished";
-    std::uint64_t from_a, from_b;
+    std::uint64_t from_a, from_b;  // pixels showing a polygon of part A, of part B
+    std::uint64_t background;      // pixels where neither part has a polygon (two far planes: B's stays)
     bool operator==(const MergeFinished&) const = default;
 };
 using ZMergeEvent = std::variant<PixelMerged, MergeFinished>;

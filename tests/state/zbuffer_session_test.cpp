@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Z-buffer lessons: the view folds to the machine's buffers, seeking equals folding, and changing the format or
 // near and far reruns the fill and moves the z-fighting the lesson is about.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -96,7 +97,10 @@ TEST_CASE("the z-merge lesson's merged image is the z-buffer of the whole scene"
     CHECK(s.view().merged == whole.polygon);
     CHECK(s.view().from_a_count > 0);
     CHECK(s.view().from_b_count > 0);
-    CHECK(s.view().from_a_count + s.view().from_b_count == whole.polygon.size());
+    // background: the pixels no polygon of either part covers, not counted as part B's
+    CHECK(s.view().background_count == std::size_t(std::count(whole.polygon.begin(), whole.polygon.end(), -1)));
+    CHECK(s.view().background_count > 0);
+    CHECK(s.view().from_a_count + s.view().from_b_count + s.view().background_count == whole.polygon.size());
 }
 
 TEST_CASE("editing in the fat-pixel view: move a vertex on the screen, add and delete polygons, undo, redo", "[state][zbuffer][editing]") {

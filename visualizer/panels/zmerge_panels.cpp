@@ -90,7 +90,7 @@ void zmerge_state_panel(const ZMergeSession& s, const PanelLayout& l) {
     wrapped_text(tr("zmerge.rule", {{"format", window_strings().name(algo::to_string(s.lesson().depth_format))}}), dim_text);
     if (v.x >= 0)
         wrapped_text(tr("zmerge.pixel", {{"x", n(v.x)}, {"y", n(v.y)}, {"za", n(v.depth_a)}, {"zb", n(v.depth_b)}, {"from", v.from_a ? "A" : "B"}}));
-    wrapped_text(tr("zmerge.counts", {{"a", n(v.from_a_count)}, {"b", n(v.from_b_count)}}));
+    wrapped_text(tr("zmerge.counts", {{"a", n(v.from_a_count)}, {"b", n(v.from_b_count)}, {"background", n(v.background_count)}}));
     end_column_box(l, Box::state);
 }
 

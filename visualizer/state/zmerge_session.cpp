@@ -53,7 +53,7 @@ void reduce(ZMergeView& v, const ZMergeEvent& event) {
                        const std::int32_t from_b = v.b->polygon[k] < 0 ? -1 : v.b->polygon[k] + std::int32_t(v.b_offset);
                        v.merged[k] = e.from_a ? v.a->polygon[k] : from_b;
                        v.x = e.x, v.y = e.y, v.depth_a = e.depth_a, v.depth_b = e.depth_b, v.from_a = e.from_a;
-                       ++(e.from_a ? v.from_a_count : v.from_b_count);
+                       ++(e.from_a ? v.from_a_count : from_b < 0 ? v.background_count : v.from_b_count);
                    },
                    [&](const MergeFinished&) { v.done = true, v.x = v.y = -1; },
                },

@@ -20,7 +20,7 @@ struct ZMergeView {
     int x = -1, y = -1;                  // the pixel merged last
     std::uint32_t depth_a = 0, depth_b = 0;
     bool from_a = false;
-    std::uint64_t from_a_count = 0, from_b_count = 0;
+    std::uint64_t from_a_count = 0, from_b_count = 0, background_count = 0;  // background: neither part has a polygon
     bool done = false;
 };
 

@@ -7,7 +7,7 @@
 namespace hsr::algo {
 
 HSR_TO_JSON(PixelMerged, x, y, depth_a, depth_b, from_a)
-HSR_TO_JSON(MergeFinished, from_a, from_b)
+HSR_TO_JSON(MergeFinished, from_a, from_b, background)
 
 }  // namespace hsr::algo
 
