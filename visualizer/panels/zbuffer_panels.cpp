@@ -98,7 +98,10 @@ void close_up(ImDrawList* d, ImVec2 at, float width, float height, const ZView& 
     const bool testing = v.pixel_x >= 0;
     const int fx = testing ? v.pixel_x : v.span_begin, fy = testing ? v.pixel_y : v.span_y;
     if (fy < 0) {
-        if (height > 2 * line) d->AddText(at, dim, tr("zbuffer.close_up_idle").c_str());
+        if (height > 3 * line) {  // wrapped to the box: a longer language's sentence ran off its right edge
+            const std::string idle = tr("zbuffer.close_up_idle");
+            d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, dim, idle.c_str(), nullptr, width);
+        }
         return;
     }
     const std::string widest = std::to_string(v.far_code);
