@@ -54,7 +54,7 @@ constexpr Saying tested_passed{"portals.tested_passed",
                                "portal {from}→{to}: {verdict}; the frustum narrows to its visible part ({corners} corners, "
                                "{sides} side planes)."};
 constexpr Saying culled{"portals.culled", "Polygon {id} culled: {reason}."};
-constexpr Saying drawn{"portals.drawn", "Polygon {id} drawn ({corners} corners inside the frustum)."};
+constexpr Saying drawn{"portals.drawn", "Polygon {id} drawn: its part inside the frustum has {corners} corners."};
 constexpr Saying render_bound{"portals.render_bound",
                               "Stopped at the bound of {limit} before cell {cell}: the rest of the PVS is drawn against the whole "
                               "view frustum."};

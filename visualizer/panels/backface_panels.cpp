@@ -2,6 +2,7 @@
 #include "panels/backface_panels.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <imgui.h>
 
@@ -47,7 +48,11 @@ void faces_table(const BackfaceView& v) {
             ImGui::TableNextColumn();
             ImGui::Text("%d", f.id);
             ImGui::TableNextColumn();
-            if (f.facing) ImGui::Text("%.4g", f.value);
+            if (f.facing) {
+                char value[32];
+                std::snprintf(value, sizeof value, "%.4g", f.value);
+                ImGui::TextUnformatted(in_language(value).c_str());
+            }
             if (cast) {  // shown once the face is tested: before, it would answer "kept or culled?"
                 ImGui::TableNextColumn();
                 if (f.facing) ImGui::Text("%zu", *f.seen);
@@ -61,7 +66,7 @@ void faces_table(const BackfaceView& v) {
             std::string says = tr(kept ? "backface.kept" : "backface.culled");  // the column's title says what is judged
             if (f.seen && kept && *f.seen == 0) says += " · " + tr("backface.kept_hidden");
             if (f.seen && !kept && *f.seen > 0) says += " · " + tr("backface.culled_seen");
-            // wrapped in its cell at spaces only ("behalten · trotzdem verdeckt" is wider than the column)
+            // wrapped in its cell at spaces only ("behalten · verdeckt!" is wider than the column)
             wrapped_text(says, !kept && f.seen && *f.seen > 0 ? wrong : kept ? kept_word : culled);
         }
         ImGui::EndTable();
