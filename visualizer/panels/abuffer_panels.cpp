@@ -47,6 +47,35 @@ void mask_glyph(std::uint64_t mask, int m, algo::Color colour, float size) {
     ImGui::Dummy(ImVec2(size, size));
 }
 
+// The open pixel's fragment list at the cursor: each fragment's mask and numbers, the one resolving now in yellow,
+// the pixel's colour once resolved. Its lines wrap at the window's wrap position.
+void fragment_list(const ABufferView& v, std::optional<std::pair<int, int>> selected) {
+    const int m = v.input->mask_size;
+    const auto n = [](auto value) { return std::to_string(value); };
+    const auto f = [](double value) { return algo::format_number(value); };
+    const int px = selected ? selected->first : v.x, py = selected ? selected->second : v.y;
+    if (px < 0) return;
+    const std::vector<algo::Fragment>& list = v.lists[v.at(px, py)];
+    ImGui::TextWrapped("%s", tr(selected ? "abuffer.selected" : "abuffer.pixel", {{"x", n(px)}, {"y", n(py)}, {"count", n(list.size())}}).c_str());
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const algo::Fragment& fr = list[k];
+        mask_glyph(fr.mask, m, v.input->polygons[fr.polygon].color, ImGui::GetTextLineHeight() * 2);
+        ImGui::SameLine();
+        const bool current = v.fragment && v.fragment->x == px && v.fragment->y == py && v.fragment->order == k;
+        const std::string line = tr("abuffer.fragment", {{"polygon", n(fr.polygon)}, {"depth", f(fr.depth)}, {"alpha", f(fr.opacity)},
+                                                         {"covered", n(std::popcount(fr.mask))}, {"bits", n(m * m)}});
+        if (current) ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%s", line.c_str());
+        else ImGui::TextUnformatted(line.c_str());
+    }
+    if (v.resolved[v.at(px, py)]) {
+        const glm::dvec4 c = v.rgba[v.at(px, py)];
+        ImGui::TextWrapped("%s", tr("abuffer.resolved", {{"coverage", f(std::round(1000 * c.w) / 10)}, {"r", f(c.x)}, {"g", f(c.y)}, {"b", f(c.z)}}).c_str());
+    }
+    if (v.fragment && v.fragment->x == px && v.fragment->y == py)
+        ImGui::TextWrapped("%s", tr("abuffer.shown", {{"shown", n(v.fragment->shown)}, {"covered", n(v.fragment->covered)},
+                                                      {"percent", f(std::round(1000 * v.fragment->weight) / 10)}}).c_str());
+}
+
 }  // namespace
 
 FatGrid abuffer_grid(const ABufferSession& s, float x, float y, float w, float h) {
@@ -57,7 +86,7 @@ FatGrid abuffer_grid(const ABufferSession& s, float x, float y, float w, float h
     return {x + margin, y + margin + title, cell};
 }
 
-void abuffer_canvas(const ABufferSession& s, std::optional<std::pair<int, int>> selected, float x, float y, float w, float h) {
+bool abuffer_canvas(const ABufferSession& s, std::optional<std::pair<int, int>> selected, float x, float y, float w, float h) {
     const ABufferView& v = s.view();
     const algo::Viewport vp = v.input->viewport;
     const int m = v.input->mask_size;
@@ -103,39 +132,34 @@ void abuffer_canvas(const ABufferSession& s, std::optional<std::pair<int, int>> 
         for (int px = 0; px < vp.width; ++px)
             d->AddRectFilled(ImVec2(one.x + float(px) * small, one.y + float(py) * small), ImVec2(one.x + float(px + 1) * small, one.y + float(py + 1) * small),
                              over_background(v.input->one_sample[v.at(px, py)]));
+
+    // the open pixel's list beside it, in the view's free lower right: eight lines of text and three masks fit there
+    // at every size the window scales to, or the list stays in the state box
+    const float right_margin = canvas_px(16);
+    const float beside = std::max(small * float(vp.width), ImGui::CalcTextSize(tr("abuffer.one_sample").c_str()).x);
+    const float list_x = one.x + beside + canvas_px(32), list_top = one.y - title;
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const bool room = x + w - right_margin - list_x >= 22 * ImGui::GetFontSize() && y + h - list_top >= 8.5f * line;
+    if (room) {
+        ImGui::SetCursorScreenPos(ImVec2(list_x, list_top));
+        ImGui::BeginGroup();  // its lines start at list_x, not at the canvas's left
+        ImGui::PushTextWrapPos(x + w - right_margin - ImGui::GetWindowPos().x);
+        fragment_list(v, selected);
+        ImGui::PopTextWrapPos();
+        ImGui::EndGroup();
+    }
     ImGui::End();
+    return room;
 }
 
-void abuffer_state_panel(const ABufferSession& s, std::optional<std::pair<int, int>> selected, const PanelLayout& l) {
+void abuffer_state_panel(const ABufferSession& s, std::optional<std::pair<int, int>> selected, bool list_in_view, const PanelLayout& l) {
     begin_column_box(l, Box::state, (tr("abuffer.title") + "###state").c_str());
     const ABufferView& v = s.view();
-    const int m = v.input->mask_size;
     const auto n = [](auto value) { return std::to_string(value); };
-    const auto f = [](double value) { return algo::format_number(value); };
-    const int px = selected ? selected->first : v.x, py = selected ? selected->second : v.y;
-    if (px >= 0) {
-        const std::vector<algo::Fragment>& list = v.lists[v.at(px, py)];
-        wrapped_text(tr(selected ? "abuffer.selected" : "abuffer.pixel", {{"x", n(px)}, {"y", n(py)}, {"count", n(list.size())}}));
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const algo::Fragment& fr = list[k];
-            const algo::Color colour = v.input->polygons[fr.polygon].color;
-            mask_glyph(fr.mask, m, colour, ImGui::GetTextLineHeight() * 2);
-            ImGui::SameLine();
-            const bool current = v.fragment && v.fragment->x == px && v.fragment->y == py && v.fragment->order == k;
-            const std::string line = tr("abuffer.fragment", {{"polygon", n(fr.polygon)}, {"depth", f(fr.depth)}, {"alpha", f(fr.opacity)},
-                                                             {"covered", n(std::popcount(fr.mask))}, {"bits", n(m * m)}});
-            ImGui::PushTextWrapPos(0);
-            if (current) ImGui::TextColored(ImVec4(0.94f, 0.89f, 0.26f, 1), "%s", line.c_str());
-            else ImGui::TextUnformatted(line.c_str());
-            ImGui::PopTextWrapPos();
-        }
-        if (v.resolved[v.at(px, py)]) {
-            const glm::dvec4 c = v.rgba[v.at(px, py)];
-            wrapped_text(tr("abuffer.resolved", {{"coverage", f(std::round(1000 * c.w) / 10)}, {"r", f(c.x)}, {"g", f(c.y)}, {"b", f(c.z)}}));
-        }
-        if (v.fragment && v.fragment->x == px && v.fragment->y == py)
-            wrapped_text(tr("abuffer.shown", {{"shown", n(v.fragment->shown)}, {"covered", n(v.fragment->covered)},
-                                              {"percent", f(std::round(1000 * v.fragment->weight) / 10)}}));
+    if (!list_in_view) {
+        ImGui::PushTextWrapPos(0);
+        fragment_list(v, selected);
+        ImGui::PopTextWrapPos();
     }
     wrapped_text(tr("abuffer.counts", {{"fragments", n(v.fragments)}, {"pixels", n(v.pixels_resolved)}}));
     const float need = column_box_height_so_far();  // the rule under the facts: what scrolls in a short column

@@ -22,8 +22,8 @@ public:
                                           {"m", std::to_string(s.view().input->mask_size)}});
     }
     void draw_panels(const ABufferSession& s, PanelFrame& f) const {
-        abuffer_canvas(s, selected_, 0, 0, f.view_w, f.view_h);
-        abuffer_state_panel(s, selected_, f.layout);
+        const bool list_in_view = abuffer_canvas(s, selected_, 0, 0, f.view_w, f.view_h);
+        abuffer_state_panel(s, selected_, list_in_view, f.layout);
     }
     // A click on a fat pixel opens its list in the state box; a click on it again (or off the grid) closes it.
     bool pointer(const ABufferSession& s, const Pointer& p, const ViewGeometry& g, UiActions&) {
