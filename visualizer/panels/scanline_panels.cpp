@@ -40,7 +40,11 @@ void scanline_canvas(const ScanLineSession& s, float x, float y, float w, float 
         return k >= 0 ? rgb((*v.polygons)[std::size_t(k)].color) : rgb({40, 43, 50});
     });
     grid_numbers(d, o, cell, v.viewport);
-    for (const auto& p : *v.polygons) outline(d, o, cell, p, ImGui::GetColorU32(ImVec4(1, 1, 1, 0.3f)), 1);
+    // each polygon outlined in its own colour, so that its name tag and its edges are one object to the eye
+    for (const auto& p : *v.polygons) {
+        const ImVec4 c(p.color.r / 255.f, p.color.g / 255.f, p.color.b / 255.f, 0.85f);
+        outline(d, o, cell, p, ImGui::GetColorU32(c), canvas_px(1.5f));
+    }
     for (std::uint32_t e : v.active) {
         const algo::EdgeEntry& edge = (*v.edges)[e];
         d->AddLine(on_grid(o, cell, edge.a), on_grid(o, cell, edge.b), IM_COL32(255, 255, 255, 255), canvas_px(3));
