@@ -51,8 +51,10 @@ void Screen<BspSession>::frame(const BspSession& s, OrbitCamera& camera) {
     const glm::dvec3 from = s.lesson().scene.camera.eye - glm::dvec3(centre);
     if (s.view().two_d) {
         camera.yaw = 0, camera.pitch = 0;  // face the plane z = 0
-        // the plan sits above the first-person strip: framed as if it reached a third further down
-        centre.y -= 0.3f * radius, radius *= 1.3f;
+        // the plan's walls and eye, as large as the part above the first-person strip and left of the tree allows
+        // (a circle round the plan's box, framed a third further down, left it a quarter of the view on a projector)
+        frame_points_in_part(camera, bsp_view_points(s.view()), {0, 1 - side_box_share, 0.62f});
+        return;
     } else {
         if (glm::length(from) > 0) {  // look from where the scene's eye is, a little higher
             const glm::dvec3 d = glm::normalize(from);
