@@ -36,8 +36,11 @@ void chapter_lesson_panel(const Session& s, const Classroom& room, const std::st
     const Lesson& lesson = s.lesson();
     begin_column_box(l, Box::lesson, tr("box.lesson").c_str());
     wrapped_text(in_language(lesson.titles, room.language(), lesson.languages));
-    wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(lesson.algorithm.id)}, {"difficulty", std::to_string(lesson.difficulty)}, {"detail", detail}}),
-                 dim_text);
+    // the algorithm, the difficulty and the view's caption: not while a question is open, when the column is fullest
+    // and the chapter's words above the question must be read whole (two or three lines back for them)
+    if (!room.open_question(s))
+        wrapped_text(tr("box.lesson_line", {{"algorithm", std::string(lesson.algorithm.id)}, {"difficulty", std::to_string(lesson.difficulty)}, {"detail", detail}}),
+                     dim_text);
     ImGui::Separator();
     if (const auto c = room.chapter(s)) {
         const Chapter& ch = lesson.chapters[*c];
