@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "catch.h"
+#include "culling/bounding_volume.h"
 #include "state/families.h"
 
 using namespace hsr::viz;
@@ -306,4 +307,36 @@ TEST_CASE("the fusion lesson's end labels every primitive its last chapter names
     while (!s.at_end()) s.micro_step();
     const auto end = named_primitives(s.view());
     for (std::uint32_t p : {7u, 9u, 13u, 14u, 19u}) CHECK(std::find(end.begin(), end.end(), p) != end.end());
+}
+
+TEST_CASE("the bounds lesson's objects are named as the view labels them, with their void space figured once", "[state][culling]") {
+    const Lesson bounds = load_lesson(HSR_SOURCE_DIR "/lessons/21_culling_bounds.toml");
+    const auto world = culling_world(bounds);
+    REQUIRE(world->objects.size() == 3);
+    CHECK(world->objects[0].name == "101–112");  // the rod, the plate and the ball, by the ids the table gives
+    CHECK(world->objects[1].name == "201–212");
+    CHECK(world->objects[2].name == "301–400");
+    std::size_t polygons = 0;
+    for (const SceneObject& o : world->objects) {
+        polygons += o.polygons.size();
+        REQUIRE(o.aabb_void);  // closed solids: every volume has a void share
+        CHECK(*o.aabb_void >= 0);
+        CHECK(*o.aabb_void < 1);
+    }
+    CHECK(polygons == world->scene.polygons.size());
+    // the rod and the plate are boxes turned: their OBB is the box itself (no void), their AABB is not
+    CHECK(*world->objects[0].obb_void == Approx(0).margin(0.01));
+    CHECK(*world->objects[1].obb_void == Approx(0).margin(0.01));
+    CHECK(*world->objects[0].aabb_void > 0.5);
+    // each label sits at its object: inside the object's axis box
+    for (const SceneObject& o : world->objects) {
+        Aabb box;
+        for (std::size_t k : o.polygons)
+            for (const auto& q : world->scene.polygons[k].vertices) box.add(Vec3(q));
+        Aabb at;
+        at.add(Vec3(o.centre));
+        CHECK(box.contains(at));
+    }
+    // another culling lesson figures none
+    CHECK(culling_world(load_lesson(HSR_SOURCE_DIR "/lessons/22_culling_frustum.toml"))->objects.empty());
 }

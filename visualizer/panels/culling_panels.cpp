@@ -97,7 +97,7 @@ void pipeline_table(const CullingView& v) {
 // Per object (polygons joined through shared vertices): the share of each bounding volume the object does not fill;
 // "open" for a group that is not a closed solid (void space means nothing there).
 void void_table(const CullingView& v) {
-    const std::vector<SceneObject> objects = scene_objects(v);
+    const std::vector<SceneObject>& objects = v.world->objects;
     if (objects.empty()) {
         wrapped_text(tr("culling.void_few"), dim_text);
         return;
@@ -106,21 +106,12 @@ void void_table(const CullingView& v) {
     for (const char* key : {"culling.object_ids", "culling.aabb_void", "culling.sphere_void", "culling.obb_void"}) ImGui::TableSetupColumn(tr(key).c_str());
     ImGui::TableHeadersRow();
     for (const SceneObject& object : objects) {
-        std::vector<std::vector<algo::Vec3>> polys;
-        std::vector<algo::Vec3> points;
-        for (std::size_t k : object.polygons) {
-            std::vector<algo::Vec3> corners;
-            for (const auto& q : v.world->scene.polygons[k].vertices) corners.emplace_back(q);
-            points.insert(points.end(), corners.begin(), corners.end());
-            polys.push_back(std::move(corners));
-        }
-        const double volume = algo::enclosed_volume(polys);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(object.name.c_str());
-        for (const double bv : {algo::aabb_of(points).volume(), algo::sphere_of(points).volume(), algo::obb_of(points, algo::face_normals(polys)).volume()}) {
+        for (const std::optional<double>& share : {object.aabb_void, object.sphere_void, object.obb_void}) {
             ImGui::TableNextColumn();
-            if (const auto share = algo::void_fraction(bv, volume)) ImGui::Text("%.0f %%", 100 * *share);
+            if (share) ImGui::Text("%.0f %%", 100 * *share);
             else ImGui::TextColored(dim_text, "%s", tr("culling.open").c_str());
         }
     }
@@ -128,29 +119,6 @@ void void_table(const CullingView& v) {
 }
 
 }  // namespace
-
-std::vector<SceneObject> scene_objects(const CullingView& v) {
-    const auto& scene = v.world->scene.polygons;
-    if (scene.size() > 20000) return {};  // not worth joining: a scene of many objects
-    std::vector<std::vector<algo::Vec3>> polygons;
-    for (const auto& p : scene) {
-        std::vector<algo::Vec3> w;
-        for (const auto& q : p.vertices) w.emplace_back(q);
-        polygons.push_back(std::move(w));
-    }
-    const auto groups = algo::connected_objects(polygons);
-    if (groups.size() > 12) return {};
-    std::vector<SceneObject> out;
-    for (const std::vector<std::size_t>& group : groups) {
-        algo::Vec3 sum(0);
-        std::size_t corners = 0;
-        for (std::size_t k : group)
-            for (const algo::Vec3& q : polygons[k]) sum += q, ++corners;
-        out.push_back({std::to_string(scene[group.front()].id) + "–" + std::to_string(scene[group.back()].id), group,
-                       glm::vec3(sum / double(std::max<std::size_t>(corners, 1)))});
-    }
-    return out;
-}
 
 // The colours of the boxes the view shows now, each with its word.
 std::vector<StateColour> culling_legend_entries(const CullingView& v) {

@@ -5,10 +5,7 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "panels/lesson_panels.h"
 #include "state/culling_session.h"
@@ -19,15 +16,6 @@ namespace hsr::viz {
 
 // `legend_in_view`: the screen draws the legend of the boxes' colours in the view (view_legend), else it is here.
 void culling_state_panel(const CullingLesson& s, const PanelLayout& layout, bool legend_in_view = false);
-// The scene's objects (polygons joined through shared vertices), each named by its ids as the void table names it
-// ("101–112") and placed at its corners' mean, for the view's labels; none for a scene of more than 12 objects or
-// 20,000 polygons (the table then says so instead).
-struct SceneObject {
-    std::string name;
-    std::vector<std::size_t> polygons;
-    glm::vec3 centre;
-};
-std::vector<SceneObject> scene_objects(const CullingView& v);
 // The colours of the boxes (and lines) the view shows now, each with its word.
 std::vector<StateColour> culling_legend_entries(const CullingView& v);
 // Walking through the scene (W): each stage with a switch, what reached it, what it left out and its time, the

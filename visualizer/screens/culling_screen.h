@@ -34,7 +34,7 @@ public:
         if (walk_.walking()) return walk_.draw_scene(f);  // the walker's eye, and what its frame drew
         draw_culling_view(s.view(), f.batches, f.labels);
         if (s.culling_machine() == algo::CullingMachine::bounds)  // the objects as the void table names them
-            for (const SceneObject& o : scene_objects(s.view())) f.labels.push_back({o.centre, o.name, palette::parameter});
+            for (const SceneObject& o : w.objects) f.labels.push_back({o.centre, o.name, palette::parameter});
         f.detail = tr(f.second_view ? "culling.caption_camera" : "culling.caption_above",
                       {{"primitives", std::to_string(w.scene.polygons.size())},
                        {"hierarchy", w.hierarchy.kind == algo::HierarchyKind::bvh ? tr("culling.bvh") : tr("culling.octree")}});

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "core/overloaded.h"
+#include "culling/bounding_volume.h"
 #include "culling/view_frustum.h"
 #include "scene/generated_scenes.h"
 #include "state/long_work.h"
@@ -34,6 +35,35 @@ void count(CullingView& v) {
     v.kept = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::kept));
     v.left_out = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::left_out));
     v.earlier = std::uint32_t(std::count(v.primitives.begin(), v.primitives.end(), PrimitiveMark::earlier));
+}
+
+// The scene's objects and the void space of each one's box, sphere and OBB (see SceneObject).
+std::vector<SceneObject> scene_objects(const Scene& scene) {
+    if (scene.polygons.size() > 20000) return {};  // not worth joining: a scene of many objects
+    std::vector<std::vector<Vec3>> polygons;
+    for (const auto& p : scene.polygons) {
+        std::vector<Vec3> w;
+        for (const auto& q : p.vertices) w.emplace_back(q);
+        polygons.push_back(std::move(w));
+    }
+    const auto groups = connected_objects(polygons);
+    if (groups.size() > 12) return {};
+    std::vector<SceneObject> out;
+    for (const std::vector<std::size_t>& group : groups) {
+        std::vector<std::vector<Vec3>> faces;
+        std::vector<Vec3> points;
+        for (std::size_t k : group) {
+            faces.push_back(polygons[k]);
+            points.insert(points.end(), polygons[k].begin(), polygons[k].end());
+        }
+        Vec3 sum(0);
+        for (const Vec3& q : points) sum += q;
+        const double volume = enclosed_volume(faces);
+        out.push_back({std::to_string(scene.polygons[group.front()].id) + "–" + std::to_string(scene.polygons[group.back()].id), group,
+                       glm::vec3(sum / double(std::max<std::size_t>(points.size(), 1))), void_fraction(aabb_of(points).volume(), volume),
+                       void_fraction(sphere_of(points).volume(), volume), void_fraction(obb_of(points, face_normals(faces)).volume(), volume)});
+    }
+    return out;
 }
 
 }  // namespace
@@ -75,6 +105,7 @@ std::shared_ptr<const CullingWorld> culling_world(const Lesson& lesson) {
     }();
     for (const StageReport& r : w->pipeline)
         if (stage && r.stage == *stage) w->candidates = r.candidates;
+    if (w->machine == CullingMachine::bounds) w->objects = scene_objects(w->scene);
     return w;
 }
 

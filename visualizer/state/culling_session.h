@@ -6,8 +6,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <type_traits>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "culling/hiz.h"
 #include "culling/occluders.h"
@@ -16,6 +20,15 @@
 #include "state/session.h"
 
 namespace hsr::viz {
+
+// One object of a bounds lesson's scene (polygons joined through shared vertices), named by its ids ("101–112"),
+// with the share of each bounding volume it does not fill (none for a group that is not a closed solid).
+struct SceneObject {
+    std::string name;
+    std::vector<std::size_t> polygons;
+    glm::vec3 centre;  // its corners' mean, where the view labels it
+    std::optional<double> aabb_void, sphere_void, obb_void;
+};
 
 struct CullingWorld {
     algo::CullingMachine machine = algo::CullingMachine::frustum;  // the lesson's
@@ -30,6 +43,9 @@ struct CullingWorld {
     // per polygon: reached the lesson's stage, kept by the pipeline's stages before it (empty: all, for the bounds
     // lesson). The machine runs on these only, so that its counts are the pipeline's.
     std::vector<std::uint8_t> candidates;
+    // a bounds lesson's objects, for its void table and the view's labels (figured once, not per frame); none for any
+    // other lesson, or for a scene of more than 12 objects or 20,000 polygons
+    std::vector<SceneObject> objects;
 };
 
 enum class NodeMark : std::uint8_t { untouched, built, outside, inside, partial, too_small, large_enough, occluded, visible };
