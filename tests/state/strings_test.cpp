@@ -253,7 +253,8 @@ TEST_CASE("numbers are written with the language's decimal separator, and nothin
     CHECK(strings.problems().empty());
     for (const auto& [written, german] : std::vector<std::pair<std::string, std::string>>{
              {"11.1", "11,1"}, {"-0.25", "-0,25"}, {"1.5e-3", "1,5e-3"}, {"2", "2"}, {"0.9.1", "0.9.1"},
-             {"(1.5, 2)", "(1.5, 2)"}, {"x.5", "x.5"}, {"1.", "1."}, {".5", ".5"}, {"scene.toml", "scene.toml"}}) {
+             {"(1.5, 2)", "(1,5; 2)"}, {"[-0.866025, 0)", "[-0,866025; 0)"}, {"(1.07225, -3.8781, -4.22186, -1.72619)", "(1,07225; -3,8781; -4,22186; -1,72619)"},
+             {"(a, 2)", "(a, 2)"}, {"(1.5)", "(1.5)"}, {"(1.5,2)", "(1.5,2)"}, {"x.5", "x.5"}, {"1.", "1."}, {".5", ".5"}, {"scene.toml", "scene.toml"}}) {
         INFO(written);
         CHECK(strings.number("de", written) == german);
         CHECK(strings.number("en", written) == written);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <toml++/toml.h>
@@ -37,16 +38,20 @@ const std::string* entry(const std::map<std::string, std::map<std::string, std::
 
 // Is `value` one number written with a decimal point ("11.1", "-0.25", "1.5e-3"), and nothing else? Such a value is
 // written with the language's decimal separator; a tuple, a name or a version ("0.9.1") is left as it is.
-bool is_decimal_number(std::string_view value) {
+bool is_number(std::string_view value, bool decimal_point) {
     std::size_t i = value.starts_with('-') ? 1 : 0;
     const auto digits = [&] {
         const std::size_t from = i;
         while (i < value.size() && value[i] >= '0' && value[i] <= '9') ++i;
         return i > from;
     };
-    if (!digits() || i == value.size() || value[i] != '.') return false;
-    ++i;
     if (!digits()) return false;
+    if (i < value.size() && value[i] == '.') {
+        ++i;
+        if (!digits()) return false;
+    } else if (decimal_point) {
+        return false;
+    }
     if (i < value.size() && (value[i] == 'e' || value[i] == 'E')) {
         ++i;
         if (i < value.size() && (value[i] == '-' || value[i] == '+')) ++i;
@@ -54,12 +59,35 @@ bool is_decimal_number(std::string_view value) {
     }
     return i == value.size();
 }
+bool is_decimal_number(std::string_view value) { return is_number(value, true); }
+
+// The numbers of a tuple or an interval of numbers, "(1.5, -2, 0)" or "[-0.87, 0)", without its brackets; none
+// when `value` is not one.
+std::optional<std::vector<std::string_view>> tuple_items(std::string_view value) {
+    if (value.size() < 3 || (value.front() != '(' && value.front() != '[') || (value.back() != ')' && value.back() != ']'))
+        return std::nullopt;
+    std::vector<std::string_view> items;
+    std::string_view inside = value.substr(1, value.size() - 2);
+    for (std::size_t comma; (comma = inside.find(", ")) != std::string_view::npos; inside.remove_prefix(comma + 2))
+        items.push_back(inside.substr(0, comma));
+    items.push_back(inside);
+    if (items.size() < 2 || !std::all_of(items.begin(), items.end(), [](std::string_view v) { return is_number(v, false); }))
+        return std::nullopt;
+    return items;
+}
 
 }  // namespace
 
 std::string Strings::number(std::string_view language, std::string value) const {
     const std::string* separator = entry(catalogues_, language, "decimal_separator");
-    if (separator && *separator != "." && is_decimal_number(value)) value.replace(value.find('.'), 1, *separator);
+    if (!separator || *separator == ".") return value;
+    if (is_decimal_number(value)) return value.replace(value.find('.'), 1, *separator);
+    // a tuple's numbers each so, and parted by semicolons: "(1,5; −2; 0)", not "(1,5, −2, 0)"
+    if (const auto items = tuple_items(value)) {
+        std::string out(1, value.front());
+        for (std::size_t k = 0; k < items->size(); ++k) out += (k ? "; " : "") + number(language, std::string((*items)[k]));
+        return out + value.back();
+    }
     return value;
 }
 
