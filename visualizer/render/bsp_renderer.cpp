@@ -17,11 +17,12 @@ namespace {
 
 using algo::Vec3;
 
-void bounds(const BspView& v, Vec3& lo, Vec3& hi) {
+// The box round the scene's polygons, and with `eye` round the eye as well.
+void bounds(const BspView& v, Vec3& lo, Vec3& hi, bool eye = true) {
     lo = Vec3(1e300), hi = Vec3(-1e300);
     for (const auto& p : v.polygons)
         for (const Vec3& x : *p.vertices) lo = glm::min(lo, x), hi = glm::max(hi, x);
-    lo = glm::min(lo, v.eye), hi = glm::max(hi, v.eye);
+    if (eye) lo = glm::min(lo, v.eye), hi = glm::max(hi, v.eye);
 }
 
 // The region of a node in 2D: the scene's box, cut by the half-plane of each ancestor on the node's side.
@@ -90,7 +91,11 @@ void draw_bsp_view(const BspView& v, const algo::Scene& scene, LineBatches& out,
                                                   current ? palette::plane_edge : glm::vec4(0.55f, 0.6f, 0.7f, 0.8f));
         }
     } else if (v.current_node >= 0) {
-        const auto q = plane_quad(v.nodes[std::size_t(v.current_node)].plane, lo, hi);
+        // the plane across the walls only: a square sized by the eye as well spread over the whole view and hid the
+        // eye's side of it under its fill
+        Vec3 walls_lo, walls_hi;
+        bounds(v, walls_lo, walls_hi, false);
+        const auto q = plane_quad(v.nodes[std::size_t(v.current_node)].plane, walls_lo, walls_hi);
         out.faint.triangle(glm::vec3(q[0]), glm::vec3(q[1]), glm::vec3(q[2]), palette::plane_fill);
         out.faint.triangle(glm::vec3(q[0]), glm::vec3(q[2]), glm::vec3(q[3]), palette::plane_fill);
         for (int i = 0; i < 4; ++i) out.faint.line(glm::vec3(q[std::size_t(i)]), glm::vec3(q[std::size_t((i + 1) % 4)]), palette::plane_edge);
