@@ -15,13 +15,13 @@ template <>
 class Screen<RayCastSession> : public ScreenDefaults {
 public:
     void frame(const RayCastSession& s, OrbitCamera& camera) const {
+        glm::vec3 centre(0);
+        float radius = 1;
+        scene_bounds(s.scene(), centre, radius);  // the polygons and the eye
         camera.yaw = 0.9f, camera.pitch = 0.35f;  // from the side: the rays leave the eye across the view
-        // the polygons and the eye, as large as the part above the image inset allows (the inset holds the view's
-        // lower left third: framed over the whole view, the scene's lower left lay under it)
-        std::vector<glm::vec3> points{glm::vec3(s.scene().camera.eye)};
-        for (const auto& p : s.scene().polygons)
-            for (const auto& q : p.vertices) points.emplace_back(q);
-        frame_points_in_part(camera, points, {0, 1, 0.64f});
+        // lifted above the image inset, which holds the view's lower left third (framed in the middle of the whole
+        // view, the scene's lower left lay under it)
+        frame_in_part(camera, centre, 0.8f * radius, {0, 1, 0.8f});
     }
     void draw_scene(const RayCastSession& s, SceneFrame& f) const {
         draw_raycast_view(s.view(), s.scene(), f.batches, f.labels);
