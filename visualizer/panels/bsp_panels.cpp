@@ -170,6 +170,13 @@ void bsp_painted_canvas(const BspSession& s, float view_w, float view_h, bool dr
     d->AddRectFilled(ImVec2(text.x - 4, text.y - 2), ImVec2(text.x + extent.x + 4, text.y + extent.y + 2), IM_COL32(20, 21, 25, 220));
     d->AddText(text, driving ? IM_COL32(240, 227, 66, 255) : IM_COL32(220, 220, 220, 255), caption.c_str());
     draw_image(d, bsp_painted_so_far(v, s.edited_scene(), pixels), at, size);
+    if (v.drawn == 0) {  // an empty picture says why, not nothing (a class took it for a broken box)
+        const std::string why = tr("bsp.painted_none");
+        const float wrap = size.x - 24;
+        const ImVec2 words = ImGui::CalcTextSize(why.c_str(), nullptr, false, wrap);
+        d->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + (size.x - words.x) / 2, at.y + (size.y - words.y) / 2),
+                   IM_COL32(150, 150, 150, 255), why.c_str(), nullptr, wrap);
+    }
     ImGui::End();
 }
 
