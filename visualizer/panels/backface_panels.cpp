@@ -51,7 +51,7 @@ void faces_table(const BackfaceView& v) {
             if (f.facing) {
                 char value[32];
                 std::snprintf(value, sizeof value, "%.4g", f.value);
-                ImGui::TextUnformatted(in_language(value).c_str());
+                ImGui::TextUnformatted(number_in_language(value).c_str());
             }
             if (cast) {  // shown once the face is tested: before, it would answer "kept or culled?"
                 ImGui::TableNextColumn();

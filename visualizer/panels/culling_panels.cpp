@@ -85,7 +85,7 @@ void pipeline_table(const CullingView& v) {
         ImGui::TableNextColumn();
         char ms_text[32];
         std::snprintf(ms_text, sizeof ms_text, "%.2f", r.milliseconds);
-        ImGui::TextUnformatted(in_language(ms_text).c_str());  // "0,03" in German
+        ImGui::TextUnformatted(number_in_language(ms_text).c_str());  // "0,03" in German
         ImGui::TableNextColumn();
         // the share left out as a bar a line of text tall: the rows as close as the table's others
         ImGui::ProgressBar(r.in ? float(r.left_out) / float(r.in) : 0.0f, ImVec2(-1, ImGui::GetTextLineHeight()), "");

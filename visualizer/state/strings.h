@@ -83,7 +83,7 @@ Strings& window_strings();
 // Shorthand for window_strings().text(key, values).
 inline std::string tr(std::string_view key, StringValues values = {}) { return window_strings().text(key, values); }
 // A number as the window's language writes it ("0,211" in German), for the panels' tables.
-inline std::string in_language(std::string number) {
+inline std::string number_in_language(std::string number) {
     return window_strings().number(window_strings().language(), std::move(number));
 }
 
